@@ -1,0 +1,9 @@
+// renderer.h — meshes, loaders, projection, clipping, wireframes and filled triangles.
+#ifndef TINY3D_RENDERER_H
+#define TINY3D_RENDERER_H
+
+#include "canvas.h"
+#include "math3d.h"
+#include "mesh.h"
+
+#endif

@@ -1,0 +1,113 @@
+// canvas.cpp — canvas allocation, the report's splat and DDA line.
+#include "canvas.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <new>
+
+namespace {
+
+constexpr std::size_t kAlign = 64;
+
+std::size_t round_up(std::size_t n, std::size_t a) { return (n + a - 1) / a * a; }
+
+// One allocation: [canvas_t][row pointers][pad][pixels], so a canvas is one block to free.
+struct layout {
+    std::size_t rows_offset, data_offset, total;
+};
+
+layout canvas_layout(int width, int height) {
+    layout l{};
+    l.rows_offset = round_up(sizeof(canvas_t), alignof(float *));
+    l.data_offset = round_up(l.rows_offset + sizeof(float *) * std::size_t(height), kAlign);
+    l.total = l.data_offset + sizeof(float) * std::size_t(width) * std::size_t(height);
+    return l;
+}
+
+inline float clamp01(float v) { return v < 0.0f ? 0.0f : (v > 1.0f ? 1.0f : v); }
+
+}  // namespace
+
+namespace tiny3d {
+
+status check_canvas_size(int width, int height) {
+    if (width <= 0 || height <= 0)
+        return error{"", 0, -1,
+                     "canvas size " + std::to_string(width) + "x" + std::to_string(height) +
+                         ": width and height must be positive"};
+    if (width > CANVAS_MAX_SIDE || height > CANVAS_MAX_SIDE ||
+        static_cast<long long>(width) * height > CANVAS_MAX_PIXELS)
+        return error{"", 0, -1,
+                     "canvas size " + std::to_string(width) + "x" + std::to_string(height) +
+                         " exceeds the limit (sides <= " + std::to_string(CANVAS_MAX_SIDE) + ", at most " +
+                         std::to_string(CANVAS_MAX_PIXELS) + " pixels)"};
+    return {};
+}
+
+result<canvas_ptr> make_canvas(int width, int height) {
+    status s = check_canvas_size(width, height);
+    if (!s) return s.err();
+    canvas_t *c = create_canvas(width, height);
+    if (!c)
+        return error{"", 0, -1,
+                     "out of memory for a " + std::to_string(width) + "x" + std::to_string(height) + " canvas"};
+    return canvas_ptr(c);
+}
+
+}  // namespace tiny3d
+
+canvas_t *create_canvas(int width, int height) {
+    if (!tiny3d::check_canvas_size(width, height)) return nullptr;
+    const layout l = canvas_layout(width, height);
+    void *block = ::operator new(l.total, std::align_val_t{kAlign}, std::nothrow);
+    if (!block) return nullptr;
+    auto *bytes = static_cast<unsigned char *>(block);
+    auto *c = new (bytes) canvas_t{};
+    c->width = width;
+    c->height = height;
+    c->pixels = reinterpret_cast<float **>(bytes + l.rows_offset);
+    c->data = reinterpret_cast<float *>(bytes + l.data_offset);
+    std::fill(c->data, c->data + std::size_t(width) * std::size_t(height), 0.0f);
+    for (int y = 0; y < height; ++y) c->pixels[y] = c->data + std::size_t(y) * std::size_t(width);
+    return c;
+}
+
+void destroy_canvas(canvas_t *canvas) {
+    if (!canvas) return;
+    canvas->~canvas_t();
+    ::operator delete(static_cast<void *>(canvas), std::align_val_t{kAlign});
+}
+
+void remove_canvas(canvas_t *canvas) { destroy_canvas(canvas); }
+
+void canvas_clear(canvas_t *canvas, float value) {
+    if (!canvas) return;
+    const float v = std::isnan(value) ? 0.0f : clamp01(value);
+    std::fill(canvas->data, canvas->data + std::size_t(canvas->width) * std::size_t(canvas->height), v);
+}
+
+float get_pixel(const canvas_t *canvas, int x, int y) {
+    if (!canvas || x < 0 || y < 0 || x >= canvas->width || y >= canvas->height) return 0.0f;
+    return canvas->pixels[y][x];
+}
+
+void set_pixel_f(canvas_t *c, float x, float y, float intensity) {
+    if (!c || !std::isfinite(x) || !std::isfinite(y) || !std::isfinite(intensity)) return;
+    // Shift so that pixel centres (i + 0.5) sit on the integer lattice of the report's splat.
+    const float sx = x - 0.5f, sy = y - 0.5f;
+    // Far off the canvas: nothing to do (also keeps the int conversion in range).
+    if (sx <= -2.0f || sy <= -2.0f || sx >= float(c->width) + 1.0f || sy >= float(c->height) + 1.0f) return;
+    const int x0 = static_cast<int>(std::floor(sx));
+    const int y0 = static_cast<int>(std::floor(sy));
+    const float dx = sx - float(x0);
+    const float dy = sy - float(y0);
+    for (int j = 0; j <= 1; ++j)
+        for (int i = 0; i <= 1; ++i) {
+            const int xi = x0 + i, yj = y0 + j;
+            if (xi < 0 || xi >= c->width || yj < 0 || yj >= c->height) continue;
+            const float w = (1.0f - std::fabs(float(i) - dx)) * (1.0f - std::fabs(float(j) - dy));
+            float v = c->pixels[yj][xi] + intensity * w;
+            c->pixels[yj][xi] = clamp01(v);
+        }
+}

@@ -1,0 +1,116 @@
+// file_io.cpp — atomic file writing and PGM output.
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "canvas.h"
+
+namespace tiny3d {
+namespace {
+
+error io_error(const std::string &path, const std::string &what, int err) {
+    return error{path, 0, -1, what + ": " + std::strerror(err)};
+}
+
+// Writes all bytes to fd, retrying short writes and EINTR.
+bool write_all(int fd, const unsigned char *p, std::size_t n, int &err) {
+    while (n > 0) {
+        const ssize_t w = ::write(fd, p, n);
+        if (w < 0) {
+            if (errno == EINTR) continue;
+            err = errno;
+            return false;
+        }
+        p += w;
+        n -= std::size_t(w);
+    }
+    return true;
+}
+
+std::string folder_of(const std::string &path) {
+    const auto slash = path.find_last_of('/');
+    if (slash == std::string::npos) return ".";
+    if (slash == 0) return "/";
+    return path.substr(0, slash);
+}
+
+}  // namespace
+
+status write_file_atomic(const std::string &path, const void *data, std::size_t size) {
+    if (path.empty()) return error{"", 0, -1, "cannot save: empty file name"};
+    const auto *bytes = static_cast<const unsigned char *>(data);
+    struct stat st {};
+    const bool exists = ::stat(path.c_str(), &st) == 0;
+    if (exists && S_ISDIR(st.st_mode)) return error{path, 0, -1, "cannot save: the path is a folder"};
+    int err = 0;
+    if (exists && !S_ISREG(st.st_mode)) {
+        // A device or FIFO (e.g. /dev/full, /dev/stdout): write in place, never replace it.
+        const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
+        if (fd < 0) return io_error(path, "cannot open for writing", errno);
+        const bool ok = write_all(fd, bytes, size, err);
+        if (::close(fd) != 0 && ok) err = errno;
+        if (!ok || err) return io_error(path, "write failed", err);
+        return {};
+    }
+    const std::string folder = folder_of(path);
+    struct stat dst {};
+    if (::stat(folder.c_str(), &dst) != 0) return io_error(path, "cannot save: folder '" + folder + "'", errno);
+    if (!S_ISDIR(dst.st_mode)) return error{path, 0, -1, "cannot save: '" + folder + "' is not a folder"};
+
+    std::string tmp = path + ".tmp-XXXXXX";
+    std::vector<char> name(tmp.begin(), tmp.end());
+    name.push_back('\0');
+    const int fd = ::mkstemp(name.data());
+    if (fd < 0) return io_error(path, "cannot create a temporary file in '" + folder + "'", errno);
+    tmp.assign(name.data());
+    bool ok = write_all(fd, bytes, size, err);
+    if (ok && ::fchmod(fd, 0644) != 0) { err = errno; ok = false; }
+    if (ok && ::fsync(fd) != 0) { err = errno; ok = false; }
+    if (::close(fd) != 0 && ok) { err = errno; ok = false; }
+    if (ok && ::rename(tmp.c_str(), path.c_str()) != 0) { err = errno; ok = false; }
+    if (!ok) {
+        ::unlink(tmp.c_str());
+        return io_error(path, "cannot save", err);
+    }
+    return {};
+}
+
+status save_pgm(const canvas_t &c, const std::string &path, pgm_encoding encoding) {
+    if (!c.data || c.width <= 0 || c.height <= 0) return error{path, 0, -1, "cannot save: invalid canvas"};
+    const std::size_t n = std::size_t(c.width) * std::size_t(c.height);
+    auto to_byte = [](float v) -> unsigned {
+        if (!(v > 0.0f)) return 0;  // also NaN
+        if (v >= 1.0f) return 255;
+        return unsigned(std::lround(v * 255.0f));
+    };
+    std::string out = (encoding == pgm_encoding::binary_p5 ? "P5\n" : "P2\n") + std::to_string(c.width) + " " +
+                      std::to_string(c.height) + "\n255\n";
+    if (encoding == pgm_encoding::binary_p5) {
+        const std::size_t header = out.size();
+        out.resize(header + n);
+        for (std::size_t i = 0; i < n; ++i) out[header + i] = char(to_byte(c.data[i]));
+    } else {
+        out.reserve(out.size() + n * 4);
+        for (int y = 0; y < c.height; ++y) {
+            for (int x = 0; x < c.width; ++x) {
+                if (x) out += (x % 16 == 0) ? '\n' : ' ';
+                out += std::to_string(to_byte(c.pixels[y][x]));
+            }
+            out += '\n';
+        }
+    }
+    return write_file_atomic(path, out.data(), out.size());
+}
+
+}  // namespace tiny3d
+
+bool save_canvas(const canvas_t *canvas, const char *path) {
+    if (!canvas || !path) return false;
+    return tiny3d::save_pgm(*canvas, path).ok();
+}
