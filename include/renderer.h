@@ -6,4 +6,9 @@
 #include "math3d.h"
 #include "mesh.h"
 
+// ---- meshes, generators, loaders, projection, clipping, wireframes (see below) ----
+
+// ---- filled triangles ----
+#include "raster.h"
+
 #endif
