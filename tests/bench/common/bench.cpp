@@ -1,0 +1,265 @@
+// bench.cpp — timing, table, CSV and chart output shared by every benchmark program.
+#include "bench.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string_view>
+
+#include "canvas.h"
+
+namespace bench {
+namespace {
+
+constexpr const char *usage_text =
+    "usage: %s [--out DIR] [--quick]\n"
+    "  --out DIR   where <family>.csv and <family>.pgm go (default build/bench)\n"
+    "  --quick     fewer repeats and smaller inputs (for valgrind runs)\n";
+
+std::string format_number(double v) {
+    if (std::isnan(v)) return "nan";
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", v);
+    return buf;
+}
+
+// One CSV text field: never empty, never multi-line, quoted when needed.
+std::string csv_field(std::string_view text) {
+    std::string s(text.empty() ? std::string_view("-") : text);
+    std::replace(s.begin(), s.end(), '\n', ' ');
+    std::replace(s.begin(), s.end(), '\r', ' ');
+    if (s.find_first_of(",\"") == std::string::npos) return s;
+    std::string quoted = "\"";
+    for (const char c : s) {
+        if (c == '"') quoted += '"';
+        quoted += c;
+    }
+    return quoted + "\"";
+}
+
+// Splits one CSV record (no embedded newlines) into fields; false on a broken quote.
+bool split_csv_record(std::string_view line, std::vector<std::string> &fields) {
+    fields.clear();
+    std::string field;
+    bool in_quotes = false, was_quoted = false;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+        const char c = line[i];
+        if (in_quotes) {
+            if (c != '"') field += c;
+            else if (i + 1 < line.size() && line[i + 1] == '"') { field += '"'; ++i; }
+            else in_quotes = false;
+        } else if (c == '"' && field.empty() && !was_quoted) {
+            in_quotes = was_quoted = true;
+        } else if (c == ',') {
+            fields.push_back(field);
+            field.clear();
+            was_quoted = false;
+        } else {
+            field += c;
+        }
+    }
+    fields.push_back(field);
+    return !in_quotes;
+}
+
+bool parse_number(const std::string &text, double &value) {
+    if (text.empty()) return false;
+    char *end = nullptr;
+    value = std::strtod(text.c_str(), &end);
+    return end == text.c_str() + text.size();
+}
+
+std::string time_cell(const row &r) {
+    return format_number(r.time.median) + " [" + format_number(r.time.min) + "-" +
+           format_number(r.time.max) + "] " + r.unit;
+}
+
+std::string error_cell(const row &r) {
+    if (std::isnan(r.error_mean) && std::isnan(r.error_max)) return "-";
+    return format_number(r.error_mean) + " / " + format_number(r.error_max) + " " + r.error_unit;
+}
+
+std::string ratio_cell(double ratio) {
+    if (std::isnan(ratio)) return "-";
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3gx", ratio);
+    return buf;
+}
+
+}  // namespace
+
+timing measure_ns(int repeats, double work_units, const std::function<void()> &fn) {
+    using clock = std::chrono::steady_clock;
+    const int runs = std::max(repeats, 1);
+    const double units = work_units > 0 ? work_units : 1.0;
+    fn();  // warm-up: caches, page faults, lazy allocation
+    std::vector<double> per_unit(std::size_t(runs), 0.0);
+    for (double &t : per_unit) {
+        const auto start = clock::now();
+        fn();
+        const auto stop = clock::now();
+        t = std::chrono::duration<double, std::nano>(stop - start).count() / units;
+    }
+    std::sort(per_unit.begin(), per_unit.end());
+    const std::size_t n = per_unit.size();
+    const double median = n % 2 ? per_unit[n / 2] : 0.5 * (per_unit[n / 2 - 1] + per_unit[n / 2]);
+    return {median, per_unit.front(), per_unit.back()};
+}
+
+options parse_options(int argc, char **argv) {
+    options o;
+    const char *program = argc > 0 ? argv[0] : "bench";
+    for (int i = 1; i < argc; ++i) {
+        const std::string_view arg = argv[i];
+        if (arg == "--out" && i + 1 < argc) {
+            o.out_dir = argv[++i];
+        } else if (arg == "--quick") {
+            o.quick = true;
+        } else if (arg == "--help" || arg == "-h") {
+            std::printf(usage_text, program);
+            std::exit(0);
+        } else {
+            std::fprintf(stderr, "%s: %s '%s'\n", program,
+                         arg == "--out" ? "missing folder after" : "unknown argument", argv[i]);
+            std::fprintf(stderr, usage_text, program);
+            std::exit(2);
+        }
+    }
+    if (o.out_dir.empty()) {
+        std::fprintf(stderr, "%s: --out needs a non-empty folder\n", program);
+        std::exit(2);
+    }
+    return o;
+}
+
+const std::vector<std::string> &csv_columns() {
+    static const std::vector<std::string> columns = {
+        "family",    "variant",   "kind",       "unit",       "time_median", "time_min",
+        "time_max",  "error_mean", "error_max", "error_unit", "ratio_to_faithful", "note"};
+    return columns;
+}
+
+std::vector<double> ratios_to_faithful(const std::vector<row> &rows) {
+    std::vector<double> ratios(rows.size(), std::nan(""));
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        const auto faithful = std::find_if(rows.begin(), rows.end(), [&](const row &f) {
+            return f.kind == "faithful" && f.family == rows[i].family && f.unit == rows[i].unit;
+        });
+        if (faithful != rows.end() && faithful->time.median > 0)
+            ratios[i] = rows[i].time.median / faithful->time.median;
+    }
+    return ratios;
+}
+
+std::string csv_text(const std::vector<row> &rows) {
+    std::string out;
+    for (const std::string &c : csv_columns()) out += (out.empty() ? "" : ",") + c;
+    out += '\n';
+    const std::vector<double> ratios = ratios_to_faithful(rows);
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        const row &r = rows[i];
+        const std::string fields[] = {
+            csv_field(r.family),          csv_field(r.variant),          csv_field(r.kind),
+            csv_field(r.unit),            format_number(r.time.median),  format_number(r.time.min),
+            format_number(r.time.max),    format_number(r.error_mean),   format_number(r.error_max),
+            csv_field(r.error_unit),      format_number(ratios[i]),      csv_field(r.note)};
+        std::string line;
+        for (const std::string &f : fields) line += (line.empty() ? "" : ",") + f;
+        out += line + '\n';
+    }
+    return out;
+}
+
+tiny3d::result<std::vector<row>> parse_csv(const std::string &text, const std::string &path) {
+    std::vector<row> rows;
+    std::vector<std::string> f;
+    const std::size_t n_columns = csv_columns().size();
+    long line_no = 0;
+    std::size_t pos = 0;
+    while (pos < text.size()) {
+        std::size_t end = text.find('\n', pos);
+        if (end == std::string::npos) end = text.size();
+        std::string_view line(text.data() + pos, end - pos);
+        pos = end + 1;
+        ++line_no;
+        if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+        if (!split_csv_record(line, f)) return tiny3d::error{path, line_no, -1, "unterminated quote"};
+        if (line_no == 1) {
+            if (f != csv_columns()) return tiny3d::error{path, 1, -1, "not a benchmark CSV (unexpected header)"};
+            continue;
+        }
+        if (line.empty()) continue;
+        if (f.size() != n_columns)
+            return tiny3d::error{path, line_no, -1,
+                                 "expected " + std::to_string(n_columns) + " fields, found " +
+                                     std::to_string(f.size())};
+        row r;
+        r.family = f[0];
+        r.variant = f[1];
+        r.kind = f[2];
+        r.unit = f[3];
+        double *numbers[] = {&r.time.median, &r.time.min, &r.time.max, &r.error_mean, &r.error_max};
+        for (std::size_t k = 0; k < 5; ++k)
+            if (!parse_number(f[4 + k], *numbers[k]))
+                return tiny3d::error{path, line_no, -1,
+                                     "column '" + csv_columns()[4 + k] + "': not a number: '" + f[4 + k] + "'"};
+        r.error_unit = f[9];
+        r.note = f[11] == "-" ? "" : f[11];
+        rows.push_back(std::move(r));
+    }
+    if (line_no == 0) return tiny3d::error{path, 0, -1, "empty file"};
+    return rows;
+}
+
+std::string table_text(const std::vector<row> &rows) {
+    const std::vector<double> ratios = ratios_to_faithful(rows);
+    std::vector<std::vector<std::string>> cells;
+    cells.push_back({"family", "variant", "kind", "time median [min-max]", "error mean / max", "vs faithful"});
+    for (std::size_t i = 0; i < rows.size(); ++i)
+        cells.push_back({rows[i].family, rows[i].variant, rows[i].kind, time_cell(rows[i]),
+                         error_cell(rows[i]), ratio_cell(ratios[i])});
+    std::vector<std::size_t> width(cells[0].size(), 0);
+    for (const auto &line : cells)
+        for (std::size_t c = 0; c < line.size(); ++c) width[c] = std::max(width[c], line[c].size());
+    std::string out;
+    for (std::size_t l = 0; l < cells.size(); ++l) {
+        for (std::size_t c = 0; c < cells[l].size(); ++c) {
+            out += cells[l][c];
+            if (c + 1 < cells[l].size()) out += std::string(width[c] - cells[l][c].size() + 2, ' ');
+        }
+        out += '\n';
+        if (l == 0) {
+            std::size_t total = 0;
+            for (std::size_t w : width) total += w + 2;
+            out += std::string(total - 2, '-') + '\n';
+        }
+    }
+    return out;
+}
+
+int report(const options &o, const std::string &family, const std::vector<row> &rows,
+           const std::string &chart_title) {
+    const auto fail = [&](const std::string &why) {
+        std::fprintf(stderr, "bench %s: %s\n", family.c_str(), why.c_str());
+        return 1;
+    };
+    if (rows.empty()) return fail("no rows to report");
+    for (const row &r : rows)
+        if (r.family != family) return fail("row '" + r.variant + "' belongs to family '" + r.family + "'");
+    std::printf("%s\n%s", chart_title.c_str(), table_text(rows).c_str());
+    std::error_code ec;
+    std::filesystem::create_directories(o.out_dir, ec);
+    if (ec) return fail("cannot create folder '" + o.out_dir + "': " + ec.message());
+    const std::string csv = csv_text(rows);
+    const std::string csv_path = o.out_dir + "/" + family + ".csv";
+    if (const tiny3d::status s = tiny3d::write_file_atomic(csv_path, csv.data(), csv.size()); !s)
+        return fail(s.message());
+    std::printf("wrote %s\n", csv_path.c_str());
+    std::fflush(stdout);
+    return 0;
+}
+
+}  // namespace bench
