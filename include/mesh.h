@@ -12,10 +12,13 @@
 #define TINY3D_MESH_H
 
 #include <array>
+#include <cstddef>
+#include <initializer_list>
 #include <cstdint>
 #include <vector>
 
 #include "math3d.h"
+#include "tiny3d_result.h"
 
 namespace tiny3d {
 
@@ -57,6 +60,112 @@ inline std::vector<corner_triangle> mesh_triangles(const mesh &m) {
     return tris;
 }
 
+// ---- mesh utilities (src/renderer/mesh.cpp) -------------------------------------------
+
+// Derives m.edges from the faces: every unique undirected edge once, stored with a < b and
+// sorted by (a, b). Sort-based, O(n log n) in the corner count. Degenerate corner pairs
+// (a == b, e.g. a repeated index) give no edge. Replaces any previous m.edges.
+void mesh_derive_edges(mesh &m);
+
+// Unit normal of every face by Newell's method (the polygon's vector area, exact for planar
+// n-gons, a best-fit plane for non-planar ones), oriented by the counter-clockwise rule.
+// A degenerate face (zero area) gets (0, 0, 0). Indices out of range give (0, 0, 0) too.
+std::vector<vec3_t> mesh_face_normals(const mesh &m);
+
+// Unit normal per position: the ANGLE-WEIGHTED mean of the normals of the faces using it
+// (Thürmer & Wüthrich 1998: each face contributes its unit normal times the corner's
+// interior angle), which does not depend on how the faces are triangulated. Positions no
+// face uses, or whose weighted sum vanishes, get (0, 0, 0).
+std::vector<vec3_t> mesh_vertex_normals(const mesh &m);
+
+// Which faces border each edge of m.edges, in compressed rows: the faces of edge e are
+// faces[start[e]] .. faces[start[e + 1] − 1] (a closed 2-manifold gives exactly 2 each;
+// boundary edges 1; non-manifold edges more). Needs m.edges derived by mesh_derive_edges
+// (any order is accepted); face edges missing from m.edges are ignored.
+struct edge_adjacency {
+    std::vector<std::uint32_t> start;  // size = edge count + 1
+    std::vector<std::uint32_t> faces;
+    std::uint32_t count(std::size_t e) const { return start[e + 1] - start[e]; }
+    const std::uint32_t *begin(std::size_t e) const { return faces.data() + start[e]; }
+    const std::uint32_t *end(std::size_t e) const { return faces.data() + start[e + 1]; }
+};
+edge_adjacency mesh_edge_faces(const mesh &m);
+
+struct bounding_box {
+    vec3_t min, max;  // empty mesh: min = +inf, max = −inf
+};
+struct bounding_sphere {
+    vec3_t center;
+    float radius;  // empty mesh: radius −1
+};
+// Axis-aligned box of all positions (non-finite positions are skipped).
+bounding_box mesh_bounding_box(const mesh &m);
+// A sphere holding every position: centre = the box centre, radius = the largest distance
+// to it (at most √3 × the smallest sphere's radius; exact for symmetric meshes such as the
+// generators' spheres). Non-finite positions are skipped.
+bounding_sphere mesh_bounding_sphere(const mesh &m);
+
+// Checks the mesh's invariants: face_start starts at 0, is non-decreasing and ends at
+// indices.size(); every face has ≥ 3 corners; every index < positions.size(); corner
+// attribute arrays are empty or one per corner; every edge index in range. The error says
+// which face / corner / edge is wrong.
+status mesh_validate(const mesh &m);
+
+// ---- generators (src/renderer/generators.cpp) ------------------------------------------
+// Every generator computes its mesh from the definition (no pasted coordinate tables),
+// gives faces counter-clockwise seen from outside, shares positions between faces, and
+// derives the edges. Invalid parameters (counts below the stated minimum, non-positive or
+// non-finite sizes) give an empty mesh (face_count() == 0).
+
+// Axis-aligned cube centred on the origin, side 2·half_side: 8 positions, 6 quads, 12 edges,
+// per-corner uvs (each face maps the unit square, u along the face's first edge).
+mesh make_cube(float half_side = 1.0f);
+
+// The unit icosphere exactly as shared/BENCH_SCENE.md defines it: the regular icosahedron
+// (the 12 cyclic permutations of (±1, ±t, 0), t = (1+√5)/2, normalised), each triangle split
+// into 4 by its edge midpoints `level` times, midpoints pushed onto the unit sphere and
+// shared. level 0: 12 v / 20 t / 30 e; level L: 10·4^L + 2 v, 20·4^L t, 30·4^L e (level 5:
+// 10,242 / 20,480 / 30,720; level 6: 40,962 / 81,920 / 122,880). 0 ≤ level ≤ 8.
+mesh make_icosphere(int level);
+
+// UV sphere of the given radius: `slices` meridians (≥ 3) and `stacks` bands (≥ 2), poles on
+// ±z as single positions; triangles at the poles, quads between. Per-corner uvs
+// (u = azimuth/2π from +x, v = polar angle/π from +z, the seam gets u = 1 on its far side).
+// Positions: slices·(stacks − 1) + 2.
+mesh make_uv_sphere(int slices, int stacks, float radius = 1.0f);
+
+// Torus around the z axis: tube centre circle of radius `major_radius` in the x-y plane,
+// tube radius `minor_radius` (0 < minor < major), `major_segments` × `minor_segments` quads
+// (each ≥ 3), per-corner uvs. V = major·minor, E = 2·V, F = V.
+mesh make_torus(float major_radius, float minor_radius, int major_segments, int minor_segments);
+
+// A (p, q) torus knot tube (gcd(p, q) = 1, p, q ≥ 1): the centre curve
+// r(s) = ((2 + cos qs) cos ps, (2 + cos qs) sin ps, sin qs)·scale/3, s in [0, 2π), swept with a
+// circle of radius tube_radius in the curve's parallel-transported frame (closed by an
+// angular correction so the tube joins without a twist seam). segments·sides·2 triangles
+// (segments ≥ 3, sides ≥ 3); make_torus_knot(2, 3, 154, 12) gives the ~3,700-triangle
+// irregular mesh of Scene S's small case (3,696 triangles).
+mesh make_torus_knot(int p, int q, int segments, int sides, float tube_radius = 0.12f,
+                     float scale = 1.0f);
+
+// The soccer ball (truncated icosahedron) with circumradius `radius`: each vertex of the
+// regular icosahedron cut off at a third of its edges. 60 positions, 90 edges, 12 pentagons
+// (faces 0..11) + 20 hexagons (faces 12..31), all edges of length
+// radius · 4 / sqrt(58 + 18·√5) ≈ 0.40355·radius, every vertex of degree 3.
+mesh make_soccer_ball(float radius = 1.0f);
+
 }  // namespace tiny3d
+
+// ---- the libtiny3d report's generator (C-compatible) ----------------------------------
+
+// The report's soccer ball as plain arrays: on success *vertices holds 60 positions (the
+// ball of circumradius 1, same order as tiny3d::make_soccer_ball), *edges 90 pairs of
+// indices into them, counts in *vertex_count / *edge_count, and it returns 1. Both arrays
+// are malloc'd: free them with free_soccer_ball (or free()). Returns 0, with the outputs
+// set to NULL / 0 where given, when a pointer argument is NULL or memory runs out.
+// (The report wrote `int *edges[][2]`, which is not a usable out-parameter for an
+// `int edges[][2]` array; `int (**edges)[2]` is the closest form that is.)
+int generate_soccer_ball(vec3_t **vertices, int *vertex_count, int (**edges)[2], int *edge_count);
+void free_soccer_ball(vec3_t *vertices, int (*edges)[2]);  // NULLs are ignored
 
 #endif

@@ -6,7 +6,12 @@
 #include "math3d.h"
 #include "mesh.h"
 
-// ---- meshes, generators, loaders, projection, clipping, wireframes (see below) ----
+// ---- meshes, generators, loaders, projection, clipping, wireframes ----
+// mesh.h: the mesh type, mesh utilities (edges, normals, adjacency, bounds), generators.
+// loaders.h: OBJ and PLY. pipeline.h: project_vertex, clipping, circular viewport,
+// frustum culling, render_wireframe.
+#include "loaders.h"
+#include "pipeline.h"
 
 // ---- filled triangles ----
 #include "raster.h"
