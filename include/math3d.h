@@ -19,6 +19,9 @@
 
 #include <cmath>
 #include <cstddef>
+#include <span>
+
+#include "tiny3d_result.h"
 
 #ifndef M_PI
 #define M_PI 3.14159265358979323846
@@ -66,5 +69,163 @@ mat4_t mat4_frustum_asymmetric(float left, float right, float bottom, float top,
 vec3_t apply_transform(mat4_t m, vec3_t v);
 vec4_t vec4_from_vec3(vec3_t v, float w);
 vec4_t mat4_mul_vec4(mat4_t m, vec4_t v);
+
+// Spherical → cartesian (convention at the top of the file): r·(sinφ cosθ, sinφ sinθ, cosφ).
+// Evaluated in double and rounded once, so each component is within 0.5 ulp (+ 1e-16·r)
+// of the exact value for the given float arguments. Any r, θ, φ (negative r mirrors).
+vec3_t vec3_from_spherical(float r, float theta, float phi);
+
+// Cartesian → spherical: r = |v| ≥ 0, θ = atan2(y, x) in (−π, π], φ = atan2(√(x²+y²), z)
+// in [0, π] (atan2, not acos(z/r): accurate at the poles). Computed in double, each value
+// rounded once. Conventions where the angles are undefined: r = 0 gives θ = φ = 0; on the
+// z axis (x = y = 0) θ = 0 and φ = 0 (z > 0) or π (z < 0). Signed zeros are ignored.
+// Round trip vec3_from_spherical(vec3_to_spherical(v)) ≈ v within 4e-7·|v| (tested).
+// |v| beyond FLT_MAX gives r = +inf. NaN components give NaN outputs. Null pointers are
+// skipped (the other outputs are still written).
+void vec3_to_spherical(vec3_t v, float *r, float *theta, float *phi);
+
+// The report's normalisation: Quake III inverse square root (magic 0x5f3759df, one
+// Newton step) — the faithful variant; max relative error 1.8e-3 (measured by
+// tests/bench/normalize). Made safe: the squared length is brought into the normal float
+// range by an exact power-of-two prescale when needed, so tiny, denormal and huge inputs
+// (up to FLT_MAX) give a unit vector with the same 1.8e-3 accuracy, never inf or NaN.
+// The zero vector (±0) gives {0, 0, 0}; any NaN component gives {0, 0, 0}; infinite
+// components give the direction of the infinities (e.g. (inf, 5, −inf) → (0.707, 0, −0.707)).
+// The global name keeps the report's (Quake) behaviour so the report's programs see the
+// numbers they always saw; tiny3d::vec3_normalize (exact) and
+// tiny3d::vec3_normalize_fast_accurate (≤ 2e-7, no slower) are the better choices.
+vec3_t vec3_normalize_fast(vec3_t v);
+// Pointer form used by several other libtiny3d programs: *v = vec3_normalize_fast(*v).
+// A null pointer is ignored.
+void vec3_normalize_fast(vec3_t *v);
+
+// The report's slerp between directions a and b, kept as the faithful variant: inputs
+// normalised with vec3_normalize_fast (Quake), θ₀ = acos(a·b), linear interpolation +
+// renormalisation when a·b > 0.9995, result s0·a + s1·b. Accuracy ≈ 4e-3 (Quake
+// normalisation; acos loses precision near a·b = ±1). Made safe: a zero or NaN input
+// uses the other input's direction (both unusable → {0, 0, 0}); nearly or exactly
+// antipodal inputs (sin θ₀ < 1e-3) turn on the same deterministic great circle as
+// tiny3d::vec3_slerp_robust instead of dividing by ~0. The result is (about) unit length.
+// t outside [0, 1] extrapolates as the report's formula does.
+vec3_t vec3_slerp(vec3_t a, vec3_t b, float t);
+
+namespace tiny3d {
+
+// ---- vectors ---------------------------------------------------------------------------
+inline float vec3_dot(vec3_t a, vec3_t b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+// Right-handed: cross((1,0,0), (0,1,0)) = (0,0,1).
+inline vec3_t vec3_cross(vec3_t a, vec3_t b) {
+    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+// Euclidean length, computed in double: no overflow or underflow for any finite float
+// vector (a result above FLT_MAX rounds to +inf).
+float vec3_length(vec3_t v);
+
+// Exact normalisation: computed in double and rounded once, so every component is within
+// 0.5 ulp + 1e-16 of the true unit vector (max relative error ≤ 6e-8, tested). Zero (and
+// NaN) input gives {0, 0, 0}, never NaN; infinite components give the direction of the
+// infinities; denormal and huge inputs are exact too.
+vec3_t vec3_normalize(vec3_t v);
+
+// The fast accurate normalisation, chosen by measurement (tests/bench/normalize; see the
+// implementation for the numbers): max relative error ≤ 2e-7 against the double
+// reference and no slower than the Quake variant. Same special cases as vec3_normalize.
+vec3_t vec3_normalize_fast_accurate(vec3_t v);
+
+// Slerp that is right for every input, with constant angular speed:
+//  * direction: turns from â toward b̂ along their great circle by the angle t·θ, where
+//    θ = atan2(|â×b̂|, â·b̂) ∈ [0, π] (no acos cancellation near ±1); computed in double,
+//    so nearly parallel and nearly antipodal inputs are accurate (error ≤ 2e-7·length);
+//  * exactly antipodal inputs (â×b̂ = 0, â·b̂ < 0): the great circle through â and the
+//    fixed perpendicular tiny3d::vec3_any_perpendicular(â) — deterministic, unit result;
+//  * length: interpolated linearly, (1−t)|a| + t|b|, clamped at 0 (extrapolation with t
+//    outside [0, 1] may reach 0; the direction still extrapolates along the circle);
+//  * a zero input takes the other input's direction (both zero → {0, 0, 0});
+//  * any NaN or infinite component, or a non-finite t, gives {0, 0, 0}.
+vec3_t vec3_slerp_robust(vec3_t a, vec3_t b, float t);
+
+// A unit vector perpendicular to v, deterministic: v × e where e is the axis of v's
+// smallest-magnitude component (first such on ties), normalised. Zero/NaN v → (1, 0, 0).
+vec3_t vec3_any_perpendicular(vec3_t v);
+
+// ---- matrices --------------------------------------------------------------------------
+// Rotations by `angle` radians, counter-clockwise looking from +axis toward the origin
+// (right-handed): rotate_z(π/2) maps +x to +y, rotate_x(π/2) maps +y to +z, rotate_y(π/2)
+// maps +z to +x.
+mat4_t mat4_rotate_x(float angle);
+mat4_t mat4_rotate_y(float angle);
+mat4_t mat4_rotate_z(float angle);
+// Rotation about an arbitrary axis (Rodrigues; the axis need not be unit length). A zero
+// or non-finite axis gives the identity.
+mat4_t mat4_rotate_axis(vec3_t axis, float angle);
+
+// The glFrustum matrix of mat4_frustum_asymmetric, or an error naming the bad argument
+// (l = r, b = t, n ≤ 0, f ≤ n, or a non-finite value).
+result<mat4_t> frustum_checked(float left, float right, float bottom, float top, float near_plane,
+                               float far_plane);
+// gluPerspective: vertical field of view `fovy` in radians (0 < fovy < π), aspect =
+// width / height > 0, 0 < near < far; z = −near → NDC −1, z = −far → NDC +1.
+// Bad arguments give the identity; perspective_checked says why.
+mat4_t mat4_perspective(float fovy, float aspect, float near_plane, float far_plane);
+result<mat4_t> perspective_checked(float fovy, float aspect, float near_plane, float far_plane);
+// gluLookAt view matrix: the camera at `eye` looks toward `target` (down its −z), `up`
+// projects to +y on screen. Degenerate input is handled deterministically: eye = target
+// looks down −z (a pure translation by −eye); `up` parallel to the view direction (or
+// zero) is replaced by vec3_any_perpendicular(view direction).
+mat4_t mat4_look_at(vec3_t eye, vec3_t target, vec3_t up);
+
+mat4_t mat4_transpose(mat4_t m);
+// Determinant, computed in double.
+double mat4_determinant(mat4_t m);
+// General inverse (adjugate / determinant, in double, rounded once to float). Reports
+// "singular matrix" when any entry is not finite or |det| ≤ 1e-12 · Π‖row‖ (Hadamard's
+// bound, so the test does not depend on the scale of the rows). For an invertible M the
+// computed M·M⁻¹ (exact arithmetic) is within 0.5·2⁻²³·(|M|·|M⁻¹|)ᵢⱼ of I (tested).
+result<mat4_t> mat4_inverse(mat4_t m);
+
+// ---- transforming points ---------------------------------------------------------------
+struct transformed_point {
+    vec3_t point;          // M·(p, 1), divided by w when divided_by_w
+    float w;               // the homogeneous w before any division
+    bool divided_by_w;     // false when w was exactly 0 or 1 (as apply_transform)
+};
+// apply_transform that also reports w and whether it divided.
+transformed_point transform_point(const mat4_t &m, vec3_t p);
+// The upper-left 3×3 times d (w = 0: translation and projection ignored).
+vec3_t transform_direction(const mat4_t &m, vec3_t d);
+
+// Batch apply_transform: out[i] = apply_transform(m, in[i]), bit for bit, for every i
+// (SSE2 four points at a time, scalar fallback). `out` may be the same span as `in`
+// (in-place); other overlaps are not allowed. Error when out.size() < in.size()
+// (nothing written). Throughput ≥ 150 M points/s on one core (tests/bench/transform).
+status transform_points(const mat4_t &m, std::span<const vec3_t> in, std::span<vec3_t> out);
+// Batch to clip space: out[i] = mat4_mul_vec4(m, (in[i], 1)), bit for bit, no division
+// (for clipping against w). Same size rule as transform_points.
+status transform_points_homogeneous(const mat4_t &m, std::span<const vec3_t> in, std::span<vec4_t> out);
+
+// ---- quaternions (orientation) ---------------------------------------------------------
+// q = (x, y, z, w) = (sin(α/2)·axis, cos(α/2)) for a rotation by α about a unit axis.
+// Rotations are unit quaternions; q and −q are the same rotation.
+struct quat {
+    float x, y, z, w;
+};
+inline quat quat_identity() { return {0.0f, 0.0f, 0.0f, 1.0f}; }
+// Rotation by `angle` radians about `axis` (any length; zero or non-finite → identity).
+quat quat_from_axis_angle(vec3_t axis, float angle);
+// Hamilton product a·b: the rotation b followed by a (as mat4_multiply).
+quat quat_multiply(quat a, quat b);
+// q / |q| (computed in double); zero or non-finite q → identity.
+quat quat_normalize(quat q);
+inline quat quat_conjugate(quat q) { return {-q.x, -q.y, -q.z, q.w}; }
+// The rotation matrix of q (normalised first, so any non-zero q works).
+mat4_t quat_to_mat4(quat q);
+// Rotates v by q (normalised first).
+vec3_t quat_rotate(quat q, vec3_t v);
+// Shortest-path slerp of rotations: b is negated when a·b < 0, the angle comes from
+// atan2 (accurate near 0), computed in double; always a unit quaternion; t outside
+// [0, 1] extrapolates at constant angular speed. Inputs are normalised first.
+quat quat_slerp(quat a, quat b, float t);
+
+}  // namespace tiny3d
 
 #endif

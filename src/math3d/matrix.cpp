@@ -55,19 +55,6 @@ mat4_t mat4_rotate_xyz(float rx, float ry, float rz) {
     return m;
 }
 
-mat4_t mat4_frustum_asymmetric(float l, float r, float b, float t, float n, float f) {
-    if (!(r != l) || !(t != b) || !(n > 0.0f) || !(f > n)) return mat4_identity();
-    mat4_t m = {};
-    m.m[0] = 2.0f * n / (r - l);
-    m.m[5] = 2.0f * n / (t - b);
-    m.m[8] = (r + l) / (r - l);
-    m.m[9] = (t + b) / (t - b);
-    m.m[10] = -(f + n) / (f - n);
-    m.m[11] = -1.0f;
-    m.m[14] = -2.0f * f * n / (f - n);
-    return m;
-}
-
 vec4_t vec4_from_vec3(vec3_t v, float w) { return {v.x, v.y, v.z, w}; }
 
 vec4_t mat4_mul_vec4(mat4_t m, vec4_t v) {
@@ -77,8 +64,45 @@ vec4_t mat4_mul_vec4(mat4_t m, vec4_t v) {
             m.m[3] * v.x + m.m[7] * v.y + m.m[11] * v.z + m.m[15] * v.w};
 }
 
-vec3_t apply_transform(mat4_t m, vec3_t v) {
-    const vec4_t p = mat4_mul_vec4(m, vec4_from_vec3(v, 1.0f));
-    if (p.w != 0.0f && p.w != 1.0f) return {p.x / p.w, p.y / p.w, p.z / p.w};
-    return {p.x, p.y, p.z};
+// ---- libtiny3d additions: rotations ------------------------------------------------------
+namespace {
+
+// The 4×4 matrix whose upper-left 3×3 block is r (given row by row, in double), rounded once.
+mat4_t from_rows3(const double r[3][3]) {
+    mat4_t m = mat4_identity();
+    for (int row = 0; row < 3; ++row)
+        for (int col = 0; col < 3; ++col) m.m[col * 4 + row] = float(r[row][col]);
+    return m;
 }
+
+}  // namespace
+
+namespace tiny3d {
+
+mat4_t mat4_rotate_x(float angle) { return mat4_rotate_xyz(angle, 0.0f, 0.0f); }
+mat4_t mat4_rotate_y(float angle) { return mat4_rotate_xyz(0.0f, angle, 0.0f); }
+mat4_t mat4_rotate_z(float angle) { return mat4_rotate_xyz(0.0f, 0.0f, angle); }
+
+// Rodrigues: R = cos α·I + sin α·[k]× + (1 − cos α)·k kᵀ for the unit axis k.
+mat4_t mat4_rotate_axis(vec3_t axis, float angle) {
+    const double ax = axis.x, ay = axis.y, az = axis.z;
+    const double len = std::sqrt(ax * ax + ay * ay + az * az);
+    if (!(len > 0.0) || !std::isfinite(len) || !std::isfinite(angle)) return mat4_identity();
+    const double k[3] = {ax / len, ay / len, az / len};
+    const double c = std::cos(double(angle)), s = std::sin(double(angle)), t = 1.0 - c;
+    const double r[3][3] = {
+        {c + t * k[0] * k[0], t * k[0] * k[1] - s * k[2], t * k[0] * k[2] + s * k[1]},
+        {t * k[1] * k[0] + s * k[2], c + t * k[1] * k[1], t * k[1] * k[2] - s * k[0]},
+        {t * k[2] * k[0] - s * k[1], t * k[2] * k[1] + s * k[0], c + t * k[2] * k[2]},
+    };
+    return from_rows3(r);
+}
+
+mat4_t mat4_transpose(mat4_t m) {
+    mat4_t t = {};
+    for (int row = 0; row < 4; ++row)
+        for (int col = 0; col < 4; ++col) t.m[row * 4 + col] = m.m[col * 4 + row];
+    return t;
+}
+
+}  // namespace tiny3d
