@@ -17,6 +17,7 @@
 #include <cstddef>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "tiny3d_result.h"
 
@@ -51,7 +52,8 @@ void set_pixel_f(canvas_t *canvas, float x, float y, float intensity);
 // from (x0, y0) to (x1, y1) (both ends included); at each sample a disc of diameter
 // `thickness` made of set_pixel_f(…, 1) splats on a 0.5 px grid. Coordinates in pixels
 // (pixel centres at +0.5). Known flaws, kept on purpose and measured by the benchmark:
-// thickness ≤ ~0.7 draws nothing, thickness 1 puts about twice the true ink down, and the
+// thickness < 2 − √2 ≈ 0.586 draws nothing (no disc sample passes kx² + ky² ≤ T²/4),
+// thickness 1 puts about twice the true ink down, and the
 // cost grows with thickness². The line is clipped to the canvas first (margins of
 // thickness), so huge coordinates cost no more than a line across the canvas.
 void draw_line_f(canvas_t *canvas, float x0, float y0, float x1, float y1, float thickness);
@@ -85,6 +87,97 @@ enum class pgm_encoding { binary_p5, ascii_p2 };
 // (e.g. /dev/full, a FIFO) are written in place, not replaced.
 status save_pgm(const canvas_t &canvas, const std::string &path,
                 pgm_encoding encoding = pgm_encoding::binary_p5);
+
+// ---- lines beyond the report (src/canvas/line_coverage.cpp, line_thin.cpp) -------------
+//
+// Coordinates are in pixels with the convention above (pixel (x, y) is the unit square
+// [x, x+1) × [y, y+1)). Every line is clipped to the canvas first (Liang–Barsky, in double),
+// so endpoints like (−1e9, 5) cost no more than a line across the canvas and never
+// overflow. Non-finite coordinates draw nothing. No function here allocates.
+//
+// "Over" combine (anti-aliased lines): a pixel v receiving coverage c becomes
+//   v + c·(1 − v)
+// so two half-covering strokes give 0.75, ink never exceeds 1, and a fully covered pixel
+// becomes exactly 1.
+
+enum class line_cap {
+    round,  // half-discs of radius thickness/2 at both ends (the stroke is a capsule)
+    butt    // the stroke ends flat at the endpoints (a rectangle)
+};
+
+struct line_style {
+    line_cap cap = line_cap::round;
+    float intensity = 1.0f;  // c = intensity · coverage; clamped to ≤ 1, ≤ 0 or NaN draws nothing
+};
+
+// The fast anti-aliased thick line: each pixel receives the exact area of its square
+// covered by the stroke of (x0, y0)–(x1, y1) of width `thickness` (px) (float arithmetic:
+// |error| ≲ 1e-5 per pixel on canvases up to a few thousand px), combined "over".
+// Only pixels near the line are visited. Pixels whose square lies between the ends use a
+// closed form (the area of a unit square inside a band depends only on the angle and the
+// centre's signed distance); the few pixels at the ends are clipped exactly (polygon +
+// exact disc segments). Drawing (x1, y1)→(x0, y0) gives the bit-identical image.
+// thickness ≤ 0 or NaN draws nothing; a zero-length segment with round caps is a disc.
+void draw_line_coverage(canvas_t *canvas, float x0, float y0, float x1, float y1, float thickness,
+                        const line_style &style = {});
+
+// Exact reference for draw_line_coverage, in double: the area (0..1) of pixel (px, py)'s
+// square inside the stroke, by clipping the square against the rectangle's four
+// half-planes (Sutherland–Hodgman, shoelace area) plus, for round caps, the area of the
+// square beyond each end inside the end's disc (exact circle-segment areas). 0 for
+// non-finite input or thickness ≤ 0. Slow (~0.2 µs per pixel); for tests and benchmarks.
+double line_coverage_reference_at(int px, int py, double x0, double y0, double x1, double y1, double thickness,
+                                  line_cap cap = line_cap::round);
+
+// The reference coverage of a whole width × height image into `coverage` (resized,
+// row-major, zero where the stroke does not reach). Visits only pixels within
+// thickness/2 + √2/2 of the segment. Allocates (it is a reference, not a drawer).
+void line_coverage_reference(std::vector<double> &coverage, int width, int height, double x0, double y0,
+                             double x1, double y1, double thickness, line_cap cap = line_cap::round);
+
+// Supersampled stroke: coverage = fraction of samples_per_axis² stratified samples per
+// pixel inside the stroke (samples_per_axis = 16 in the benchmark), combined "over".
+void draw_line_supersampled(canvas_t *canvas, float x0, float y0, float x1, float y1, float thickness,
+                            int samples_per_axis, const line_style &style = {});
+
+// Xiaolin Wu's thin (≈1 px) anti-aliased line: along the major axis, each column's
+// intensity is split between the two pixels whose centres straddle the line, in
+// proportion to their distance; the end columns are weighted by how much of the pixel
+// the segment spans. Pixel centres at +0.5 as above. Combined "over".
+void draw_line_wu(canvas_t *canvas, float x0, float y0, float x1, float y1, float intensity = 1.0f);
+
+// Integer Bresenham (seed 003, all eight octants by swapping axes and ends; one code path):
+// sets pixels (x, y) from (x0, y0) to (x1, y1), both included, to `intensity` (clamped
+// 0..1). The chosen minor coordinate at major step k is round(k·dy/dx) with exact halves
+// rounded towards the start after ordering the ends by the major axis, so swapping the
+// endpoints gives the same pixel set. Any int coordinates (64/128-bit intermediates).
+void draw_line_bresenham(canvas_t *canvas, int x0, int y0, int x1, int y1, float intensity = 1.0f);
+
+// Seed 004's mixColors for intensities: a·(1 − t) + b·t with t clamped to 0..1.
+float mix_intensity(float a, float b, float t);
+
+// Seed 004's gradient line: the Bresenham pixels of (x0, y0)–(x1, y1), each set to
+// mix_intensity(intensity0, intensity1, k / n) for the k-th of the n + 1 pixels from
+// (x0, y0) (n = max(|dx|, |dy|); a single pixel takes intensity0).
+void draw_line_gradient(canvas_t *canvas, int x0, int y0, int x1, int y1, float intensity0, float intensity1);
+
+// ---- reading and writing PNM images (src/canvas/pnm_io.cpp) -----------------------------
+
+// Reads a PGM (P2 ASCII, P5 binary) or PPM (P3, P6; converted to grey by Rec. 709
+// luminance Y = 0.2126 R + 0.7152 G + 0.0722 B on the linear values, no gamma) into a new
+// canvas, values = sample / maxval. Accepts '#' comments anywhere in the header, any
+// maxval 1..65535 (binary samples with maxval > 255 are 2 bytes, big-endian). Errors name
+// the file and the 1-based line (header, ASCII data) or byte offset (binary data) for: a
+// missing or unreadable file, a bad magic number, malformed or missing numbers, a size
+// beyond the canvas limits, more pixels than the file could hold (checked against the
+// file size before any allocation), samples above maxval, truncated data.
+result<canvas_ptr> load_pgm(const std::string &path);
+
+enum class ppm_encoding { binary_p6, ascii_p3 };
+
+// Writes the grey canvas as a colour PPM (R = G = B = round(clamp(v)·255)), atomically
+// like save_pgm, with the same errors.
+status save_ppm(const canvas_t &canvas, const std::string &path, ppm_encoding encoding = ppm_encoding::binary_p6);
 
 }  // namespace tiny3d
 

@@ -4,6 +4,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iterator>
@@ -100,5 +102,161 @@ TEST(save_errors_leave_nothing) {
     CHECK(!full.ok());
     struct stat st {};
     CHECK(stat("/dev/full", &st) == 0 && S_ISCHR(st.st_mode));  // the device is still a device
+    destroy_canvas(c);
+}
+
+// ---- PGM / PPM reading ---------------------------------------------------------------------
+
+namespace {
+
+std::string temp_path(const std::string &name) {
+    return "/tmp/tiny3d_canvas_test_" + std::to_string(getpid()) + "_" + name;
+}
+
+void write_bytes(const std::string &path, const std::string &bytes) {
+    std::ofstream out(path, std::ios::binary);
+    out << bytes;
+}
+
+// Files in /tmp whose name starts with `prefix` (to check that failed saves leave none).
+int files_starting_with(const std::string &prefix) {
+    int n = 0;
+    FILE *p = popen(("ls /tmp 2>/dev/null | grep -c '^" + prefix + "'").c_str(), "r");
+    if (p) {
+        if (fscanf(p, "%d", &n) != 1) n = -1;
+        pclose(p);
+    }
+    return n;
+}
+
+}  // namespace
+
+TEST(pgm_round_trip_p5_and_p2_odd_sizes) {
+    const int sizes[][2] = {{1, 1}, {7, 5}, {13, 3}, {3, 17}};
+    for (auto sz : sizes) {
+        canvas_t *c = create_canvas(sz[0], sz[1]);
+        for (int i = 0; i < sz[0] * sz[1]; ++i) c->data[i] = float((i * 37) % 256) / 255.0f;
+        for (auto enc : {tiny3d::pgm_encoding::binary_p5, tiny3d::pgm_encoding::ascii_p2}) {
+            const std::string path = temp_path("rt.pgm");
+            CHECK(tiny3d::save_pgm(*c, path, enc).ok());
+            auto back = tiny3d::load_pgm(path);
+            CHECK_MSG(back.ok(), back.message());
+            if (back.ok()) {
+                CHECK_EQ((*back)->width, sz[0]);
+                CHECK_EQ((*back)->height, sz[1]);
+                double worst = 0;
+                for (int i = 0; i < sz[0] * sz[1]; ++i) worst = std::max(worst, double(std::fabs((*back)->data[i] - c->data[i])));
+                CHECK_NEAR(worst, 0.0, 1e-6);  // k/255 survives the 8-bit round trip
+            }
+            std::remove(path.c_str());
+        }
+        destroy_canvas(c);
+    }
+}
+
+TEST(pgm_reader_comments_maxval_16bit_and_colour) {
+    const std::string path = temp_path("read.pnm");
+    write_bytes(path, "P2\n# a comment\n3 # width then height\n1\n# maxval next\n10\n0 5\n10\n");
+    auto a = tiny3d::load_pgm(path);
+    CHECK_MSG(a.ok(), a.message());
+    if (a.ok()) {
+        CHECK_NEAR((*a)->data[1], 0.5, 1e-7);
+        CHECK_NEAR((*a)->data[2], 1.0, 1e-7);
+    }
+    // 16-bit binary: big-endian samples.
+    write_bytes(path, std::string("P5\n2 1\n65535\n") + char(0x80) + char(0x00) + char(0xff) + char(0xff));
+    auto b = tiny3d::load_pgm(path);
+    CHECK_MSG(b.ok(), b.message());
+    if (b.ok()) {
+        CHECK_NEAR((*b)->data[0], 32768.0 / 65535.0, 1e-7);
+        CHECK_NEAR((*b)->data[1], 1.0, 1e-7);
+    }
+    // Colour to grey by Rec. 709 luminance: pure green is 0.7152.
+    write_bytes(path, std::string("P6 1 1 255\n") + char(0) + char(255) + char(0));
+    auto c = tiny3d::load_pgm(path);
+    CHECK_MSG(c.ok(), c.message());
+    if (c.ok()) CHECK_NEAR((*c)->data[0], 0.7152, 1e-6);
+    write_bytes(path, "P3\n1 1\n100\n100 0 100\n");
+    auto d = tiny3d::load_pgm(path);
+    if (d.ok()) CHECK_NEAR((*d)->data[0], 0.2126 + 0.0722, 1e-6);
+    CHECK(d.ok());
+    std::remove(path.c_str());
+}
+
+TEST(ppm_write_round_trip_and_errors) {
+    canvas_t *c = create_canvas(5, 3);
+    for (int i = 0; i < 15; ++i) c->data[i] = float(i * 17) / 255.0f;
+    for (auto enc : {tiny3d::ppm_encoding::binary_p6, tiny3d::ppm_encoding::ascii_p3}) {
+        const std::string path = temp_path("rt.ppm");
+        CHECK(tiny3d::save_ppm(*c, path, enc).ok());
+        auto back = tiny3d::load_pgm(path);  // R = G = B: luminance weights sum to 1
+        CHECK_MSG(back.ok(), back.message());
+        if (back.ok())
+            for (int i = 0; i < 15; ++i) CHECK_NEAR((*back)->data[i], c->data[i], 1e-6);
+        std::remove(path.c_str());
+    }
+    CHECK(!tiny3d::save_ppm(*c, "/nonexistent_dir_tiny3d/x.ppm").ok());
+    CHECK(!tiny3d::save_ppm(*c, "/dev/full").ok());
+    destroy_canvas(c);
+}
+
+TEST(pgm_reader_errors_name_file_and_place) {
+    const std::string path = temp_path("bad.pgm");
+    struct bad_case {
+        std::string bytes, where;  // expected fragment of the message
+    };
+    const bad_case cases[] = {
+        {"", ":1: not a PGM"},
+        {"P7\n1 1\n255\n", ":1: not a PGM"},
+        {"P5\n4 4\n255\n" + std::string(10, 'x'), ": byte 11: truncated"},    // 16 bytes needed
+        {"P5\n2 2\n65535\n" + std::string(6, 'x'), ": byte 13: truncated"},  // 2 bytes per sample
+        {"P2\n3 2\n255\n1 2 3 4\n", ":3: truncated"},  // too short to hold 6 samples
+        {"P2\n2 2\n255\n1 2 3 x\n", ":4: expected a sample"},
+        {"P2\n2 1\n255\n1 300\n", ":4: sample 300 exceeds maxval"},
+        {"P5\n1 1\n100\n" + std::string(1, char(200)), ": byte 11: sample 200 exceeds"},
+        {"P2\n2 2\n", ":3: unexpected end of file: expected maxval"},
+        {"P2\n2 -2\n255\n", ":2: expected height"},
+        {"P2\n2x 2\n255\n", ":2: malformed width"},
+        {"P2\n2 2\n0\n", ":3: maxval must be 1..65535"},
+        {"P5\n2 2\n70000\n", ":3: maxval must be 1..65535"},
+        {"P5\n100000 100000\n255\n", "exceeds the limit"},        // oversized, before allocating
+        {"P5\n16000 16000\n255\n\n", ": byte 19: truncated"},  // claims 256 MB, has 1 byte
+        {"P5\n1 1\n255", ":3: expected one whitespace byte"},
+        {"P2\n0 3\n255\n", "must be positive"},
+        {"P2\n99999999999 1\n255\n", ":2: width is too large"},
+    };
+    for (const bad_case &b : cases) {
+        write_bytes(path, b.bytes);
+        auto r = tiny3d::load_pgm(path);
+        CHECK(!r.ok());
+        if (!r.ok()) {
+            CHECK_MSG(r.message().find(path) == 0, r.message());
+            CHECK_MSG(r.message().find(b.where) != std::string::npos, r.message() + "  (wanted '" + b.where + "')");
+        }
+    }
+    std::remove(path.c_str());
+    auto missing = tiny3d::load_pgm("/nonexistent_dir_tiny3d/none.pgm");
+    CHECK(!missing.ok() && missing.message().find("cannot open") != std::string::npos);
+    auto folder = tiny3d::load_pgm("/tmp");
+    CHECK(!folder.ok());
+}
+
+TEST(failed_saves_leave_no_file) {
+    canvas_t *c = create_canvas(3, 3);
+    const std::string prefix = "tiny3d_canvas_test_" + std::to_string(getpid()) + "_folder";
+    const std::string folder = "/tmp/" + prefix;
+    CHECK(mkdir(folder.c_str(), 0755) == 0);
+    CHECK(!tiny3d::save_pgm(*c, folder).ok());  // the target is a folder
+    CHECK(!tiny3d::save_ppm(*c, folder).ok());
+    CHECK(!tiny3d::save_pgm(*c, folder + "/missing/x.pgm").ok());
+    CHECK_EQ(files_starting_with(prefix), 1);  // just the folder, no temporaries
+    FILE *p = popen(("ls -A " + folder + " | wc -l").c_str(), "r");
+    int inside = -1;
+    if (p) {
+        if (fscanf(p, "%d", &inside) != 1) inside = -1;
+        pclose(p);
+    }
+    CHECK_EQ(inside, 0);
+    rmdir(folder.c_str());
     destroy_canvas(c);
 }

@@ -81,30 +81,55 @@ status write_file_atomic(const std::string &path, const void *data, std::size_t 
     return {};
 }
 
+namespace {
+
+// 8-bit sample of an intensity: round(clamp(v, 0, 1)·255); NaN → 0.
+unsigned to_byte(float v) {
+    if (!(v > 0.0f)) return 0;
+    if (v >= 1.0f) return 255;
+    return unsigned(std::lround(v * 255.0f));
+}
+
+// A grey canvas as a PNM file with maxval 255: `channels` copies of each sample (1 for
+// PGM, 3 for PPM), binary or ASCII (at most 16 samples per text line).
+std::string encode_pnm(const canvas_t &c, const char *magic, int channels, bool binary) {
+    const std::size_t n = std::size_t(c.width) * std::size_t(c.height);
+    std::string out = std::string(magic) + "\n" + std::to_string(c.width) + " " + std::to_string(c.height) + "\n255\n";
+    if (binary) {
+        const std::size_t header = out.size();
+        out.resize(header + n * std::size_t(channels));
+        char *dst = out.data() + header;
+        for (std::size_t i = 0; i < n; ++i)
+            for (int ch = 0; ch < channels; ++ch) *dst++ = char(to_byte(c.data[i]));
+        return out;
+    }
+    out.reserve(out.size() + n * 4 * std::size_t(channels));
+    for (int y = 0; y < c.height; ++y) {
+        int on_line = 0;
+        for (int x = 0; x < c.width; ++x)
+            for (int ch = 0; ch < channels; ++ch) {
+                if (on_line) out += (on_line % 16 == 0) ? '\n' : ' ';
+                out += std::to_string(to_byte(c.pixels[y][x]));
+                ++on_line;
+            }
+        out += '\n';
+    }
+    return out;
+}
+
+}  // namespace
+
 status save_pgm(const canvas_t &c, const std::string &path, pgm_encoding encoding) {
     if (!c.data || c.width <= 0 || c.height <= 0) return error{path, 0, -1, "cannot save: invalid canvas"};
-    const std::size_t n = std::size_t(c.width) * std::size_t(c.height);
-    auto to_byte = [](float v) -> unsigned {
-        if (!(v > 0.0f)) return 0;  // also NaN
-        if (v >= 1.0f) return 255;
-        return unsigned(std::lround(v * 255.0f));
-    };
-    std::string out = (encoding == pgm_encoding::binary_p5 ? "P5\n" : "P2\n") + std::to_string(c.width) + " " +
-                      std::to_string(c.height) + "\n255\n";
-    if (encoding == pgm_encoding::binary_p5) {
-        const std::size_t header = out.size();
-        out.resize(header + n);
-        for (std::size_t i = 0; i < n; ++i) out[header + i] = char(to_byte(c.data[i]));
-    } else {
-        out.reserve(out.size() + n * 4);
-        for (int y = 0; y < c.height; ++y) {
-            for (int x = 0; x < c.width; ++x) {
-                if (x) out += (x % 16 == 0) ? '\n' : ' ';
-                out += std::to_string(to_byte(c.pixels[y][x]));
-            }
-            out += '\n';
-        }
-    }
+    const bool binary = encoding == pgm_encoding::binary_p5;
+    const std::string out = encode_pnm(c, binary ? "P5" : "P2", 1, binary);
+    return write_file_atomic(path, out.data(), out.size());
+}
+
+status save_ppm(const canvas_t &c, const std::string &path, ppm_encoding encoding) {
+    if (!c.data || c.width <= 0 || c.height <= 0) return error{path, 0, -1, "cannot save: invalid canvas"};
+    const bool binary = encoding == ppm_encoding::binary_p6;
+    const std::string out = encode_pnm(c, binary ? "P6" : "P3", 3, binary);
     return write_file_atomic(path, out.data(), out.size());
 }
 

@@ -3,35 +3,9 @@
 #include <cstdint>
 
 #include "canvas.h"
+#include "line_clip.h"
 
-namespace {
-
-// Liang–Barsky: the parameter interval [t0, t1] ⊂ [0, 1] of P(t) = P0 + t·D inside the
-// box [xmin, xmax] × [ymin, ymax]; false if the segment misses it.
-bool clip_parameter_range(double x0, double y0, double dx, double dy, double xmin, double ymin, double xmax,
-                          double ymax, double &t0, double &t1) {
-    t0 = 0.0;
-    t1 = 1.0;
-    const double p[4] = {-dx, dx, -dy, dy};
-    const double q[4] = {x0 - xmin, xmax - x0, y0 - ymin, ymax - y0};
-    for (int i = 0; i < 4; ++i) {
-        if (p[i] == 0.0) {
-            if (q[i] < 0.0) return false;
-            continue;
-        }
-        const double r = q[i] / p[i];
-        if (p[i] < 0.0) {
-            if (r > t1) return false;
-            if (r > t0) t0 = r;
-        } else {
-            if (r < t0) return false;
-            if (r < t1) t1 = r;
-        }
-    }
-    return true;
-}
-
-}  // namespace
+using tiny3d::detail::clip_parameter_range;
 
 void draw_line_f(canvas_t *c, float x0, float y0, float x1, float y1, float thickness) {
     if (!c || !std::isfinite(x0) || !std::isfinite(y0) || !std::isfinite(x1) || !std::isfinite(y1) ||

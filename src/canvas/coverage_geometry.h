@@ -1,0 +1,100 @@
+// coverage_geometry.h — (internal) exact areas of small convex polygons, alone and inside
+// a disc. Used by the exact coverage reference (double) and by the few cap pixels of the
+// fast coverage line (float). Templated on the scalar type.
+#ifndef TINY3D_COVERAGE_GEOMETRY_H
+#define TINY3D_COVERAGE_GEOMETRY_H
+
+#include <algorithm>
+#include <cmath>
+
+namespace tiny3d::detail {
+
+template <class T>
+struct point2 {
+    T x, y;
+};
+
+// A convex polygon of at most kMax vertices (a square cut by up to 4 half-planes has ≤ 8).
+template <class T>
+struct small_polygon {
+    static constexpr int kMax = 12;
+    point2<T> v[kMax];
+    int n = 0;
+};
+
+// Sutherland–Hodgman step: the part of `in` where a·x + b·y ≤ c.
+template <class T>
+small_polygon<T> clip_half_plane(const small_polygon<T> &in, T a, T b, T c) {
+    small_polygon<T> out;
+    for (int i = 0; i < in.n; ++i) {
+        const point2<T> p = in.v[i], q = in.v[(i + 1) % in.n];
+        const T fp = a * p.x + b * p.y - c, fq = a * q.x + b * q.y - c;
+        if (fp <= 0) out.v[out.n++] = p;
+        if ((fp < 0 && fq > 0) || (fp > 0 && fq < 0)) {
+            const T t = fp / (fp - fq);
+            out.v[out.n++] = {p.x + t * (q.x - p.x), p.y + t * (q.y - p.y)};
+        }
+    }
+    return out;
+}
+
+// Shoelace formula: signed area, positive for counter-clockwise (in x-right, y-up terms).
+// Taken relative to the first vertex, so far-off polygons do not cancel catastrophically.
+template <class T>
+T signed_area(const small_polygon<T> &p) {
+    if (p.n < 3) return 0;
+    const point2<T> o = p.v[0];
+    T twice = 0;
+    for (int i = 1; i + 1 < p.n; ++i) {
+        const T ax = p.v[i].x - o.x, ay = p.v[i].y - o.y;
+        const T bx = p.v[i + 1].x - o.x, by = p.v[i + 1].y - o.y;
+        twice += ax * by - ay * bx;
+    }
+    return twice / 2;
+}
+
+// Signed area of the circular sector of radius r from direction p to direction q (the
+// angle between them, in (−π, π]).
+template <class T>
+T sector_area(point2<T> p, point2<T> q, T r2) {
+    return r2 / 2 * std::atan2(p.x * q.y - p.y * q.x, p.x * q.x + p.y * q.y);
+}
+
+// Signed area of (triangle O, p, q) ∩ disc(O, r), O = origin. The edge p→q is split where
+// it crosses the circle: inside pieces count as triangles, outside pieces as sectors.
+// Summed over a polygon's edges this is the exact area of polygon ∩ disc.
+template <class T>
+T edge_disc_area(point2<T> p, point2<T> q, T r2) {
+    const point2<T> d{q.x - p.x, q.y - p.y};
+    const T a = d.x * d.x + d.y * d.y;
+    if (a == 0) return 0;
+    const T b = p.x * d.x + p.y * d.y;
+    const T c = p.x * p.x + p.y * p.y - r2;
+    const T disc = b * b - a * c;
+    if (disc <= 0) return sector_area(p, q, r2);  // the edge's line misses the circle
+    const T s = std::sqrt(disc);
+    const T t_in = std::clamp((-b - s) / a, T(0), T(1));
+    const T t_out = std::clamp((-b + s) / a, T(0), T(1));
+    const point2<T> A{p.x + t_in * d.x, p.y + t_in * d.y};
+    const point2<T> B{p.x + t_out * d.x, p.y + t_out * d.y};
+    T area = (A.x * B.y - A.y * B.x) / 2;
+    if (t_in > 0) area += sector_area(p, A, r2);
+    if (t_out < 1) area += sector_area(B, q, r2);
+    return area;
+}
+
+// Unsigned area of the convex polygon ∩ the disc of radius r centred at (cx, cy).
+template <class T>
+T polygon_disc_area(const small_polygon<T> &poly, T cx, T cy, T r) {
+    const T r2 = r * r;
+    T sum = 0;
+    for (int i = 0; i < poly.n; ++i) {
+        const point2<T> p = poly.v[i], q = poly.v[(i + 1) % poly.n];
+        sum += edge_disc_area<T>({p.x - cx, p.y - cy}, {q.x - cx, q.y - cy}, r2);
+    }
+    return std::fabs(sum);
+}
+
+}  // namespace tiny3d::detail
+
+#endif

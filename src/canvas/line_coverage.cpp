@@ -1,0 +1,345 @@
+// line_coverage.cpp — the exact-coverage thick line (fast), its double-precision reference
+// and a supersampled variant for the benchmark.
+//
+// The stroke of segment A→B with half-width h is  rectangle ∪ (round caps: two half-discs).
+// In the line's frame (u across, v along, origin A) the rectangle is |u| ≤ h, 0 ≤ v ≤ L.
+// A pixel whose square lies inside 0 ≤ v ≤ L sees only the band |u| ≤ h, and the area of
+// a unit square inside a band depends only on the angle and the centre's u (closed form
+// below). The few pixels whose square crosses v = 0 or v = L are clipped exactly.
+#include <algorithm>
+#include <cmath>
+#include <initializer_list>
+#include <utility>
+#include <vector>
+
+#include "canvas.h"
+#include "coverage_geometry.h"
+#include "line_clip.h"
+
+namespace tiny3d {
+namespace {
+
+using detail::clip_half_plane;
+using detail::point2;
+using detail::polygon_disc_area;
+using detail::signed_area;
+using detail::small_polygon;
+
+// Below this length (px) a segment is a point: its direction is taken as +x.
+constexpr double kPointLength = 1e-9;
+// Half the diagonal of a unit pixel: no point of a pixel is farther than this from its centre.
+constexpr double kHalfDiagonal = 0.70710678118654752;
+// Margin (px) beyond the stroke's reach when clipping, so clipped ends stay off the canvas.
+constexpr double kClipSlack = 2.0;
+
+// Area of a unit square (centre at offset 0) on the side {s' ≤ s} of a line with unit
+// normal (a, b), as the CDF of U = a·X + b·Y, X, Y ~ U(−½, ½): a trapezoidal density.
+// With amax ≥ amin the abs components, w_lo = (amax − amin)/2, w_hi = (amax + amin)/2:
+//   F(s) = ½ + sign(s)·H(|s|),  H(t) = min(t, w_lo)/amax + m(2·amin − m)/(2·amax·amin),
+//   m = clamp(t − w_lo, 0, amin)   (linear middle part, quadratic corners, H(w_hi) = ½).
+struct square_cdf {
+    float w_lo, w_hi, inv_amax, amin, inv_2ab;
+
+    square_cdf(double a, double b) {
+        const double amax = std::max(std::fabs(a), std::fabs(b));
+        const double amin_d = std::min(std::fabs(a), std::fabs(b));
+        w_lo = float((amax - amin_d) / 2);
+        w_hi = float((amax + amin_d) / 2);
+        inv_amax = float(1.0 / amax);
+        amin = float(amin_d);
+        // amin = 0 (axis-aligned line) makes m ≡ 0: any finite factor will do.
+        inv_2ab = amin_d > 0 ? float(1.0 / (2.0 * amax * amin_d)) : 0.0f;
+    }
+    // sign(s)·H(|s|) = F(s) − ½
+    float centred(float s) const {
+        const float t = std::fabs(s);
+        const float m = std::clamp(t - w_lo, 0.0f, amin);
+        const float h = std::min(t, w_lo) * inv_amax + m * (2.0f * amin - m) * inv_2ab;
+        return std::copysign(h, s);
+    }
+    // Area of the square inside the band |s'| ≤ half_width when its centre is at u:
+    // F(h − u) − F(−h − u) = (F(h − u) − ½) + (F(h + u) − ½).
+    float band(float u, float half_width) const { return centred(half_width - u) + centred(half_width + u); }
+};
+
+// The stroke in a local frame: origin A, unit direction (dx, dy), normal (−dy, dx),
+// length L, half-width h; round caps at A and/or B.
+template <class T>
+struct stroke_frame {
+    T dx, dy, length, half;
+    bool cap_a, cap_b;
+
+    // Exact area of the convex polygon `sq` (coordinates relative to A) inside the stroke:
+    // the rectangle's four half-planes, then each cap's disc beyond its end. The plain
+    // form, used by the reference.
+    T area(const small_polygon<T> &sq) const {
+        const T nx = -dy, ny = dx;
+        small_polygon<T> body = clip_half_plane(sq, nx, ny, half);
+        body = clip_half_plane(body, -nx, -ny, half);
+        body = clip_half_plane(body, -dx, -dy, T(0));
+        body = clip_half_plane(body, dx, dy, length);
+        T total = std::fabs(signed_area(body));
+        if (cap_a) total += polygon_disc_area(clip_half_plane(sq, dx, dy, T(0)), T(0), T(0), half);
+        if (cap_b)
+            total += polygon_disc_area(clip_half_plane(sq, -dx, -dy, -length), dx * length, dy * length, half);
+        return total;
+    }
+
+    // The same area for the unit square [x, x+1] × [y, y+1] (relative to A), skipping
+    // every clip and disc that cannot change the result. Used by the fast line.
+    T unit_square_area(T x, T y) const {
+        const T nx = -dy, ny = dx;
+        // u, v ranges over the corners: centre ± half the square's extent along each axis.
+        const T cu = nx * (x + T(0.5)) + ny * (y + T(0.5)), cv = dx * (x + T(0.5)) + dy * (y + T(0.5));
+        const T ext = (std::fabs(dx) + std::fabs(dy)) / 2;
+        const small_polygon<T> sq = square(x, y);
+        T total = 0;
+        if (cv + ext > 0 && cv - ext < length && cu - ext < half && cu + ext > -half) {
+            small_polygon<T> body = sq;
+            if (cu + ext > half) body = clip_half_plane(body, nx, ny, half);
+            if (cu - ext < -half) body = clip_half_plane(body, -nx, -ny, half);
+            if (cv - ext < 0) body = clip_half_plane(body, -dx, -dy, T(0));
+            if (cv + ext > length) body = clip_half_plane(body, dx, dy, length);
+            total = std::fabs(signed_area(body));
+        }
+        if (cap_a && cv - ext < 0) total += cap_part(sq, x, y, T(0), T(0), cv + ext > 0, dx, dy, T(0));
+        if (cap_b && cv + ext > length)
+            total += cap_part(sq, x, y, dx * length, dy * length, cv - ext < length, -dx, -dy, -length);
+        return total;
+    }
+
+    static small_polygon<T> square(T x, T y) {
+        small_polygon<T> sq;
+        sq.n = 4;
+        sq.v[0] = {x, y};
+        sq.v[1] = {x + 1, y};
+        sq.v[2] = {x + 1, y + 1};
+        sq.v[3] = {x, y + 1};
+        return sq;
+    }
+
+private:
+    // Area of the axis-aligned unit square `sq` (corner x, y) beyond an end (the side
+    // a·px + b·py ≤ c, clipped only if `crosses`) inside the end's disc centred (cx, cy).
+    T cap_part(const small_polygon<T> &sq, T x, T y, T cx, T cy, bool crosses, T a, T b, T c) const {
+        const T r2 = half * half;
+        const T gx = std::max({x - cx, cx - x - 1, T(0)}), gy = std::max({y - cy, cy - y - 1, T(0)});
+        if (gx * gx + gy * gy >= r2) return 0;  // the square misses the disc
+        const T fx = std::max(std::fabs(x - cx), std::fabs(x + 1 - cx));
+        const T fy = std::max(std::fabs(y - cy), std::fabs(y + 1 - cy));
+        const small_polygon<T> part = crosses ? clip_half_plane(sq, a, b, c) : sq;
+        if (fx * fx + fy * fy <= r2) return std::fabs(signed_area(part));  // inside the disc
+        return polygon_disc_area(part, cx, cy, half);
+    }
+};
+
+// Direction, length and normal of a segment, with a point treated as direction +x.
+struct segment_axes {
+    double dx = 1.0, dy = 0.0, length = 0.0;
+    segment_axes(double x0, double y0, double x1, double y1) {
+        const double len = std::hypot(x1 - x0, y1 - y0);
+        if (len > kPointLength && std::isfinite(len)) {
+            dx = (x1 - x0) / len;
+            dy = (y1 - y0) / len;
+            length = len;
+        }
+    }
+};
+
+bool finite_all(std::initializer_list<double> values) {
+    for (double v : values)
+        if (!std::isfinite(v)) return false;
+    return true;
+}
+
+// Pixel cells [first, last] of a row of `size` that the open span (lo, hi) (px) touches,
+// clamped to the row; first > last when none. (Clamping first keeps the int conversions
+// in range and lets truncation stand in for floor.)
+std::pair<int, int> touched_cells(double lo, double hi, int size) {
+    lo = std::max(lo, 0.0);
+    hi = std::min(hi, double(size));
+    if (!(lo < hi)) return {0, -1};
+    const int first = int(lo);
+    int end = int(hi);
+    if (double(end) < hi) ++end;  // ceil(hi)
+    return {first, end - 1};
+}
+
+}  // namespace
+
+void draw_line_coverage(canvas_t *canvas, float x0, float y0, float x1, float y1, float thickness,
+                        const line_style &style) {
+    if (!canvas || !finite_all({x0, y0, x1, y1, thickness, style.intensity}) || !(thickness > 0.0f) ||
+        !(style.intensity > 0.0f))
+        return;
+    const float intensity = std::min(style.intensity, 1.0f);
+    const bool round = style.cap == line_cap::round;
+    const double h = 0.5 * double(thickness);
+
+    // Work in (major, minor) coordinates: the major axis is the one the line advances
+    // along faster, so every major column holds a short run of pixels. One code path.
+    const bool steep = std::fabs(double(y1) - y0) > std::fabs(double(x1) - x0);
+    double ax = steep ? y0 : x0, ay = steep ? x0 : y0, bx = steep ? y1 : x1, by = steep ? x1 : y1;
+    // Canonical endpoint order, so drawing B→A is bit-identical to A→B.
+    if (bx < ax || (bx == ax && by < ay)) {
+        std::swap(ax, bx);
+        std::swap(ay, by);
+    }
+    const int major_size = steep ? canvas->height : canvas->width;
+    const int minor_size = steep ? canvas->width : canvas->height;
+    const std::ptrdiff_t major_stride = steep ? canvas->width : 1;
+    const std::ptrdiff_t minor_stride = steep ? 1 : canvas->width;
+
+    // Clip to the canvas grown by the stroke's reach: a clipped end lies ≥ kClipSlack px
+    // off the canvas, so its (dropped) cap cannot touch a canvas pixel.
+    const segment_axes axes(ax, ay, bx, by);
+    const double margin = h + kClipSlack;
+    double t0 = 0.0, t1 = 1.0;
+    if (!detail::clip_parameter_range(ax, ay, bx - ax, by - ay, -margin, -margin, major_size + margin,
+                                      minor_size + margin, t0, t1))
+        return;
+    const double cax = ax + t0 * (bx - ax), cay = ay + t0 * (by - ay);
+    const double length = (t1 - t0) * axes.length;
+    // The end pixels are clipped in double: in float, near-tangent circle crossings lose
+    // up to 3e-3 of area.
+    const stroke_frame<double> frame{axes.dx, axes.dy, length, h, round && t0 == 0.0, round && t1 == 1.0};
+    const double cbx = cax + axes.dx * length, cby = cay + axes.dy * length;
+
+    const double nx = -axes.dy, ny = axes.dx;  // unit normal; axes.dx ≥ |axes.dy|
+    const square_cdf cdf(nx, ny);
+    const float hf = float(h);
+    const float reach = hf + cdf.w_hi;  // |u| ≥ reach: the square misses the stroke
+    // A square whose centre has slab_lo ≤ v ≤ slab_hi lies inside 0 ≤ v ≤ L.
+    const float slab_lo = cdf.w_hi, slab_hi = float(length) - cdf.w_hi;
+    const float du = float(ny), dv = float(axes.dy);  // change of u, v per minor step
+
+    // Major columns the stroke can reach; per column, the minor span of the band
+    // (|minor − centreline| ≤ h / axes.dx over the column) plus, near a round end, that
+    // end's disc.
+    const auto [col_first, col_last] = touched_cells(std::min(cax, cbx) - h, std::max(cax, cbx) + h, major_size);
+    const double slope = axes.dy / axes.dx, band_half = h / axes.dx;
+    const double span_lo = std::min(0.0, slope) - band_half, span_hi = std::max(0.0, slope) + band_half;
+    float *const data = canvas->data;
+    for (int i = col_first; i <= col_last; ++i) {
+        const double y_left = cay + (i - cax) * slope;
+        double lo = y_left + span_lo, hi = y_left + span_hi;
+        if (frame.cap_a && i + 1 > cax - h && i < cax + h) {
+            lo = std::min(lo, cay - h);
+            hi = std::max(hi, cay + h);
+        }
+        if (frame.cap_b && i + 1 > cbx - h && i < cbx + h) {
+            lo = std::min(lo, cby - h);
+            hi = std::max(hi, cby + h);
+        }
+        const auto [row_first, row_last] = touched_cells(lo, hi, minor_size);
+        if (row_first > row_last) continue;
+        // Centre of the first pixel relative to A, then u, v by increments down the column.
+        const double rx = i + 0.5 - cax, ry = row_first + 0.5 - cay;
+        float u = float(rx * nx + ry * ny), v = float(rx * axes.dx + ry * axes.dy);
+        const float v_end = v + dv * float(row_last - row_first);
+        float *px = data + i * major_stride + row_first * minor_stride;
+        if (std::min(v, v_end) >= slab_lo && std::max(v, v_end) <= slab_hi) {
+            // The whole column lies between the ends: closed form only.
+            for (int j = row_first; j <= row_last; ++j, u += du, px += minor_stride) {
+                const float cov = cdf.band(u, hf);
+                if (cov > 0.0f) detail::combine_over(*px, intensity * cov);
+            }
+            continue;
+        }
+        for (int j = row_first; j <= row_last; ++j, u += du, v += dv, px += minor_stride) {
+            if (std::fabs(u) >= reach) continue;
+            float cov;
+            if (v >= slab_lo && v <= slab_hi)
+                cov = cdf.band(u, hf);
+            else
+                cov = float(std::min(frame.unit_square_area(i - cax, j - cay), 1.0));
+            if (cov > 0.0f) detail::combine_over(*px, intensity * cov);
+        }
+    }
+}
+
+namespace {
+
+// Distance from (px, py) to the stroke's centre segment, in the frame of `axes` from (x0, y0).
+double distance_to_segment(double px, double py, double x0, double y0, const segment_axes &axes) {
+    const double rx = px - x0, ry = py - y0;
+    const double v = std::clamp(rx * axes.dx + ry * axes.dy, 0.0, axes.length);
+    return std::hypot(rx - v * axes.dx, ry - v * axes.dy);
+}
+
+// Is the offset (rx, ry) from the first endpoint inside the stroke?
+bool inside_stroke(double rx, double ry, const segment_axes &axes, double h, line_cap cap) {
+    const double v = rx * axes.dx + ry * axes.dy;
+    const double u = ry * axes.dx - rx * axes.dy;
+    if (cap == line_cap::butt) return std::fabs(u) <= h && v >= 0.0 && v <= axes.length;
+    const double vc = std::clamp(v, 0.0, axes.length);
+    const double ex = rx - vc * axes.dx, ey = ry - vc * axes.dy;
+    return ex * ex + ey * ey <= h * h;
+}
+
+// Calls visit(x, y) for the canvas pixels whose centre is within h + half a diagonal of
+// the segment: a superset of the pixels the stroke touches (round or butt caps).
+template <class Visit>
+void for_pixels_near_stroke(int width, int height, double x0, double y0, double x1, double y1, double h,
+                            Visit &&visit) {
+    const segment_axes axes(x0, y0, x1, y1);
+    const double reach = h + kHalfDiagonal;
+    double t0, t1;
+    if (!detail::clip_parameter_range(x0, y0, x1 - x0, y1 - y0, -reach, -reach, width + reach, height + reach, t0,
+                                      t1))
+        return;
+    const double ax = x0 + t0 * (x1 - x0), ay = y0 + t0 * (y1 - y0);
+    const double bx = x0 + t1 * (x1 - x0), by = y0 + t1 * (y1 - y0);
+    const auto [xa, xb] = touched_cells(std::min(ax, bx) - reach, std::max(ax, bx) + reach, width);
+    const auto [ya, yb] = touched_cells(std::min(ay, by) - reach, std::max(ay, by) + reach, height);
+    for (int y = ya; y <= yb; ++y)
+        for (int x = xa; x <= xb; ++x)
+            if (distance_to_segment(x + 0.5, y + 0.5, x0, y0, axes) <= reach) visit(x, y);
+}
+
+bool reference_inputs_ok(double x0, double y0, double x1, double y1, double thickness) {
+    return finite_all({x0, y0, x1, y1, thickness}) && thickness > 0.0;
+}
+
+}  // namespace
+
+double line_coverage_reference_at(int px, int py, double x0, double y0, double x1, double y1, double thickness,
+                                  line_cap cap) {
+    if (!reference_inputs_ok(x0, y0, x1, y1, thickness)) return 0.0;
+    const segment_axes axes(x0, y0, x1, y1);
+    const bool round = cap == line_cap::round;
+    const stroke_frame<double> frame{axes.dx, axes.dy, axes.length, 0.5 * thickness, round, round};
+    // The pixel square relative to the first endpoint (exact for |coordinates| < 2^52).
+    return std::min(frame.area(stroke_frame<double>::square(px - x0, py - y0)), 1.0);
+}
+
+void line_coverage_reference(std::vector<double> &coverage, int width, int height, double x0, double y0,
+                             double x1, double y1, double thickness, line_cap cap) {
+    coverage.assign(std::size_t(std::max(width, 0)) * std::size_t(std::max(height, 0)), 0.0);
+    if (width <= 0 || height <= 0 || !reference_inputs_ok(x0, y0, x1, y1, thickness)) return;
+    for_pixels_near_stroke(width, height, x0, y0, x1, y1, 0.5 * thickness, [&](int x, int y) {
+        coverage[std::size_t(y) * std::size_t(width) + std::size_t(x)] =
+            line_coverage_reference_at(x, y, x0, y0, x1, y1, thickness, cap);
+    });
+}
+
+void draw_line_supersampled(canvas_t *canvas, float x0, float y0, float x1, float y1, float thickness,
+                            int samples_per_axis, const line_style &style) {
+    if (!canvas || !reference_inputs_ok(x0, y0, x1, y1, thickness) || samples_per_axis < 1 ||
+        !std::isfinite(style.intensity) || !(style.intensity > 0.0f))
+        return;
+    const float intensity = std::min(style.intensity, 1.0f);
+    const segment_axes axes(x0, y0, x1, y1);
+    const double h = 0.5 * double(thickness);
+    const double step = 1.0 / samples_per_axis;
+    const double weight = step * step;
+    for_pixels_near_stroke(canvas->width, canvas->height, x0, y0, x1, y1, h, [&](int x, int y) {
+        int hits = 0;
+        for (int sy = 0; sy < samples_per_axis; ++sy)
+            for (int sx = 0; sx < samples_per_axis; ++sx)
+                hits += inside_stroke(x + (sx + 0.5) * step - x0, y + (sy + 0.5) * step - y0, axes, h, style.cap);
+        if (hits) detail::combine_over(canvas->pixels[y][x], float(intensity * hits * weight));
+    });
+}
+
+}  // namespace tiny3d
