@@ -16,6 +16,13 @@ namespace {
 
 bool divides_by(float w) { return w != 0.0f && w != 1.0f; }
 
+// mat4_mul_vec4(m, (p, 1)) with the same operation order (m12·1 = m12 exactly), here so
+// the per-point path inlines instead of copying the matrix into another call.
+inline vec4_t mul_point_scalar(const mat4_t &m, vec3_t p) {
+    return {m.m[0] * p.x + m.m[4] * p.y + m.m[8] * p.z + m.m[12], m.m[1] * p.x + m.m[5] * p.y + m.m[9] * p.z + m.m[13],
+            m.m[2] * p.x + m.m[6] * p.y + m.m[10] * p.z + m.m[14], m.m[3] * p.x + m.m[7] * p.y + m.m[11] * p.z + m.m[15]};
+}
+
 tiny3d::status size_error(const char *function, std::size_t in, std::size_t out) {
     return tiny3d::error{"", 0, -1,
                          std::string(function) + ": output holds " + std::to_string(out) + " points, input has " +
@@ -62,7 +69,7 @@ vec3_t apply_transform(mat4_t m, vec3_t v) { return tiny3d::transform_point(m, v
 namespace tiny3d {
 
 transformed_point transform_point(const mat4_t &m, vec3_t p) {
-    const vec4_t h = mat4_mul_vec4(m, vec4_from_vec3(p, 1.0f));
+    const vec4_t h = mul_point_scalar(m, p);
     if (divides_by(h.w)) return {{h.x / h.w, h.y / h.w, h.z / h.w}, h.w, true};
     return {{h.x, h.y, h.z}, h.w, false};
 }
@@ -89,7 +96,7 @@ status transform_points_homogeneous(const mat4_t &m, std::span<const vec3_t> in,
     const columns c = load_columns(m);
     for (std::size_t i = 0; i < in.size(); ++i) _mm_storeu_ps(&out[i].x, mul_point(c, in[i]));
 #else
-    for (std::size_t i = 0; i < in.size(); ++i) out[i] = mat4_mul_vec4(m, vec4_from_vec3(in[i], 1.0f));
+    for (std::size_t i = 0; i < in.size(); ++i) out[i] = mul_point_scalar(m, in[i]);
 #endif
     return {};
 }

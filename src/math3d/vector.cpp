@@ -1,15 +1,17 @@
 // vector.cpp — lengths, the three normalisations, the spherical form.
 //
-// Normalisation variants (numbers from tests/bench/normalize on the development machine,
-// AMD EPYC, g++ 12 -O2, one call per vector over 4096 vectors; error = max over
-// components of |computed − exact unit vector|, i.e. relative to the length):
-//   Quake 0x5f3759df + 1 Newton step (the report's)   ~3.1 ns   1.75e-3
-//   1/std::sqrt in float (vec3_normalize_fast_accurate) ~3.1 ns   1.77e-7  ← chosen
-//   rsqrtss + 1 Newton step                            ~3.1 ns   2.26e-7  (over the bound)
-//   rsqrtss + 2nd-order correction                     ~3.7 ns   1.51e-7  (slower)
-//   double sqrt and divide (vec3_normalize, exact)     ~4.1 ns   3.0e-8
-// sqrtss + divss are as cheap as the integer trick on current x86 cores, so the fast
-// accurate variant is the plain one.
+// Normalisation variants, measured by tests/bench/normalize (AMD EPYC, g++ 12 -O2, one
+// out-of-line call per vector over 4096 vectors of scale 2^±20, median of 31 runs on a
+// shared machine; error = max over components of |computed − exact unit vector|, i.e.
+// relative to the length, over 10⁶ vectors):
+//   Quake 0x5f3759df + 1 Newton step (the report's)   ~4.0 ns  1.75e-3
+//   1/std::sqrt in float (vec3_normalize_fast_accurate) ~2.9 ns  1.66e-7  ← chosen
+//   double sqrt and divide (vec3_normalize, exact)     ~3.8 ns  2.98e-8
+//   rsqrtss + 1 Newton step (bench-only candidate)     ~2.5 ns  2.04e-7  over the 2e-7 bound
+//   rsqrtss + 2nd-order correction (candidate)         ~3.0 ns  1.67e-7  no gain over sqrtss
+// sqrtss + divss are as cheap as the integer trick on current x86 cores (the Quake bit
+// moves between integer and float registers cost more), so the fast accurate variant is
+// the plain one, and it is also faster than the report's.
 #include <algorithm>
 #include <bit>
 #include <cmath>
