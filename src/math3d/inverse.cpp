@@ -22,23 +22,21 @@ struct minors {
     double det;
 };
 
+// Rows r0, r1 and columns c0, c1: a[r0][c0]·a[r1][c1] − a[r1][c0]·a[r0][c1].
+double minor2(const double (&a)[4][4], int r0, int r1, int c0, int c1) {
+    return a[r0][c0] * a[r1][c1] - a[r1][c0] * a[r0][c1];
+}
+
 minors expand(const mat4_t &m) {
     minors x{};
     for (int row = 0; row < 4; ++row)
         for (int col = 0; col < 4; ++col) x.a[row][col] = m.m[col * 4 + row];
-    const auto &a = x.a;
-    x.s[0] = a[0][0] * a[1][1] - a[1][0] * a[0][1];
-    x.s[1] = a[0][0] * a[1][2] - a[1][0] * a[0][2];
-    x.s[2] = a[0][0] * a[1][3] - a[1][0] * a[0][3];
-    x.s[3] = a[0][1] * a[1][2] - a[1][1] * a[0][2];
-    x.s[4] = a[0][1] * a[1][3] - a[1][1] * a[0][3];
-    x.s[5] = a[0][2] * a[1][3] - a[1][2] * a[0][3];
-    x.c[5] = a[2][2] * a[3][3] - a[3][2] * a[2][3];
-    x.c[4] = a[2][1] * a[3][3] - a[3][1] * a[2][3];
-    x.c[3] = a[2][1] * a[3][2] - a[3][1] * a[2][2];
-    x.c[2] = a[2][0] * a[3][3] - a[3][0] * a[2][3];
-    x.c[1] = a[2][0] * a[3][2] - a[3][0] * a[2][2];
-    x.c[0] = a[2][0] * a[3][1] - a[3][0] * a[2][1];
+    // s[k], c[k]: minors of rows 0–1 and rows 2–3 on the k-th column pair.
+    constexpr int kColumnPairs[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+    for (int k = 0; k < 6; ++k) {
+        x.s[k] = minor2(x.a, 0, 1, kColumnPairs[k][0], kColumnPairs[k][1]);
+        x.c[k] = minor2(x.a, 2, 3, kColumnPairs[k][0], kColumnPairs[k][1]);
+    }
     const double *s = x.s, *c = x.c;
     x.det = s[0] * c[5] - s[1] * c[4] + s[2] * c[3] + s[3] * c[2] - s[4] * c[1] + s[5] * c[0];
     return x;

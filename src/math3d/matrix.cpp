@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "math3d.h"
+#include "rows3.h"
 
 mat4_t mat4_identity(void) {
     mat4_t m = {};
@@ -65,18 +66,6 @@ vec4_t mat4_mul_vec4(mat4_t m, vec4_t v) {
 }
 
 // ---- libtiny3d additions: rotations ------------------------------------------------------
-namespace {
-
-// The 4×4 matrix whose upper-left 3×3 block is r (given row by row, in double), rounded once.
-mat4_t from_rows3(const double r[3][3]) {
-    mat4_t m = mat4_identity();
-    for (int row = 0; row < 3; ++row)
-        for (int col = 0; col < 3; ++col) m.m[col * 4 + row] = float(r[row][col]);
-    return m;
-}
-
-}  // namespace
-
 namespace tiny3d {
 
 mat4_t mat4_rotate_x(float angle) { return mat4_rotate_xyz(angle, 0.0f, 0.0f); }
@@ -95,7 +84,7 @@ mat4_t mat4_rotate_axis(vec3_t axis, float angle) {
         {t * k[1] * k[0] + s * k[2], c + t * k[1] * k[1], t * k[1] * k[2] - s * k[0]},
         {t * k[2] * k[0] - s * k[1], t * k[2] * k[1] + s * k[0], c + t * k[2] * k[2]},
     };
-    return from_rows3(r);
+    return detail::from_rows3(r);
 }
 
 mat4_t mat4_transpose(mat4_t m) {

@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "math3d.h"
+#include "rows3.h"
 
 namespace {
 
@@ -54,10 +55,7 @@ mat4_t quat_to_mat4(quat q) {
         {2.0 * (x * y + z * w), 1.0 - 2.0 * (x * x + z * z), 2.0 * (y * z - x * w)},
         {2.0 * (x * z - y * w), 2.0 * (y * z + x * w), 1.0 - 2.0 * (x * x + y * y)},
     };
-    mat4_t m = mat4_identity();
-    for (int row = 0; row < 3; ++row)
-        for (int col = 0; col < 3; ++col) m.m[col * 4 + row] = float(r[row][col]);
-    return m;
+    return detail::from_rows3(r);
 }
 
 // v' = v + 2w(u×v) + 2u×(u×v) for the unit q = (u, w).
