@@ -8,7 +8,7 @@ namespace {
 
 // The report switches to lerp + renormalise above this cosine.
 constexpr float kReportLerpCosine = 0.9995f;
-// Below this sin θ₀ (within ~17° of antipodal) the report's 1/sin θ₀ turns the Quake
+// Below this sin θ₀ with a·b < 0 (within ~17° of antipodal) the report's 1/sin θ₀ turns the Quake
 // normalisation's 1.75e-3 length error into directions wrong by up to 0.9 (and divides
 // by ~0 at θ₀ = π); the faithful variant hands such pairs to the robust one. Measured
 // worst error in the last 15° band: 0.9 at 0.05, 0.37 at 0.1, 0.08 at 0.2, 1.7e-3 at 0.3.
@@ -40,7 +40,7 @@ vec3_t vec3_slerp(vec3_t a, vec3_t b, float t) {
     dot = std::clamp(dot, -1.0f, 1.0f);
     const float theta_0 = std::acos(dot);
     const float sin_theta_0 = std::sin(theta_0);
-    if (sin_theta_0 < kFaithfulMinSin) return tiny3d::vec3_slerp_robust(a, b, t);
+    if (dot < 0.0f && sin_theta_0 < kFaithfulMinSin) return tiny3d::vec3_slerp_robust(a, b, t);
     const float theta = theta_0 * t;
     const float sin_theta = std::sin(theta);
     const float s0 = std::cos(theta) - dot * sin_theta / sin_theta_0;
