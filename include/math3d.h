@@ -67,7 +67,9 @@ mat4_t mat4_frustum_asymmetric(float left, float right, float bottom, float top,
 // transform). With w = 0 (a point at infinity) x, y, z are returned undivided;
 // tiny3d::transform_point tells which happened.
 vec3_t apply_transform(mat4_t m, vec3_t v);
-vec4_t vec4_from_vec3(vec3_t v, float w);
+vec4_t vec4_from_vec3(vec3_t v, float w);  // (v.x, v.y, v.z, w)
+// M·v for the column vector v, in float, each row summed left to right (m0·x + m4·y +
+// m8·z + m12·w): tiny3d::transform_points_homogeneous gives the same bits.
 vec4_t mat4_mul_vec4(mat4_t m, vec4_t v);
 
 // Spherical → cartesian (convention at the top of the file): r·(sinφ cosθ, sinφ sinθ, cosφ).
