@@ -70,8 +70,11 @@ T fast_atan2(T y, T x) {
         base = kPi / 6;
     }
     const T z2 = z * z;
-    T series = T(1) / 17;
-    for (int k = 15; k >= 1; k -= 2) series = T(1) / T(k) - z2 * series;  // folded by the compiler
+    // atan z = z·(1 − z²/3 + z⁴/5 − … + z¹⁶/17), Horner in z².
+    constexpr T c3 = T(1) / 3, c5 = T(1) / 5, c7 = T(1) / 7, c9 = T(1) / 9, c11 = T(1) / 11, c13 = T(1) / 13,
+                c15 = T(1) / 15, c17 = T(1) / 17;
+    const T series =
+        1 - z2 * (c3 - z2 * (c5 - z2 * (c7 - z2 * (c9 - z2 * (c11 - z2 * (c13 - z2 * (c15 - z2 * c17)))))));
     T angle = base + z * series;
     if (steep) angle = kPi / 2 - angle;
     if (x < 0) angle = kPi - angle;

@@ -65,36 +65,40 @@ struct square_cdf {
     // F(h − u) − F(−h − u) = (F(h − u) − ½) + (F(h + u) − ½).
     float band(float u, float half_width) const { return centred(half_width - u) + centred(half_width + u); }
 
-#ifdef __SSE2__
-    // centred() for four values at once.
-    __m128 centred4(__m128 s) const {
-        const __m128 sign_bit = _mm_set1_ps(-0.0f);
-        const __m128 t = _mm_andnot_ps(sign_bit, s);
-        const __m128 m = _mm_min_ps(_mm_max_ps(_mm_sub_ps(t, _mm_set1_ps(w_lo)), _mm_setzero_ps()), _mm_set1_ps(amin));
-        const __m128 lin = _mm_mul_ps(_mm_min_ps(t, _mm_set1_ps(w_lo)), _mm_set1_ps(inv_amax));
-        const __m128 quad = _mm_mul_ps(_mm_mul_ps(m, _mm_sub_ps(_mm_set1_ps(2.0f * amin), m)), _mm_set1_ps(inv_2ab));
-        return _mm_or_ps(_mm_add_ps(lin, quad), _mm_and_ps(sign_bit, s));  // H ≥ 0: copy s's sign
-    }
-#endif
-
     // Combines band coverage × intensity "over" into `count` pixels down a column, the
     // first at signed distance u, each next one du further, `stride` floats apart.
     void band_run(float *px, std::ptrdiff_t stride, int count, float u, float du, float half_width,
                   float intensity) const {
         int j = 0;
 #ifdef __SSE2__
+        // centred() for four values at once, constants hoisted.
+        const __m128 sign_bit = _mm_set1_ps(-0.0f), zero = _mm_setzero_ps(), lo4 = _mm_set1_ps(w_lo);
+        const __m128 amin4 = _mm_set1_ps(amin), two_amin = _mm_set1_ps(2.0f * amin);
+        const __m128 inv_amax4 = _mm_set1_ps(inv_amax), inv_2ab4 = _mm_set1_ps(inv_2ab);
+        auto centred4 = [&](__m128 s) {
+            const __m128 t = _mm_andnot_ps(sign_bit, s);
+            const __m128 m = _mm_min_ps(_mm_max_ps(_mm_sub_ps(t, lo4), zero), amin4);
+            const __m128 lin = _mm_mul_ps(_mm_min_ps(t, lo4), inv_amax4);
+            const __m128 quad = _mm_mul_ps(_mm_mul_ps(m, _mm_sub_ps(two_amin, m)), inv_2ab4);
+            return _mm_or_ps(_mm_add_ps(lin, quad), _mm_and_ps(sign_bit, s));  // H ≥ 0: s's sign
+        };
         const __m128 hw = _mm_set1_ps(half_width), ink = _mm_set1_ps(intensity), one = _mm_set1_ps(1.0f);
         __m128 uv = _mm_add_ps(_mm_set1_ps(u), _mm_mul_ps(_mm_set1_ps(du), _mm_set_ps(3.0f, 2.0f, 1.0f, 0.0f)));
         const __m128 du4 = _mm_set1_ps(4.0f * du);
         for (; j < count; j += 4, uv = _mm_add_ps(uv, du4)) {
-            const int lanes = std::min(4, count - j);
-            alignas(16) float v[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-            for (int k = 0; k < lanes; ++k) v[k] = px[(j + k) * stride];
             const __m128 cov = _mm_add_ps(centred4(_mm_sub_ps(hw, uv)), centred4(_mm_add_ps(hw, uv)));
+            float *p = px + j * stride;
+            alignas(16) float v[4];
+            const int lanes = std::min(4, count - j);
+            if (lanes == 4 && stride == 1) {
+                _mm_store_ps(v, _mm_loadu_ps(p));
+            } else {
+                for (int k = 0; k < 4; ++k) v[k] = k < lanes ? p[k * stride] : 0.0f;
+            }
             const __m128 old = _mm_load_ps(v);
             // "over": v + c·(1 − v), c = intensity · coverage
             _mm_store_ps(v, _mm_add_ps(old, _mm_mul_ps(_mm_mul_ps(ink, cov), _mm_sub_ps(one, old))));
-            for (int k = 0; k < lanes; ++k) px[(j + k) * stride] = v[k];
+            for (int k = 0; k < lanes; ++k) p[k * stride] = v[k];
         }
 #else
         for (; j < count; ++j, u += du) detail::combine_over(px[j * stride], intensity * band(u, half_width));
