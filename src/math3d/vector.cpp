@@ -1,17 +1,18 @@
 // vector.cpp — lengths, the three normalisations, the spherical form.
 //
 // Normalisation variants, measured by tests/bench/normalize (AMD EPYC, g++ 12 -O2, one
-// out-of-line call per vector over 4096 vectors of scale 2^±20, median of 31 runs on a
-// shared machine; error = max over components of |computed − exact unit vector|, i.e.
-// relative to the length, over 10⁶ vectors):
-//   Quake 0x5f3759df + 1 Newton step (the report's)   ~4.0 ns  1.75e-3
-//   1/std::sqrt in float (vec3_normalize_fast_accurate) ~2.9 ns  1.66e-7  ← chosen
-//   double sqrt and divide (vec3_normalize, exact)     ~3.8 ns  2.98e-8
-//   rsqrtss + 1 Newton step (bench-only candidate)     ~2.5 ns  2.04e-7  over the 2e-7 bound
-//   rsqrtss + 2nd-order correction (candidate)         ~3.0 ns  1.67e-7  no gain over sqrtss
-// sqrtss + divss are as cheap as the integer trick on current x86 cores (the Quake bit
-// moves between integer and float registers cost more), so the fast accurate variant is
-// the plain one, and it is also faster than the report's.
+// out-of-line call per vector over 4096 vectors of scale 2^±20, medians of 31 runs, three
+// runs on a shared machine; error = max over components of |computed − exact unit
+// vector|, i.e. relative to the length, over 10⁶ vectors):
+//   Quake 0x5f3759df + 1 Newton step (the report's)     3.1–3.4 ns  1.75e-3
+//   1/std::sqrt in float (vec3_normalize_fast_accurate)  0.91–0.96× Quake  1.66e-7  ← chosen
+//   double sqrt and divide (vec3_normalize, exact)       1.2× Quake  2.98e-8
+//   rsqrtss + 1 Newton step (bench-only candidate)       0.8× Quake  2.04e-7  over the 2e-7 bound
+//   rsqrtss + 2nd-order correction (candidate)           0.91–0.97× Quake  1.67e-7
+// sqrtss + divss cost no more than the integer trick on current x86 cores (its moves
+// between integer and float registers are not free). 1/sqrtf ties with the best rsqrtss
+// candidate and keeps its bound on every IEEE machine (sqrt and division are correctly
+// rounded, while rsqrtss's precision differs between CPU vendors), so it is the choice.
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -36,8 +37,9 @@ float unit_or_zero_sign(float c) { return std::isinf(c) ? std::copysign(1.0f, c)
 // The cases the fast paths leave out: NaN → zero; infinite components → the direction of
 // the infinities; zero → zero; tiny or huge → rescaled so the largest component lies in
 // [1, 2) (exact: a power of two changes no mantissa), then `core`.
+// Out of line and cold, so the common path stays a few instructions with no stack frame.
 template <class Core>
-vec3_t normalize_unusual(vec3_t v, Core core) {
+[[gnu::noinline, gnu::cold]] vec3_t normalize_unusual(vec3_t v, Core core) {
     if (std::isnan(v.x) || std::isnan(v.y) || std::isnan(v.z)) return {0.0f, 0.0f, 0.0f};
     if (std::isinf(v.x) || std::isinf(v.y) || std::isinf(v.z))
         v = {unit_or_zero_sign(v.x), unit_or_zero_sign(v.y), unit_or_zero_sign(v.z)};
@@ -57,28 +59,29 @@ vec3_t normalize_float(vec3_t v, Core core) {
     return normalize_unusual(v, core);
 }
 
+// The cores are lambdas (one type each) so normalize_float inlines them.
 // The report's code, arithmetic order kept: y·(1.5 − (x/2)·y·y) after the magic guess.
-vec3_t quake_core(vec3_t v) {
+constexpr auto quake_core = [](vec3_t v) -> vec3_t {
     const float sq = squared_length(v);
     const float half = sq * 0.5f;
     const std::uint32_t bits = kQuakeMagic - (std::bit_cast<std::uint32_t>(sq) >> 1);
     float y = std::bit_cast<float>(bits);
     y = y * (1.5f - (half * y * y));
     return {v.x * y, v.y * y, v.z * y};
-}
+};
 
-vec3_t reciprocal_sqrt_core(vec3_t v) {
+constexpr auto reciprocal_sqrt_core = [](vec3_t v) -> vec3_t {
     const float inv = 1.0f / std::sqrt(squared_length(v));
     return {v.x * inv, v.y * inv, v.z * inv};
-}
+};
 
 // In double: the squares of any finite floats neither overflow nor underflow, so only
 // the sum needs checking; one rounding per component at the end.
-vec3_t exact_core(vec3_t v) {
+constexpr auto exact_core = [](vec3_t v) -> vec3_t {
     const double x = v.x, y = v.y, z = v.z;
     const double inv = 1.0 / std::sqrt(x * x + y * y + z * z);
     return {float(x * inv), float(y * inv), float(z * inv)};
-}
+};
 
 }  // namespace
 
