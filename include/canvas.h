@@ -111,13 +111,20 @@ struct line_style {
 };
 
 // The fast anti-aliased thick line: each pixel receives the exact area of its square
-// covered by the stroke of (x0, y0)–(x1, y1) of width `thickness` (px) (float arithmetic:
-// |error| ≲ 1e-5 per pixel on canvases up to a few thousand px), combined "over".
-// Only pixels near the line are visited. Pixels whose square lies between the ends use a
-// closed form (the area of a unit square inside a band depends only on the angle and the
-// centre's signed distance); the few pixels at the ends are clipped exactly (polygon +
-// exact disc segments). Drawing (x1, y1)→(x0, y0) gives the bit-identical image.
-// thickness ≤ 0 or NaN draws nothing; a zero-length segment with round caps is a disc.
+// covered by the stroke of (x0, y0)–(x1, y1) of width `thickness` (px), times
+// style.intensity, combined "over". Only pixels near the line are visited: per column of
+// the major axis, the pixels whose square can meet the band |u| ≤ thickness/2 (u = signed
+// distance across the line). A square lying between the two ends gets the closed form
+// (the area of a unit square inside a band depends only on the angle and the centre's u:
+// a piecewise quadratic, evaluated 4 pixels at a time with SSE2, float); the few squares
+// that reach past an end are clipped exactly in double (polygon clipping + exact
+// circle-segment areas for round caps). Measured against line_coverage_reference over
+// thousands of random segments: max |error| < 1e-6, total ink = length·T (+ πT²/4 for
+// round caps) to 1e-6 relative (tests/lines_test.cpp).
+// Drawing (x1, y1)→(x0, y0) gives the bit-identical image (the ends are put in a
+// canonical order first). thickness ≤ 0, NaN or ±inf anywhere draws nothing; a
+// zero-length segment with round caps is a disc (butt: nothing). Cost grows with the
+// length plus a fixed part per end (see tests/bench/lines.cpp for the figures).
 void draw_line_coverage(canvas_t *canvas, float x0, float y0, float x1, float y1, float thickness,
                         const line_style &style = {});
 
@@ -190,5 +197,7 @@ namespace tiny3d {
 status write_file_atomic(const std::string &path, const void *data, std::size_t size);
 
 }  // namespace tiny3d
+
+#include "compat/canvas_alias.h"  // other libtiny3d programs' names (canvas_create, …)
 
 #endif
