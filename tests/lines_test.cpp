@@ -425,3 +425,20 @@ TEST(gradient_line_interpolates) {
     tiny3d::draw_line_gradient(p.get(), 1, 1, 1, 1, 0.3f, 0.9f);  // one pixel: intensity0
     CHECK_NEAR(p->pixels[1][1], 0.3, 1e-6);
 }
+
+TEST(coverage_on_tiny_canvases) {
+    // Columns shorter than one SSE2 group of four, and runs that fill the whole column.
+    for (int size = 1; size <= 9; ++size) {
+        canvas_ptr c = blank(size, size);
+        tiny3d::draw_line_coverage(c.get(), -3.0f, 0.3f, float(size) + 3.0f, float(size) - 0.2f, 6.0f);
+        tiny3d::draw_line_coverage(c.get(), 0.4f, -2.0f, float(size) - 0.3f, float(size) + 2.0f, 6.0f);
+        std::vector<double> ref;
+        tiny3d::line_coverage_reference(ref, size, size, -3.0, 0.3, size + 3.0, size - 0.2, 6.0);
+        canvas_ptr one = blank(size, size);
+        tiny3d::draw_line_coverage(one.get(), -3.0f, 0.3f, float(size) + 3.0f, float(size) - 0.2f, 6.0f);
+        error_stats e;
+        compare(*one, ref, e);
+        CHECK_NEAR(e.max, 0.0, 1e-5);
+        for (int i = 0; i < size * size; ++i) CHECK(c->data[i] >= 0.0f && c->data[i] <= 1.0f);
+    }
+}

@@ -64,46 +64,74 @@ struct square_cdf {
     // Area of the square inside the band |s'| ≤ half_width when its centre is at u:
     // F(h − u) − F(−h − u) = (F(h − u) − ½) + (F(h + u) − ½).
     float band(float u, float half_width) const { return centred(half_width - u) + centred(half_width + u); }
+};
 
-    // Combines band coverage × intensity "over" into `count` pixels down a column, the
-    // first at signed distance u, each next one du further, `stride` floats apart.
-    void band_run(float *px, std::ptrdiff_t stride, int count, float u, float du, float half_width,
-                  float intensity) const {
-        int j = 0;
+// Combines band coverage × intensity "over" into runs of pixels down a column: the
+// per-line constants of square_cdf, held ready (as SSE2 vectors when available).
+class band_writer {
+public:
+    band_writer(const square_cdf &cdf, float half_width, float intensity, float du, std::ptrdiff_t stride,
+                int column_size)
+        : cdf_(cdf), half_(half_width), ink_(intensity), du_(du), stride_(stride), column_size_(column_size) {}
+
+    // `count` pixels from `first` (a row index within the column starting at `column`),
+    // the first at signed distance u, each next one du further.
+    void run(float *column, int first, int count, float u) const {
 #ifdef __SSE2__
-        // centred() for four values at once, constants hoisted.
-        const __m128 sign_bit = _mm_set1_ps(-0.0f), zero = _mm_setzero_ps(), lo4 = _mm_set1_ps(w_lo);
-        const __m128 amin4 = _mm_set1_ps(amin), two_amin = _mm_set1_ps(2.0f * amin);
-        const __m128 inv_amax4 = _mm_set1_ps(inv_amax), inv_2ab4 = _mm_set1_ps(inv_2ab);
-        auto centred4 = [&](__m128 s) {
-            const __m128 t = _mm_andnot_ps(sign_bit, s);
-            const __m128 m = _mm_min_ps(_mm_max_ps(_mm_sub_ps(t, lo4), zero), amin4);
-            const __m128 lin = _mm_mul_ps(_mm_min_ps(t, lo4), inv_amax4);
-            const __m128 quad = _mm_mul_ps(_mm_mul_ps(m, _mm_sub_ps(two_amin, m)), inv_2ab4);
-            return _mm_or_ps(_mm_add_ps(lin, quad), _mm_and_ps(sign_bit, s));  // H ≥ 0: s's sign
-        };
-        const __m128 hw = _mm_set1_ps(half_width), ink = _mm_set1_ps(intensity), one = _mm_set1_ps(1.0f);
-        __m128 uv = _mm_add_ps(_mm_set1_ps(u), _mm_mul_ps(_mm_set1_ps(du), _mm_set_ps(3.0f, 2.0f, 1.0f, 0.0f)));
-        const __m128 du4 = _mm_set1_ps(4.0f * du);
-        for (; j < count; j += 4, uv = _mm_add_ps(uv, du4)) {
-            const __m128 cov = _mm_add_ps(centred4(_mm_sub_ps(hw, uv)), centred4(_mm_add_ps(hw, uv)));
-            float *p = px + j * stride;
-            alignas(16) float v[4];
-            const int lanes = std::min(4, count - j);
-            if (lanes == 4 && stride == 1) {
-                _mm_store_ps(v, _mm_loadu_ps(p));
-            } else {
-                for (int k = 0; k < 4; ++k) v[k] = k < lanes ? p[k * stride] : 0.0f;
+        // Whole groups of four: pad the run at its end (or, at the column's end, at its
+        // start). Padded pixels lie outside the band, where the coverage is exactly 0 and
+        // v + 0·(1 − v) leaves them bit-for-bit unchanged.
+        const int padded = (count + 3) & ~3;
+        if (padded <= column_size_) {
+            const int shift = std::max(0, first + padded - column_size_);
+            first -= shift;
+            u -= float(shift) * du_;
+            float *p = column + first * stride_;
+            __m128 uv = _mm_add_ps(_mm_set1_ps(u), steps_);
+            for (int j = 0; j < padded; j += 4, p += 4 * stride_, uv = _mm_add_ps(uv, du4_)) {
+                const __m128 cov = _mm_add_ps(centred4(_mm_sub_ps(hw_, uv)), centred4(_mm_add_ps(hw_, uv)));
+                const __m128 old = stride_ == 1 ? _mm_loadu_ps(p) : _mm_set_ps(p[3 * stride_], p[2 * stride_], p[stride_], p[0]);
+                // "over": v + c·(1 − v), c = intensity · coverage
+                alignas(16) float v[4];
+                _mm_store_ps(v, _mm_add_ps(old, _mm_mul_ps(_mm_mul_ps(ink4_, cov), _mm_sub_ps(one_, old))));
+                if (stride_ == 1) {
+                    _mm_storeu_ps(p, _mm_load_ps(v));
+                } else {
+                    p[0] = v[0];
+                    p[stride_] = v[1];
+                    p[2 * stride_] = v[2];
+                    p[3 * stride_] = v[3];
+                }
             }
-            const __m128 old = _mm_load_ps(v);
-            // "over": v + c·(1 − v), c = intensity · coverage
-            _mm_store_ps(v, _mm_add_ps(old, _mm_mul_ps(_mm_mul_ps(ink, cov), _mm_sub_ps(one, old))));
-            for (int k = 0; k < lanes; ++k) p[k * stride] = v[k];
+            return;
         }
-#else
-        for (; j < count; ++j, u += du) detail::combine_over(px[j * stride], intensity * band(u, half_width));
 #endif
+        float *p = column + first * stride_;
+        for (int j = 0; j < count; ++j, u += du_, p += stride_) detail::combine_over(*p, ink_ * cdf_.band(u, half_));
     }
+
+private:
+#ifdef __SSE2__
+    // square_cdf::centred for four values at once.
+    __m128 centred4(__m128 s) const {
+        const __m128 t = _mm_andnot_ps(sign_bit_, s);
+        const __m128 m = _mm_min_ps(_mm_max_ps(_mm_sub_ps(t, w_lo_), _mm_setzero_ps()), amin_);
+        const __m128 lin = _mm_mul_ps(_mm_min_ps(t, w_lo_), inv_amax_);
+        const __m128 quad = _mm_mul_ps(_mm_mul_ps(m, _mm_sub_ps(two_amin_, m)), inv_2ab_);
+        return _mm_or_ps(_mm_add_ps(lin, quad), _mm_and_ps(sign_bit_, s));  // H ≥ 0: s's sign
+    }
+#endif
+    const square_cdf &cdf_;
+    float half_, ink_, du_;
+    std::ptrdiff_t stride_;
+    int column_size_;
+#ifdef __SSE2__
+    const __m128 sign_bit_ = _mm_set1_ps(-0.0f), w_lo_ = _mm_set1_ps(cdf_.w_lo), amin_ = _mm_set1_ps(cdf_.amin);
+    const __m128 two_amin_ = _mm_set1_ps(2.0f * cdf_.amin), inv_amax_ = _mm_set1_ps(cdf_.inv_amax);
+    const __m128 inv_2ab_ = _mm_set1_ps(cdf_.inv_2ab), hw_ = _mm_set1_ps(half_), ink4_ = _mm_set1_ps(ink_);
+    const __m128 one_ = _mm_set1_ps(1.0f), du4_ = _mm_set1_ps(4.0f * du_);
+    const __m128 steps_ = _mm_mul_ps(_mm_set1_ps(du_), _mm_set_ps(3.0f, 2.0f, 1.0f, 0.0f));
+#endif
 };
 
 // The stroke in a local frame: origin A, unit direction (dx, dy), normal (−dy, dx),
@@ -270,6 +298,7 @@ void draw_line_coverage(canvas_t *canvas, float x0, float y0, float x1, float y1
     const double body_lo = std::ceil(cax + double(slab_lo) * axes.dx + body_reach - 0.5);
     const double body_hi = std::floor(cax + double(slab_hi) * axes.dx - body_reach - 0.5);
     float *const data = canvas->data;
+    const band_writer writer(cdf, hf, intensity, du, minor_stride, minor_size);
     for (int i = col_first; i <= col_last; ++i) {
         const double y_left = cay + (i - cax) * slope;
         double lo = y_left + span_lo, hi = y_left + span_hi;
@@ -277,8 +306,7 @@ void draw_line_coverage(canvas_t *canvas, float x0, float y0, float x1, float y1
             const auto [row_first, row_last] = touched_cells(lo, hi, minor_size);
             if (row_first > row_last) continue;
             const double rx = i + 0.5 - cax, ry = row_first + 0.5 - cay;
-            cdf.band_run(data + i * major_stride + row_first * minor_stride, minor_stride, row_last - row_first + 1,
-                         float(rx * nx + ry * ny), du, hf, intensity);
+            writer.run(data + i * major_stride, row_first, row_last - row_first + 1, float(rx * nx + ry * ny));
             continue;
         }
         // A column near an end: the cap discs' spans too, and exact clipping where needed.
