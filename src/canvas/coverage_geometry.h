@@ -27,7 +27,7 @@ template <class T>
 small_polygon<T> clip_half_plane(const small_polygon<T> &in, T a, T b, T c) {
     small_polygon<T> out;
     for (int i = 0; i < in.n; ++i) {
-        const point2<T> p = in.v[i], q = in.v[(i + 1) % in.n];
+        const point2<T> p = in.v[i], q = in.v[i + 1 == in.n ? 0 : i + 1];
         const T fp = a * p.x + b * p.y - c, fq = a * q.x + b * q.y - c;
         if (fp <= 0) out.v[out.n++] = p;
         if ((fp < 0 && fq > 0) || (fp > 0 && fq < 0)) {
@@ -118,7 +118,7 @@ T polygon_disc_area(const small_polygon<T> &poly, T cx, T cy, T r) {
     const T r2 = r * r;
     T sum = 0;
     for (int i = 0; i < poly.n; ++i) {
-        const point2<T> p = poly.v[i], q = poly.v[(i + 1) % poly.n];
+        const point2<T> p = poly.v[i], q = poly.v[i + 1 == poly.n ? 0 : i + 1];
         sum += edge_disc_area<T, kLibm>({p.x - cx, p.y - cy}, {q.x - cx, q.y - cy}, r2);
     }
     return std::fabs(sum);
