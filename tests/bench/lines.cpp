@@ -111,6 +111,13 @@ errors measure_error(const draw_fn &draw, const std::vector<segment> &segs, floa
     return {n ? sum / double(n) : 0.0, worst};
 }
 
+std::string note_for(const method &m) {
+    if (m.kind == "reference")
+        return "timed on " + std::to_string(kSlowSegments) + " segments; includes filling a canvas-sized double image per segment";
+    if (m.slow) return "timed on " + std::to_string(kSlowSegments) + " segments";
+    return "";
+}
+
 std::string thickness_label(float t) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "T=%g", double(t));
@@ -150,7 +157,7 @@ int main(int argc, char **argv) {
             });
             const errors e = m.kind == "reference" ? errors{0.0, 0.0} : measure_error(m.draw, error_segs, t, canvas, refs);
             rows.push_back({"lines", m.name + " " + label, m.kind, "ns/px " + label, time, e.mean, e.max,
-                            "abs intensity", m.slow ? "timed on " + std::to_string(kSlowSegments) + " segments" : ""});
+                            "abs intensity", note_for(m)});
         }
     }
     return bench::report(o, "lines", rows, "Lines: ns per px of length vs mean abs error");
