@@ -160,4 +160,6 @@ mat4_t motion_model_at(const motion &m, double seconds);
 
 }  // namespace tiny3d
 
+#include "compat/animation_alias.h"  // other libtiny3d programs' name bezier(…)
+
 #endif

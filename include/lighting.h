@@ -162,4 +162,6 @@ float shade_edge_faithful(const light_rig &rig, vec3_t a, vec3_t b);
 
 }  // namespace tiny3d
 
+#include "compat/lighting_alias.h"  // pins light_t's form other libtiny3d programs use
+
 #endif

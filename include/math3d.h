@@ -235,4 +235,6 @@ quat quat_slerp(quat a, quat b, float t);
 
 }  // namespace tiny3d
 
+#include "compat/math_alias.h"  // other libtiny3d programs' names (mat4_mul, vec3, …)
+
 #endif

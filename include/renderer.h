@@ -16,4 +16,6 @@
 // ---- filled triangles ----
 #include "raster.h"
 
+#include "compat/renderer_alias.h"  // pins the forms other libtiny3d programs call
+
 #endif

@@ -1,0 +1,38 @@
+// compat/canvas_alias.h — other libtiny3d implementations' names for the canvas API.
+//
+// Included at the end of canvas.h (and self-contained: including it alone includes
+// canvas.h). Each name is a thin inline alias of the one implementation in canvas.h; none
+// has an algorithm of its own. Only alternates used by four or more of the surveyed
+// implementations are here (../shared/PEER_API.md); rarer ones are in tiny3d_compat.h.
+// documentation/compat.md has the full table.
+#ifndef TINY3D_COMPAT_CANVAS_ALIAS_H
+#define TINY3D_COMPAT_CANVAS_ALIAS_H
+
+#include "../canvas.h"
+
+// create_canvas under its other name: a width × height canvas of zeros, or a null pointer
+// when a side is ≤ 0, the size exceeds CANVAS_MAX_SIDE / CANVAS_MAX_PIXELS, or memory
+// runs out.
+inline canvas_t *canvas_create(int width, int height) { return create_canvas(width, height); }
+
+// destroy_canvas under its other names; a null pointer is ignored.
+inline void canvas_destroy(canvas_t *canvas) { destroy_canvas(canvas); }
+inline void free_canvas(canvas_t *canvas) { destroy_canvas(canvas); }
+inline void canvas_free(canvas_t *canvas) { destroy_canvas(canvas); }
+
+// save_canvas with the C return convention its users test for: returns 0 on success and
+// −1 on failure (save_canvas itself returns true on success). The file is binary PGM (P5),
+// written atomically, so a failed save leaves nothing behind; tiny3d::save_pgm gives the
+// reason. A null canvas or path fails.
+inline int canvas_save_pgm(const canvas_t *canvas, const char *path) {
+    return save_canvas(canvas, path) ? 0 : -1;
+}
+
+// canvas_clear(c) — every pixel := 0 (black). The two-argument canvas_clear(c, value) is
+// canvas.h's own. A null canvas is ignored.
+inline void canvas_clear(canvas_t *canvas) { canvas_clear(canvas, 0.0f); }
+// clear_canvas(c, value) — canvas_clear(c, value): every pixel := value clamped to 0..1
+// (NaN → 0).
+inline void clear_canvas(canvas_t *canvas, float value) { canvas_clear(canvas, value); }
+
+#endif

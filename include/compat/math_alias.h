@@ -1,0 +1,32 @@
+// compat/math_alias.h — other libtiny3d implementations' names for the math API.
+//
+// Included at the end of math3d.h (and self-contained). Thin inline aliases of the one
+// implementation in math3d.h; the alternates used by four or more of the surveyed
+// implementations (../shared/PEER_API.md). Rarer forms (out-parameter builders, pointer
+// forms) are opt-in in tiny3d_compat.h. documentation/compat.md has the full table.
+//
+// Already in math3d.h itself: the pointer form vec3_normalize_fast(vec3_t *) and M_PI.
+#ifndef TINY3D_COMPAT_MATH_ALIAS_H
+#define TINY3D_COMPAT_MATH_ALIAS_H
+
+#include "../math3d.h"
+
+// Short type names some programs use.
+typedef vec3_t vec3;
+typedef mat4_t mat4;
+
+// mat4_multiply(a, b) = a·b (b applied first), column-major.
+inline mat4_t mat4_mul(mat4_t a, mat4_t b) { return mat4_multiply(a, b); }
+
+// apply_transform: M·(x, y, z, 1) divided by w. Dividing by w = 1 changes nothing, so
+// this is "always divide by w" as these names' users expect — except that w = 0 (a point
+// at infinity, only from a projective M) returns x, y, z undivided instead of inf/NaN.
+inline vec3_t mat4_mul_vec3(mat4_t m, vec3_t v) { return apply_transform(m, v); }
+inline vec3_t mat4_transform_vec3(mat4_t m, vec3_t v) { return apply_transform(m, v); }
+
+// A vector from cartesian coordinates. Implementations that store r, θ, φ in vec3_t fill
+// them here; ours computes the spherical form on demand (vec3_to_spherical), so this is
+// just {x, y, z}.
+inline vec3_t vec3_from_cartesian(float x, float y, float z) { return vec3_t{x, y, z}; }
+
+#endif

@@ -1,0 +1,120 @@
+// tiny3d_compat.h — OPT-IN: the rarer names and forms other libtiny3d programs call.
+//
+// Include this instead of (or after) tiny3d.h in a program written against another
+// libtiny3d implementation. It is not included by any library header, because these names
+// are also the names user programs give their OWN helpers (a program that defines
+// `static vec3_t vec3_normalize(vec3_t)` must still compile against the normal headers).
+// The common alternates (canvas_create, mat4_mul, bezier, …) need no opt-in: they are in
+// the normal headers (include/compat/*_alias.h).
+//
+// Every function here is a thin inline alias of the one implementation in the normal
+// headers: same conventions (column-major mat4_t, radians, the report's spherical
+// convention, PGM as canvas.h writes it). documentation/compat.md has the table.
+//
+// Overloads added here make the report's names overloaded (e.g. mat4_identity() and
+// mat4_identity(mat4_t *)): taking their address then needs a cast to the wanted type.
+// Null pointers never crash: a null output is ignored, a null input matrix counts as the
+// identity, a null input vector as {0, 0, 0}.
+#ifndef TINY3D_COMPAT_H
+#define TINY3D_COMPAT_H
+
+#include "tiny3d.h"
+
+namespace tiny3d::compat_detail {
+inline mat4_t matrix_or_identity(const mat4_t *m) { return m ? *m : mat4_identity(); }
+inline vec3_t vector_or_zero(const vec3_t *v) { return v ? *v : vec3_t{0.0f, 0.0f, 0.0f}; }
+inline void store(mat4_t *out, const mat4_t &value) {
+    if (out) *out = value;
+}
+}  // namespace tiny3d::compat_detail
+
+// ---- matrices: out-parameter builders (out first) --------------------------------------
+inline void mat4_identity(mat4_t *out) { tiny3d::compat_detail::store(out, mat4_identity()); }
+inline void mat4_translate(mat4_t *out, float tx, float ty, float tz) {
+    tiny3d::compat_detail::store(out, mat4_translate(tx, ty, tz));
+}
+inline void mat4_translate(mat4_t *out, vec3_t offset) { mat4_translate(out, offset.x, offset.y, offset.z); }
+inline void mat4_scale(mat4_t *out, float sx, float sy, float sz) {
+    tiny3d::compat_detail::store(out, mat4_scale(sx, sy, sz));
+}
+inline void mat4_scale(mat4_t *out, vec3_t factors) { mat4_scale(out, factors.x, factors.y, factors.z); }
+// Angles in radians; R = Rz·Ry·Rx as mat4_rotate_xyz.
+inline void mat4_rotate_xyz(mat4_t *out, float rx, float ry, float rz) {
+    tiny3d::compat_detail::store(out, mat4_rotate_xyz(rx, ry, rz));
+}
+inline void mat4_rotate_xyz(mat4_t *out, vec3_t angles) { mat4_rotate_xyz(out, angles.x, angles.y, angles.z); }
+inline void mat4_frustum_asymmetric(mat4_t *out, float left, float right, float bottom, float top,
+                                    float near_plane, float far_plane) {
+    tiny3d::compat_detail::store(out, mat4_frustum_asymmetric(left, right, bottom, top, near_plane, far_plane));
+}
+
+// mat4_frustum_asymmetric under its short name (glFrustum; bad arguments → identity).
+inline mat4_t mat4_frustum(float left, float right, float bottom, float top, float near_plane,
+                           float far_plane) {
+    return mat4_frustum_asymmetric(left, right, bottom, top, near_plane, far_plane);
+}
+
+// ---- matrices: pointer forms of the product (a·b, b applied first) ----------------------
+inline mat4_t mat4_multiply(const mat4_t *a, const mat4_t *b) {
+    return mat4_multiply(tiny3d::compat_detail::matrix_or_identity(a), tiny3d::compat_detail::matrix_or_identity(b));
+}
+// *out = a·b; out may be the same matrix as a or b.
+inline void mat4_multiply(mat4_t *out, const mat4_t *a, const mat4_t *b) {
+    tiny3d::compat_detail::store(out, mat4_multiply(a, b));
+}
+inline mat4_t mat4_mul(const mat4_t *a, const mat4_t *b) { return mat4_multiply(a, b); }
+inline void mat4_mul(mat4_t *out, const mat4_t *a, const mat4_t *b) { mat4_multiply(out, a, b); }
+// apply_transform with the matrix by pointer (divides by w).
+inline vec3_t mat4_mul_vec3(const mat4_t *m, vec3_t v) {
+    return apply_transform(tiny3d::compat_detail::matrix_or_identity(m), v);
+}
+
+// ---- vectors ------------------------------------------------------------------------------
+// {x, y, z} (vec3_from_cartesian's other name).
+inline vec3_t vec3_create(float x, float y, float z) { return vec3_from_cartesian(x, y, z); }
+
+// Pointer form of the report's slerp (same faithful variant: Quake-normalised inputs).
+inline vec3_t vec3_slerp(const vec3_t *a, const vec3_t *b, float t) {
+    return vec3_slerp(tiny3d::compat_detail::vector_or_zero(a), tiny3d::compat_detail::vector_or_zero(b), t);
+}
+
+// Implementations whose vec3_t stores r, θ, φ beside x, y, z keep the two in step with
+// these. Ours stores only x, y, z (the spherical form is computed when asked:
+// vec3_to_spherical), so there is nothing to update: both leave *v unchanged (a null
+// pointer is ignored). Code that read v.r / v.theta / v.phi must call vec3_to_spherical.
+inline void vec3_update_spherical(vec3_t *v) { (void)v; }
+inline void vec3_update_cartesian(vec3_t *v) { (void)v; }
+
+// The small vector helpers many programs also define themselves (hence opt-in here).
+inline vec3_t vec3_add(vec3_t a, vec3_t b) { return a + b; }
+inline vec3_t vec3_sub(vec3_t a, vec3_t b) { return a - b; }
+inline vec3_t vec3_scale(vec3_t v, float s) { return v * s; }
+inline float vec3_dot(vec3_t a, vec3_t b) { return tiny3d::vec3_dot(a, b); }
+inline vec3_t vec3_cross(vec3_t a, vec3_t b) { return tiny3d::vec3_cross(a, b); }  // right-handed
+inline float vec3_length(vec3_t v) { return tiny3d::vec3_length(v); }
+// Exact unit vector (tiny3d::vec3_normalize); zero or NaN input gives {0, 0, 0}.
+inline vec3_t vec3_normalize(vec3_t v) { return tiny3d::vec3_normalize(v); }
+
+// ---- canvas -------------------------------------------------------------------------------
+// save_canvas under four other names, with the C convention: 0 on success, −1 on failure
+// (binary PGM, atomic write; nothing is left behind on failure). Callers that ignore the
+// result (the void forms) compile unchanged.
+inline int save_canvas_as_pgm(const canvas_t *canvas, const char *path) { return canvas_save_pgm(canvas, path); }
+inline int canvas_save_to_pgm(const canvas_t *canvas, const char *path) { return canvas_save_pgm(canvas, path); }
+inline int save_canvas_pgm(const canvas_t *canvas, const char *path) { return canvas_save_pgm(canvas, path); }
+inline int save_canvas_to_pgm(const canvas_t *canvas, const char *path) { return canvas_save_pgm(canvas, path); }
+
+// draw_line_f with a 7th `intensity` argument. The report's six-argument line has no
+// intensity (its splats always add 1), so this form is tiny3d::draw_line_coverage with
+// round caps: each pixel gets intensity × the exact area of it the stroke covers, combined
+// "over" (v + c·(1 − v)). Its image therefore differs from the six-argument form's even at
+// intensity 1 (no over-inking); intensity is clamped to ≤ 1, ≤ 0 or NaN draws nothing.
+inline void draw_line_f(canvas_t *canvas, float x0, float y0, float x1, float y1, float thickness,
+                        float intensity) {
+    tiny3d::line_style style;
+    style.cap = tiny3d::line_cap::round;
+    style.intensity = intensity;
+    tiny3d::draw_line_coverage(canvas, x0, y0, x1, y1, thickness, style);
+}
+
+#endif

@@ -1,0 +1,605 @@
+// compat_test.cpp — libtiny3d as a drop-in for programs written against other libtiny3d
+// implementations (issue 10).
+//
+// The user-style programs tests/compat/*.c are compiled as C++ by `make tests` (g++
+// -std=c++20 -Wall -Wextra -Werror) into $BUILD/compat/ (BUILD from the environment,
+// default "build"); that they compile at all is half of the test (own_helpers.c defines its
+// own vec3_normalize & co. against the normal headers). This program runs each of them and
+// checks what they print against values computed here independently in double precision,
+// and the images they write against hand-computed pixel values or against the same drawing
+// done through the primary (report) API. It also calls every global name with int and
+// double literals, so an overload that made such calls ambiguous would not compile.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "harness.h"
+#include "tiny3d.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// ---- running a compat program ------------------------------------------------------------
+
+std::string build_dir() {
+    const char *b = std::getenv("BUILD");
+    return b && *b ? b : "build";
+}
+
+// A fresh empty folder for one program's files, removed when the test case ends.
+struct scratch_dir {
+    fs::path path;
+    scratch_dir() {
+        char tmpl[] = "/tmp/tiny3d_compat_XXXXXX";
+        const char *made = mkdtemp(tmpl);
+        path = made ? made : "";
+    }
+    ~scratch_dir() {
+        std::error_code ec;
+        if (!path.empty()) fs::remove_all(path, ec);
+    }
+    std::string file(const std::string &name) const { return (path / name).string(); }
+};
+
+struct program_run {
+    int exit_code = -1;
+    std::vector<std::string> lines;  // stdout, one entry per line
+};
+
+// Runs $BUILD/compat/<name> with the folder as its only argument.
+program_run run_program(const std::string &name, const scratch_dir &dir) {
+    program_run r;
+    const std::string exe = build_dir() + "/compat/" + name;
+    if (!fs::exists(exe)) {
+        std::fprintf(stderr, "missing %s: build it with `make BUILD=%s tests`\n", exe.c_str(), build_dir().c_str());
+        return r;
+    }
+    const std::string command = "'" + exe + "' '" + dir.path.string() + "'";
+    FILE *pipe = popen(command.c_str(), "r");
+    if (!pipe) return r;
+    std::string line;
+    for (int ch; (ch = std::fgetc(pipe)) != EOF;) {
+        if (ch == '\n') {
+            r.lines.push_back(line);
+            line.clear();
+        } else {
+            line.push_back(char(ch));
+        }
+    }
+    if (!line.empty()) r.lines.push_back(line);
+    const int status = pclose(pipe);
+    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+// The numbers of every line that starts with `key` (the key itself and "->" skipped).
+std::vector<std::vector<double>> numbers_after(const program_run &r, const std::string &key) {
+    std::vector<std::vector<double>> rows;
+    for (const std::string &line : r.lines) {
+        std::istringstream in(line);
+        std::string word;
+        if (!(in >> word) || word != key) continue;
+        std::vector<double> values;
+        while (in >> word) {
+            if (word == "->") continue;
+            char *end = nullptr;
+            const double v = std::strtod(word.c_str(), &end);
+            if (end != word.c_str() && *end == '\0') values.push_back(v);
+        }
+        rows.push_back(values);
+    }
+    return rows;
+}
+
+// ---- images ---------------------------------------------------------------------------------
+
+// 8-bit sample the PGM writer stores for an intensity: round(clamp(v, 0, 1)·255).
+int sample_of(float v) { return int(std::lround(std::fmin(std::fmax(double(v), 0.0), 1.0) * 255.0)); }
+
+// The samples of a PGM file (P2 or P5) via the library's reader; empty on failure.
+struct gray_image {
+    int width = 0, height = 0;
+    std::vector<int> samples;
+    int at(int x, int y) const { return samples[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
+};
+gray_image read_image(const std::string &path) {
+    gray_image img;
+    auto loaded = tiny3d::load_pgm(path);
+    if (!loaded) {
+        std::fprintf(stderr, "%s\n", loaded.message().c_str());
+        return img;
+    }
+    const canvas_t &c = **loaded;
+    img.width = c.width;
+    img.height = c.height;
+    for (int y = 0; y < c.height; ++y)
+        for (int x = 0; x < c.width; ++x) img.samples.push_back(sample_of(c.pixels[y][x]));
+    return img;
+}
+
+// Number of pixels where the file differs from the canvas quantised the same way.
+int differing_pixels(const gray_image &img, const canvas_t &expected) {
+    if (img.width != expected.width || img.height != expected.height) return -1;
+    int diff = 0;
+    for (int y = 0; y < img.height; ++y)
+        for (int x = 0; x < img.width; ++x) diff += img.at(x, y) != sample_of(expected.pixels[y][x]);
+    return diff;
+}
+
+std::string file_bytes(const std::string &path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// ---- double-precision references ---------------------------------------------------------------
+
+struct dvec3 {
+    double x, y, z;
+};
+dvec3 operator+(dvec3 a, dvec3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+dvec3 operator-(dvec3 a, dvec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+dvec3 operator*(double s, dvec3 a) { return {s * a.x, s * a.y, s * a.z}; }
+double dot(dvec3 a, dvec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+dvec3 unit(dvec3 v) {
+    const double n = std::sqrt(dot(v, v));
+    return n > 0 ? (1.0 / n) * v : dvec3{0, 0, 0};
+}
+dvec3 row3(const std::vector<double> &v, std::size_t first) { return {v[first], v[first + 1], v[first + 2]}; }
+
+// Rotations (right-handed, radians) in double.
+dvec3 rotate_x(dvec3 p, double a) { return {p.x, p.y * std::cos(a) - p.z * std::sin(a), p.y * std::sin(a) + p.z * std::cos(a)}; }
+dvec3 rotate_y(dvec3 p, double a) { return {p.x * std::cos(a) + p.z * std::sin(a), p.y, -p.x * std::sin(a) + p.z * std::cos(a)}; }
+dvec3 rotate_z(dvec3 p, double a) { return {p.x * std::cos(a) - p.y * std::sin(a), p.x * std::sin(a) + p.y * std::cos(a), p.z}; }
+
+// Cubic Bernstein form B(t) = (1−t)³p0 + 3(1−t)²t p1 + 3(1−t)t² p2 + t³p3.
+dvec3 bezier_ref(dvec3 p0, dvec3 p1, dvec3 p2, dvec3 p3, double t) {
+    const double u = 1 - t;
+    return (u * u * u) * p0 + (3 * u * u * t) * p1 + (3 * u * t * t) * p2 + (t * t * t) * p3;
+}
+
+// Slerp of the unit directions of a and b (the exact great-circle formula).
+dvec3 slerp_ref(dvec3 a, dvec3 b, double t) {
+    const dvec3 ua = unit(a), ub = unit(b);
+    const double theta = std::acos(std::fmax(-1.0, std::fmin(1.0, dot(ua, ub))));
+    if (theta < 1e-12) return ua;
+    return (std::sin((1 - t) * theta) / std::sin(theta)) * ua + (std::sin(t * theta) / std::sin(theta)) * ub;
+}
+
+constexpr double kFloatTolerance = 2e-6;  // a few float roundings of O(1) values
+// The report's vec3_normalize_fast / vec3_slerp (Quake inverse sqrt) are documented to
+// 1.8e-3 relative error (math3d.h); they are what these programs call.
+constexpr double kQuakeTolerance = 3e-3;
+
+}  // namespace
+
+// ---- clock face: canvas_create / canvas_clear(c) / canvas_save_pgm / canvas_destroy -------------
+
+TEST(clock_face_image_equals_primary_api_and_hand_computed_pixels) {
+    scratch_dir dir;
+    const program_run r = run_program("clock_face", dir);
+    CHECK_EQ(r.exit_code, 0);
+    const auto failed = numbers_after(r, "failed_save");
+    CHECK_MSG(failed.size() == 1 && failed[0].size() == 1 && failed[0][0] == -1.0,
+              "canvas_save_pgm must return -1 for a path in a missing folder");
+    CHECK(!fs::exists(dir.path / "no_such_folder"));
+
+    const gray_image img = read_image(dir.file("clock_face.pgm"));
+    CHECK_EQ(img.width, 400);
+    CHECK_EQ(img.height, 400);
+    if (img.width != 400 || img.height != 400) return;
+
+    // The same drawing through the report's names.
+    canvas_t *expected = create_canvas(400, 400);
+    CHECK(expected != nullptr);
+    if (!expected) return;
+    const float cx = 200.0f, cy = 200.0f;
+    for (int angle = 0; angle < 360; angle += 15) {
+        const float rad = float(angle * M_PI / 180.0f);
+        draw_line_f(expected, cx, cy, cx + 180.0f * std::cos(rad), cy + 180.0f * std::sin(rad), 1.5f);
+    }
+    CHECK_EQ(differing_pixels(img, *expected), 0);
+    destroy_canvas(expected);
+
+    // Hand-computed: the 0° spoke runs along y = 200 (the boundary between rows 199 and 200).
+    // Thickness 1.5 puts its disc samples at y = 199.75 and 200.25 (kx, ky = ±0.25; ±0.75
+    // fails kx² + ky² ≤ 0.5625), splatting rows 199 and 200 only, each with about 4 units of
+    // ink per pixel (2 samples per px × 2 x offsets × total y weight 1), so they saturate;
+    // rows 198 and 201 get nothing. Columns 240..370 are > 10 px from the 15° and 345° spokes.
+    for (int x = 240; x <= 370; ++x) {
+        CHECK_EQ(img.at(x, 199), 255);
+        CHECK_EQ(img.at(x, 200), 255);
+        CHECK_EQ(img.at(x, 198), 0);
+        CHECK_EQ(img.at(x, 201), 0);
+    }
+    // Its end at x = 380 exactly: the last splats at x = 380 ± 0.25 reach columns 379 and 380.
+    CHECK(img.at(380, 199) > 0);
+    CHECK_EQ(img.at(381, 199), 0);
+    CHECK_EQ(img.at(200, 200), 255);  // every spoke starts at the centre
+    // Nothing beyond radius 180 + 0.75 (disc) + 1 (splat) + 1 (pixel-centre slack).
+    int ink_outside = 0;
+    for (int y = 0; y < 400; ++y)
+        for (int x = 0; x < 400; ++x)
+            if (std::hypot(x + 0.5 - 200.0, y + 0.5 - 200.0) > 182.75 + 1.0) ink_outside += img.at(x, y) != 0;
+    CHECK_EQ(ink_outside, 0);
+}
+
+// ---- rotating cube: mat4_mul / mat4_mul_vec3 / mat4_transform_vec3 ----------------------------
+
+namespace {
+constexpr int kCubeFrames = 8;
+constexpr int kCubeSize = 128;
+const std::array<dvec3, 8> kCube = {{{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
+                                     {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}}};
+const int kCubeEdges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
+                               {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+}  // namespace
+
+TEST(rotating_cube_vertices_match_double_projection) {
+    scratch_dir dir;
+    const program_run r = run_program("rotating_cube", dir);
+    CHECK_EQ(r.exit_code, 0);
+    const auto agree = numbers_after(r, "transform_forms_agree");
+    CHECK_MSG(agree.size() == 1 && agree[0] == std::vector<double>{1.0},
+              "mat4_mul_vec3 and mat4_transform_vec3 must give the same bits");
+    const auto rows = numbers_after(r, "vertex");
+    CHECK_EQ(rows.size(), std::size_t(kCubeFrames * 8));
+    // glFrustum(−1, 1, −1, 1, 1, 10): x_ndc = x/−z, y_ndc = y/−z,
+    // z_ndc = (−(f+n)/(f−n)·z − 2fn/(f−n)) / −z with n = 1, f = 10.
+    const double n = 1, f = 10;
+    for (const auto &row : rows) {
+        if (row.size() != 5) {
+            CHECK(false);
+            continue;
+        }
+        const int frame = int(row[0]), i = int(row[1]);
+        const double angle = double(float(frame * 2 * M_PI / kCubeFrames));  // the program's float angle
+        dvec3 p = rotate_y(kCube[std::size_t(i)], angle);
+        p.z -= 5;
+        const double xn = p.x / -p.z, yn = p.y / -p.z;
+        const double zn = (-(f + n) / (f - n) * p.z - 2 * f * n / (f - n)) / -p.z;
+        CHECK_NEAR(row[2], (xn + 1) * 0.5 * kCubeSize, 1e-3);
+        CHECK_NEAR(row[3], (1 - (yn + 1) * 0.5) * kCubeSize, 1e-3);
+        CHECK_NEAR(row[4], zn, 1e-5);
+    }
+}
+
+TEST(rotating_cube_image_equals_primary_api) {
+    scratch_dir dir;
+    const program_run r = run_program("rotating_cube", dir);
+    CHECK_EQ(r.exit_code, 0);
+    const gray_image img = read_image(dir.file("rotating_cube.pgm"));
+    canvas_t *expected = create_canvas(kCubeSize, kCubeSize);
+    CHECK(expected != nullptr);
+    if (!expected) return;
+    const float angle = float(1 * 2 * M_PI / kCubeFrames);  // frame 1
+    const mat4_t model = mat4_multiply(mat4_translate(0, 0, -5.0f),
+                                       mat4_multiply(mat4_rotate_xyz(0, angle, 0), mat4_scale(1, 1, 1)));
+    const mat4_t mvp = mat4_multiply(mat4_frustum_asymmetric(-1, 1, -1, 1, 1, 10), mat4_multiply(mat4_identity(), model));
+    vec3_t screen[8];
+    for (int i = 0; i < 8; ++i) {
+        const dvec3 c = kCube[std::size_t(i)];
+        const vec3_t ndc = apply_transform(mvp, {float(c.x), float(c.y), float(c.z)});
+        screen[i] = {(ndc.x + 1) * 0.5f * kCubeSize, (1 - (ndc.y + 1) * 0.5f) * kCubeSize, ndc.z};
+    }
+    for (const auto &e : kCubeEdges)
+        draw_line_f(expected, screen[e[0]].x, screen[e[0]].y, screen[e[1]].x, screen[e[1]].y, 1.2f);
+    CHECK_EQ(differing_pixels(img, *expected), 0);
+    destroy_canvas(expected);
+}
+
+// ---- spherical / slerp printout ------------------------------------------------------------------
+
+TEST(spherical_and_slerp_printout_matches_double_formulas) {
+    scratch_dir dir;
+    const program_run r = run_program("spherical_slerp", dir);
+    CHECK_EQ(r.exit_code, 0);
+
+    // x = r sinφ cosθ, y = r sinφ sinθ, z = r cosφ (θ azimuth, φ polar: the report's).
+    const auto from = numbers_after(r, "from_spherical");
+    CHECK_EQ(from.size(), std::size_t(5));
+    for (const auto &v : from) {
+        if (v.size() != 6) {
+            CHECK(false);
+            continue;
+        }
+        const double rr = v[0], th = v[1], ph = v[2], tol = kFloatTolerance * std::fmax(1.0, std::fabs(rr));
+        CHECK_NEAR(v[3], rr * std::sin(ph) * std::cos(th), tol);
+        CHECK_NEAR(v[4], rr * std::sin(ph) * std::sin(th), tol);
+        CHECK_NEAR(v[5], rr * std::cos(ph), tol);
+    }
+
+    const auto to = numbers_after(r, "to_spherical");
+    CHECK_EQ(to.size(), std::size_t(4));
+    for (const auto &v : to) {
+        if (v.size() != 6) {
+            CHECK(false);
+            continue;
+        }
+        const dvec3 p = row3(v, 0);
+        CHECK_NEAR(v[3], std::sqrt(dot(p, p)), kFloatTolerance * std::sqrt(dot(p, p)));
+        CHECK_NEAR(v[4], std::atan2(p.y, p.x), kFloatTolerance);
+        CHECK_NEAR(v[5], std::atan2(std::hypot(p.x, p.y), p.z), kFloatTolerance);
+    }
+
+    const auto normalized = numbers_after(r, "normalize_fast");
+    CHECK_EQ(normalized.size(), std::size_t(1));
+    if (normalized.size() == 1 && normalized[0].size() == 6) {
+        const dvec3 expected = unit(row3(normalized[0], 0));  // (3, 4, 12) / 13
+        CHECK_NEAR(normalized[0][3], expected.x, kQuakeTolerance * 1.0);
+        CHECK_NEAR(normalized[0][4], expected.y, kQuakeTolerance * 1.0);
+        CHECK_NEAR(normalized[0][5], expected.z, kQuakeTolerance * 1.0);
+    }
+
+    const auto slerps = numbers_after(r, "slerp");
+    CHECK_EQ(slerps.size(), std::size_t(10));
+    for (const auto &v : slerps) {
+        if (v.size() != 10) {
+            CHECK(false);
+            continue;
+        }
+        const dvec3 expected = slerp_ref(row3(v, 0), row3(v, 3), v[6]);
+        CHECK_NEAR(v[7], expected.x, kQuakeTolerance);
+        CHECK_NEAR(v[8], expected.y, kQuakeTolerance);
+        CHECK_NEAR(v[9], expected.z, kQuakeTolerance);
+    }
+}
+
+// ---- lit Bezier animation -------------------------------------------------------------------------
+
+namespace {
+const dvec3 kP0 = {-1, -1, 0}, kP1 = {-2.5, 2.5, 0}, kP2 = {2.5, 2.5, 0}, kP3 = kP0;
+constexpr int kBezierFrames = 24;
+constexpr double kBezierSize = 200, kBezierScale = 70;
+constexpr double kLightIntensity = 0.8;
+const dvec3 kLightDirection = {1, 1, 0.5};
+}  // namespace
+
+TEST(lit_bezier_positions_and_edge_lighting_match_double) {
+    scratch_dir dir;
+    const program_run r = run_program("lit_bezier", dir);
+    CHECK_EQ(r.exit_code, 0);
+    const auto frames = numbers_after(r, "frame");
+    CHECK_EQ(frames.size(), std::size_t(kBezierFrames + 1));
+    for (const auto &v : frames) {
+        if (v.size() != 5) {
+            CHECK(false);
+            continue;
+        }
+        const dvec3 expected = bezier_ref(kP0, kP1, kP2, kP3, v[1]);
+        CHECK_NEAR(v[2], expected.x, kFloatTolerance * 4);
+        CHECK_NEAR(v[3], expected.y, kFloatTolerance * 4);
+        CHECK_NEAR(v[4], expected.z, kFloatTolerance * 4);
+    }
+    // The loop closes exactly: B(1) = p3 = p0 = B(0).
+    if (frames.size() == std::size_t(kBezierFrames + 1)) {
+        CHECK_EQ(frames.front()[2], frames.back()[2]);
+        CHECK_EQ(frames.front()[3], frames.back()[3]);
+    }
+
+    // Lit edge = intensity · clamp01(unit(b − a) · unit(L)) (the report's per-edge Lambert).
+    const auto edges = numbers_after(r, "edge");
+    CHECK_EQ(edges.size(), std::size_t(4 * (kBezierFrames + 1)));
+    int lit = 0, dark = 0;
+    for (const auto &v : edges) {
+        if (v.size() != 9) {
+            CHECK(false);
+            continue;
+        }
+        const double cosine = dot(unit(row3(v, 5) - row3(v, 2)), unit(kLightDirection));
+        const double expected = kLightIntensity * std::fmin(1.0, std::fmax(0.0, cosine));
+        CHECK_NEAR(v[8], expected, kFloatTolerance);
+        (expected > 0 ? lit : dark) += 1;
+    }
+    CHECK(lit > 0 && dark > 0);  // both branches of the clamp are exercised
+}
+
+TEST(lit_bezier_image_stays_in_the_circular_viewport) {
+    scratch_dir dir;
+    const program_run r = run_program("lit_bezier", dir);
+    CHECK_EQ(r.exit_code, 0);
+    const gray_image img = read_image(dir.file("lit_bezier.pgm"));
+    CHECK_EQ(img.width, int(kBezierSize));
+    if (img.width != int(kBezierSize)) return;
+    const double centre = kBezierSize / 2, radius = kBezierSize / 2;
+    // Segments join points inside the circle (convex), 1.5 px thick, splats reach 1 px more.
+    const double reach = 0.75 + 1.0 + 0.71;  // + half a pixel diagonal (pixel centres)
+    int ink_outside = 0;
+    for (int y = 0; y < img.height; ++y)
+        for (int x = 0; x < img.width; ++x)
+            if (std::hypot(x + 0.5 - centre, y + 0.5 - centre) > radius + reach) ink_outside += img.at(x, y) != 0;
+    CHECK_EQ(ink_outside, 0);
+
+    // Every frame position well inside the circle is inked (its own splat puts ≥ 1/4 there);
+    // some positions are outside, so the viewport test above is not vacuous.
+    int outside = 0;
+    for (int k = 0; k <= kBezierFrames; ++k) {
+        const dvec3 p = bezier_ref(kP0, kP1, kP2, kP3, double(k) / kBezierFrames);
+        const double sx = centre + kBezierScale * p.x, sy = centre - kBezierScale * p.y;
+        const double d = std::hypot(sx - centre, sy - centre);
+        if (d > radius) ++outside;
+        if (d < radius - 1) CHECK_MSG(img.at(int(sx), int(sy)) > 0, "frame " + std::to_string(k));
+    }
+    CHECK(outside >= 3);
+}
+
+// ---- a program with its own vec3_normalize & co. ----------------------------------------------------
+
+TEST(own_helpers_program_compiles_and_reads_pixels_directly) {
+    scratch_dir dir;
+    const program_run r = run_program("own_helpers", dir);
+    CHECK_EQ(r.exit_code, 0);
+    const auto norm = numbers_after(r, "own_normalize");
+    CHECK_MSG(norm.size() == 1 && norm[0].size() == 6, "own_normalize line");
+    if (norm.size() == 1 && norm[0].size() == 6) {
+        CHECK_NEAR(norm[0][3], 0.6, 1e-7);
+        CHECK_NEAR(norm[0][4], 0.8, 1e-7);
+        CHECK_EQ(norm[0][5], 0.0);
+    }
+    const auto cross = numbers_after(r, "own_cross");
+    CHECK(cross.size() == 1 && cross[0] == (std::vector<double>{1, 0, 0, 0, 1, 0, 0, 0, 1}));
+    const auto dot_row = numbers_after(r, "own_dot");
+    CHECK(dot_row.size() == 1 && dot_row[0].back() == 32.0);
+    const auto add_scale = numbers_after(r, "own_add_scale");
+    CHECK(add_scale.size() == 1 && add_scale[0] == (std::vector<double>{2.5, 2, 1}));
+    const auto fast = numbers_after(r, "library_normalize_fast");
+    if (CHECK(fast.size() == 1 && fast[0].size() == 6)) {
+        CHECK_NEAR(fast[0][3], 0.6, kQuakeTolerance);
+        CHECK_NEAR(fast[0][4], 0.8, kQuakeTolerance);
+    }
+
+    // The program's own P2 writer: set_pixel_f at a pixel centre lands on that pixel only,
+    // so row 3 holds (int)(x/15·255 + 0.5) and every other row 0.
+    const gray_image img = read_image(dir.file("own_helpers.pgm"));
+    CHECK_EQ(img.width, 16);
+    CHECK_EQ(img.height, 8);
+    if (img.width != 16 || img.height != 8) return;
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 16; ++x) CHECK_EQ(img.at(x, y), y == 3 ? int(x / 15.0f * 255 + 0.5f) : 0);
+}
+
+// ---- the opt-in header --------------------------------------------------------------------------------
+
+TEST(compat_header_program_matches_double_and_saves_identical_files) {
+    scratch_dir dir;
+    const program_run r = run_program("compat_header", dir);
+    CHECK_EQ(r.exit_code, 0);
+
+    // model = T(1, 2, 3) · Rz(0.3)·Ry(0.2)·Rx(0.1) · S(2): the point (1, 1, 1).
+    const auto point = numbers_after(r, "model_point");
+    if (CHECK(point.size() == 1 && point[0].size() == 6)) {
+        const dvec3 expected = rotate_z(rotate_y(rotate_x({2, 2, 2}, double(0.1f)), double(0.2f)), double(0.3f)) +
+                               dvec3{1, 2, 3};
+        CHECK_NEAR(point[0][3], expected.x, 1e-5);
+        CHECK_NEAR(point[0][4], expected.y, 1e-5);
+        CHECK_NEAR(point[0][5], expected.z, 1e-5);
+    }
+    const auto model = numbers_after(r, "model"), product = numbers_after(r, "identity_times_model");
+    CHECK(model.size() == 1 && product.size() == 1 && model[0] == product[0] && model[0].size() == 16);
+
+    // glFrustum(l, r, b, t, n, f) = (−1, 2, −0.5, 1.5, 1, 20), column-major.
+    const double l = -1, rr = 2, b = -0.5, t = 1.5, n = 1, f = 20;
+    std::array<double, 16> expected{};
+    expected[0] = 2 * n / (rr - l);
+    expected[5] = 2 * n / (t - b);
+    expected[8] = (rr + l) / (rr - l);
+    expected[9] = (t + b) / (t - b);
+    expected[10] = -(f + n) / (f - n);
+    expected[11] = -1;
+    expected[14] = -2 * f * n / (f - n);
+    for (const char *name : {"frustum", "frustum_out"}) {
+        const auto m = numbers_after(r, name);
+        if (!CHECK_MSG(m.size() == 1 && m[0].size() == 16, name)) continue;
+        for (int i = 0; i < 16; ++i) CHECK_NEAR(m[0][std::size_t(i)], expected[std::size_t(i)], kFloatTolerance);
+    }
+
+    const auto mid = numbers_after(r, "slerp_mid");
+    if (CHECK(mid.size() == 1 && mid[0].size() == 3)) {
+        CHECK_NEAR(mid[0][0], std::sqrt(0.5), kQuakeTolerance);
+        CHECK_NEAR(mid[0][1], std::sqrt(0.5), kQuakeTolerance);
+        CHECK_EQ(mid[0][2], 0.0);
+    }
+    const auto unchanged = numbers_after(r, "update_spherical_unchanged");
+    CHECK(unchanged.size() == 1 && unchanged[0] == std::vector<double>{1});
+    const auto failed = numbers_after(r, "failed_save");
+    CHECK(failed.size() == 1 && failed[0] == std::vector<double>{-1});
+
+    // The four save names write the same bytes; the 7-argument line of intensity 0.5 covers
+    // row 10 (y in [10, 11)) completely from x = 1.5 to 30.5 (round caps of radius 0.5), so
+    // columns 2..29 hold 0.5 → 127.5 before rounding, rows 9 and 11 nothing.
+    const auto saves = numbers_after(r, "save");
+    CHECK_EQ(saves.size(), std::size_t(4));
+    for (const auto &s : saves) CHECK(s == std::vector<double>{0});
+    const std::string first = file_bytes(dir.file("compat_save_canvas_as_pgm.pgm"));
+    CHECK(!first.empty());
+    for (const char *name : {"compat_canvas_save_to_pgm.pgm", "compat_save_canvas_pgm.pgm", "compat_save_canvas_to_pgm.pgm"})
+        CHECK_MSG(file_bytes(dir.file(name)) == first, name);
+    const gray_image img = read_image(dir.file("compat_save_canvas_as_pgm.pgm"));
+    CHECK_EQ(img.width, 32);
+    CHECK_EQ(img.height, 20);
+    if (img.width != 32 || img.height != 20) return;
+    for (int x = 2; x <= 29; ++x) {
+        CHECK(std::abs(2 * img.at(x, 10) - 255) <= 1);  // 127 or 128
+        CHECK_EQ(img.at(x, 9), 0);
+        CHECK_EQ(img.at(x, 11), 0);
+    }
+    CHECK_EQ(img.at(0, 10), 0);
+    CHECK_EQ(img.at(31, 10), 0);
+}
+
+// ---- in-process: the aliases are the primary functions, and literals resolve -------------------------
+
+TEST(aliases_agree_with_the_primary_functions) {
+    const mat4_t a = mat4_rotate_xyz(0.3f, -1.1f, 2.0f), b = mat4_translate(1, -2, 3.5f);
+    const mat4_t ab = mat4_multiply(a, b), ab_alias = mat4_mul(a, b);
+    CHECK(std::memcmp(&ab, &ab_alias, sizeof ab) == 0);
+    const mat4_t proj = mat4_frustum_asymmetric(-1, 1, -1, 1, 1, 10);
+    const vec3_t p = {0.25f, -0.5f, -3.0f};
+    const vec3_t q = apply_transform(proj, p), q1 = mat4_mul_vec3(proj, p), q2 = mat4_transform_vec3(proj, p);
+    CHECK(q == q1 && q == q2);
+    // "divide by w": w = 3 here, so NDC x = (1·0.25)/3.
+    CHECK_NEAR(q1.x, 0.25 / 3.0, kFloatTolerance);
+    const vec3 v = vec3_from_cartesian(1, 2.5, -3);  // int and double literals
+    CHECK(v == (vec3_t{1.0f, 2.5f, -3.0f}));
+    const vec3_t b0 = {0, 0, 0}, b1 = {1, 2, 0}, b2 = {3, -1, 1}, b3 = {4, 0, 2};
+    for (float t : {0.0f, 0.3f, 1.0f}) CHECK(bezier(b0, b1, b2, b3, t) == vec3_bezier(b0, b1, b2, b3, t));
+
+    canvas_t *c = canvas_create(4, 3);
+    CHECK(c != nullptr);
+    if (!c) return;
+    clear_canvas(c, 2);  // clamps to 1
+    CHECK_EQ(c->pixels[2][3], 1.0f);
+    canvas_clear(c, 0.25);
+    CHECK_EQ(c->pixels[1][1], 0.25f);
+    canvas_clear(c);
+    CHECK_EQ(c->pixels[0][0], 0.0f);
+    CHECK_EQ(canvas_save_pgm(nullptr, "/tmp/never.pgm"), -1);
+    CHECK_EQ(canvas_save_pgm(c, nullptr), -1);
+    canvas_free(c);
+    free_canvas(nullptr);  // null pointers are ignored by every destroy name
+    canvas_destroy(nullptr);
+    canvas_free(nullptr);
+    destroy_canvas(nullptr);
+}
+
+TEST(int_and_double_literals_resolve_to_the_float_functions) {
+    // Each call below would fail to compile if an overload made it ambiguous.
+    canvas_t *c = create_canvas(20, 20);
+    CHECK(c != nullptr);
+    if (!c) return;
+    set_pixel_f(c, 10, 10.5, 1);
+    draw_line_f(c, 0, 0, 19, 19.0, 1);
+    CHECK(clip_to_circular_viewport(c, 10, 10));
+    CHECK(clip_to_circular_viewport(c, 10.5, 10));
+    CHECK(!clip_to_circular_viewport(c, 0, 0));
+    const vec3_t s = vec3_from_spherical(2, 0, M_PI / 2);  // (2, 0, 0)
+    CHECK_NEAR(s.x, 2.0, kFloatTolerance);
+    const vec3_t sl = vec3_slerp(vec3_t{1, 0, 0}, vec3_t{0, 1, 0}, 1);
+    CHECK_NEAR(sl.y, 1.0, kQuakeTolerance);
+    vec3_t n = {0, 3, 4};
+    vec3_normalize_fast(&n);
+    CHECK_NEAR(n.z, 0.8, kQuakeTolerance);
+    const mat4_t m = mat4_mul(mat4_scale(2, 2.0, 2), mat4_rotate_xyz(0, M_PI, 0.0));
+    CHECK_NEAR(m.m[0], -2.0, 1e-6);  // 2·cos π
+    CHECK_NEAR(lambert_intensity(vec3_t{0, 0, 0}, vec3_t{1, 0, 0}, vec3_t{1, 0, 0}), 1.0, kFloatTolerance);
+    const light_t light = {{0, 0, 1}, 1};
+    CHECK_EQ(light.intensity, 1.0f);
+    float x = -1, y = -1;
+    CHECK_EQ(project_vertex(vec3_t{0, 0, -2}, mat4_identity(), mat4_frustum_asymmetric(-1, 1, -1, 1, 1, 10), 20, 20, &x, &y), 1);
+    CHECK_NEAR(x, 10.0, 1e-4);
+    CHECK_NEAR(y, 10.0, 1e-4);
+    clear_canvas(c, 0);
+    canvas_destroy(c);
+}
