@@ -72,6 +72,7 @@ $(BUILD)/san/tests/%: $(BUILD)/san/obj/tests/%.o $(SAN_LIB)
 tests: $(TEST_BINS) $(SAN_TESTS) $(DEMO_BINS)
 test: tests
 	@BUILD=$(BUILD) bash tests/run_tests.sh $(TEST_BINS) -- $(SAN_TESTS)
+include tests/compat/compat.mk
 
 # ---- demos: one program per demo/*.cpp, linked with demo/common ----
 $(BUILD)/demo/%: $(BUILD)/obj/demo/%.o $(DEMO_COMMON_OBJS) $(LIB)
