@@ -200,6 +200,19 @@ TEST(coverage_far_off_segments_are_clipped) {
     compare(*d, ref, e);
     CHECK(e.pixels > 48 * 2);
     CHECK_NEAR(e.max, 0.0, 1e-4);
+    // Ends at ±3e38 (near FLT_MAX): the clipped ends come from the line's implicit
+    // equation, so the diagonal still runs through the pixel centres (k + ½, k + ½) and
+    // gives the hand values of coverage_diagonal_hand_value.
+    canvas_ptr m = blank(16, 16);
+    tiny3d::draw_line_coverage(m.get(), -3e38f, -3e38f, 3e38f, 3e38f, float(std::sqrt(2.0) / 2));
+    for (int k = 1; k < 14; ++k) {
+        CHECK_NEAR(m->pixels[k][k], 0.75, 1e-5);
+        CHECK_NEAR(m->pixels[k][k + 1], 0.125, 1e-5);
+    }
+    canvas_ptr n = blank(16, 8);
+    tiny3d::draw_line_coverage(n.get(), -3e38f, 3.0f, 3e38f, 4.0f, 1.0f);  // crosses at y = 3.5
+    for (int x = 0; x < 16; ++x) CHECK_NEAR(n->pixels[3][x], 1.0, 1e-5);
+    CHECK_NEAR(tiny3d::line_coverage_reference_at(5, 3, -3e38, 3.0, 3e38, 4.0, 1.0), 1.0, 1e-9);
     // Entirely off the canvas: nothing.
     canvas_ptr o = blank(16, 16);
     tiny3d::draw_line_coverage(o.get(), -100.0f, -50.0f, 300.0f, -40.0f, 3.0f);
@@ -319,6 +332,9 @@ TEST(wu_weights) {
     tiny3d::draw_line_wu(e.get(), -1e9f, 2.75f, 1e9f, 2.75f);
     tiny3d::draw_line_wu(f.get(), -10.0f, 2.75f, 30.0f, 2.75f);
     CHECK(std::memcmp(e->data, f->data, sizeof(float) * 160) == 0);
+    canvas_ptr g = blank(12, 12);
+    tiny3d::draw_line_wu(g.get(), -3e38f, -3e38f, 3e38f, 3e38f);  // y = x: on the centres
+    for (int k = 1; k < 11; ++k) CHECK_NEAR(g->pixels[k][k], 1.0, 1e-6);
 }
 
 // ---- Bresenham and the gradient line -----------------------------------------------------

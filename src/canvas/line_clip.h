@@ -2,6 +2,8 @@
 #ifndef TINY3D_LINE_CLIP_H
 #define TINY3D_LINE_CLIP_H
 
+#include <cmath>
+
 namespace tiny3d::detail {
 
 // Liang–Barsky: the parameter interval [t0, t1] ⊂ [0, 1] of P(t) = P0 + t·D that lies in
@@ -27,6 +29,63 @@ inline bool clip_parameter_range(double x0, double y0, double dx, double dy, dou
             if (r < t1) t1 = r;
         }
     }
+    return true;
+}
+
+// a·d − b·c to within about an ulp of the result, even when the products nearly cancel
+// (Kahan's algorithm: the rounding error of b·c is recovered exactly with an fma).
+inline double difference_of_products(double a, double d, double b, double c) {
+    const double w = b * c;
+    const double e = std::fma(-b, c, w);  // w − b·c, exactly
+    const double f = std::fma(a, d, -w);
+    return f + e;
+}
+
+// A segment clipped to a box, with each clipped end computed stably: the coordinate of
+// the box side it lies on is taken exactly and the other follows from the line's implicit
+// equation dy·x − dx·y = x0·y1 − x1·y0 with the right side computed accurately. (P0 + t·D
+// cancels catastrophically for ends like ±1e30; this form's error is ~1e-16 of the
+// canvas-sized terms, so (−3e38, −3e38)→(3e38, 3e38) still crosses pixel (k, k).)
+struct clipped_segment {
+    double x0, y0, x1, y1;
+    bool start_clipped, end_clipped;
+};
+
+inline bool clip_segment(double x0, double y0, double x1, double y1, double xmin, double ymin, double xmax,
+                         double ymax, clipped_segment &out) {
+    const double dx = x1 - x0, dy = y1 - y0;
+    const double p[4] = {-dx, dx, -dy, dy};
+    const double q[4] = {x0 - xmin, xmax - x0, y0 - ymin, ymax - y0};
+    const double side[4] = {xmin, xmax, ymin, ymax};
+    double t0 = 0.0, t1 = 1.0;
+    int side0 = -1, side1 = -1;  // the box side each end was moved to (−1: not clipped)
+    for (int i = 0; i < 4; ++i) {
+        if (p[i] == 0.0) {
+            if (q[i] < 0.0) return false;
+            continue;
+        }
+        const double r = q[i] / p[i];
+        if (p[i] < 0.0) {
+            if (r > t1) return false;
+            if (r > t0) { t0 = r; side0 = i; }
+        } else {
+            if (r < t0) return false;
+            if (r < t1) { t1 = r; side1 = i; }
+        }
+    }
+    const double cross = (side0 >= 0 || side1 >= 0) ? difference_of_products(x0, y1, x1, y0) : 0.0;
+    auto on_side = [&](int i, double &x, double &y) {
+        if (i < 2) {
+            x = side[i];
+            y = (dy * x - cross) / dx;
+        } else {
+            y = side[i];
+            x = (dx * y + cross) / dy;
+        }
+    };
+    out = {x0, y0, x1, y1, side0 >= 0, side1 >= 0};
+    if (side0 >= 0) on_side(side0, out.x0, out.y0);
+    if (side1 >= 0) on_side(side1, out.x1, out.y1);
     return true;
 }
 

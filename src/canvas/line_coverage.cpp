@@ -33,6 +33,8 @@ using detail::small_polygon;
 constexpr double kPointLength = 1e-9;
 // Half the diagonal of a unit pixel: no point of a pixel is farther than this from its centre.
 constexpr double kHalfDiagonal = 0.70710678118654752;
+// Corner regions of the square-in-band area narrower than this (px) are treated as empty.
+constexpr double kNarrowCorner = 1e-12;
 // Margin (px) beyond the stroke's reach when clipping, so clipped ends stay off the canvas.
 constexpr double kClipSlack = 2.0;
 
@@ -51,8 +53,10 @@ struct square_cdf {
         w_hi = float((amax + amin_d) / 2);
         inv_amax = float(1.0 / amax);
         amin = float(amin_d);
-        // amin = 0 (axis-aligned line) makes m ≡ 0: any finite factor will do.
-        inv_2ab = amin_d > 0 ? float(1.0 / (2.0 * amax * amin_d)) : 0.0f;
+        // amin ≈ 0 (axis-aligned line): the quadratic corners are narrower than kNarrowCorner
+        // px and contribute nothing visible; m ≡ 0 then, and a zero factor avoids 0·inf.
+        inv_2ab = amin_d > kNarrowCorner ? float(1.0 / (2.0 * amax * amin_d)) : 0.0f;
+        if (!(amin_d > kNarrowCorner)) amin = 0.0f;
     }
     // sign(s)·H(|s|) = F(s) − ½
     float centred(float s) const {
@@ -266,15 +270,17 @@ void draw_line_coverage(canvas_t *canvas, float x0, float y0, float x1, float y1
     // off the canvas, so its (dropped) cap cannot touch a canvas pixel.
     const segment_axes axes(ax, ay, bx, by);
     const double margin = h + kClipSlack;
-    double t0 = 0.0, t1 = 1.0;
-    if (!detail::clip_parameter_range(ax, ay, bx - ax, by - ay, -margin, -margin, major_size + margin,
-                                      minor_size + margin, t0, t1))
+    detail::clipped_segment clip;
+    if (!detail::clip_segment(ax, ay, bx, by, -margin, -margin, major_size + margin, minor_size + margin, clip))
         return;
-    const double cax = ax + t0 * (bx - ax), cay = ay + t0 * (by - ay);
-    const double length = (t1 - t0) * axes.length;
+    const double cax = clip.x0, cay = clip.y0;
+    const double length = (clip.start_clipped || clip.end_clipped)
+                              ? std::max(0.0, (clip.x1 - cax) * axes.dx + (clip.y1 - cay) * axes.dy)
+                              : axes.length;
     // The end pixels are clipped in double: in float, near-tangent circle crossings lose
     // up to 3e-3 of area.
-    const stroke_frame<double> frame{axes.dx, axes.dy, length, h, round && t0 == 0.0, round && t1 == 1.0};
+    const stroke_frame<double> frame{axes.dx, axes.dy, length, h, round && !clip.start_clipped,
+                                     round && !clip.end_clipped};
     const double cbx = cax + axes.dx * length, cby = cay + axes.dy * length;
 
     const double nx = -axes.dy, ny = axes.dx;  // unit normal; axes.dx ≥ |axes.dy|
@@ -362,17 +368,18 @@ void for_pixels_near_stroke(int width, int height, double x0, double y0, double 
                             Visit &&visit) {
     const segment_axes axes(x0, y0, x1, y1);
     const double reach = h + kHalfDiagonal;
-    double t0, t1;
-    if (!detail::clip_parameter_range(x0, y0, x1 - x0, y1 - y0, -reach, -reach, width + reach, height + reach, t0,
-                                      t1))
-        return;
-    const double ax = x0 + t0 * (x1 - x0), ay = y0 + t0 * (y1 - y0);
-    const double bx = x0 + t1 * (x1 - x0), by = y0 + t1 * (y1 - y0);
+    detail::clipped_segment clip;
+    if (!detail::clip_segment(x0, y0, x1, y1, -reach, -reach, width + reach, height + reach, clip)) return;
+    const double ax = clip.x0, ay = clip.y0, bx = clip.x1, by = clip.y1;
+    // Distances to the clipped part, measured from its start (small numbers even for far
+    // ends); a canvas pixel's nearest point never lies on the part clipped away.
+    segment_axes near = axes;
+    if (clip.start_clipped || clip.end_clipped) near.length = std::max(0.0, (bx - ax) * axes.dx + (by - ay) * axes.dy);
     const auto [xa, xb] = touched_cells(std::min(ax, bx) - reach, std::max(ax, bx) + reach, width);
     const auto [ya, yb] = touched_cells(std::min(ay, by) - reach, std::max(ay, by) + reach, height);
     for (int y = ya; y <= yb; ++y)
         for (int x = xa; x <= xb; ++x)
-            if (distance_to_segment(x + 0.5, y + 0.5, x0, y0, axes) <= reach) visit(x, y);
+            if (distance_to_segment(x + 0.5, y + 0.5, ax, ay, near) <= reach) visit(x, y);
 }
 
 bool reference_inputs_ok(double x0, double y0, double x1, double y1, double thickness) {
@@ -385,10 +392,22 @@ double line_coverage_reference_at(int px, int py, double x0, double y0, double x
                                   line_cap cap) {
     if (!reference_inputs_ok(x0, y0, x1, y1, thickness)) return 0.0;
     const segment_axes axes(x0, y0, x1, y1);
+    const double h = 0.5 * thickness;
+    // Only the part of the segment near this pixel matters: clip it to the pixel grown by
+    // the stroke's reach, and measure from the clipped start, so coordinates stay small
+    // (exact even for ends at ±1e300). A clipped end is ≥ kClipSlack px away: its cap
+    // cannot reach the pixel.
+    const double margin = h + kClipSlack;
+    detail::clipped_segment clip;
+    if (!detail::clip_segment(x0, y0, x1, y1, px - margin, py - margin, px + 1 + margin, py + 1 + margin, clip))
+        return 0.0;
+    const double length = (clip.start_clipped || clip.end_clipped)
+                              ? std::max(0.0, (clip.x1 - clip.x0) * axes.dx + (clip.y1 - clip.y0) * axes.dy)
+                              : axes.length;
     const bool round = cap == line_cap::round;
-    const stroke_frame<double> frame{axes.dx, axes.dy, axes.length, 0.5 * thickness, round, round};
-    // The pixel square relative to the first endpoint (exact for |coordinates| < 2^52).
-    return std::min(frame.area(stroke_frame<double>::square(px - x0, py - y0)), 1.0);
+    const stroke_frame<double> frame{axes.dx, axes.dy, length, h, round && !clip.start_clipped,
+                                     round && !clip.end_clipped};
+    return std::min(frame.area(stroke_frame<double>::square(px - clip.x0, py - clip.y0)), 1.0);
 }
 
 void line_coverage_reference(std::vector<double> &coverage, int width, int height, double x0, double y0,

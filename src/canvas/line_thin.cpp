@@ -119,11 +119,11 @@ void draw_line_wu(canvas_t *canvas, float x0, float y0, float x1, float y1, floa
     const double slope = a1 > a0 ? (b1 - b0) / (a1 - a0) : 0.0;
     // Clip to the canvas grown by 2 px: a clipped end's column falls off the canvas.
     constexpr double kMargin = 2.0;
-    double t0, t1;
-    if (!detail::clip_parameter_range(a0, b0, a1 - a0, b1 - b0, -kMargin, -kMargin, view.major_size() + kMargin,
-                                      view.minor_size() + kMargin, t0, t1))
+    detail::clipped_segment clip;
+    if (!detail::clip_segment(a0, b0, a1, b1, -kMargin, -kMargin, view.major_size() + kMargin,
+                              view.minor_size() + kMargin, clip))
         return;
-    const double ca0 = a0 + t0 * (a1 - a0), ca1 = a0 + t1 * (a1 - a0);
+    const double ca0 = clip.x0, ca1 = clip.x1, cb0 = clip.y0;
     auto plot_pair = [&](std::int64_t major, double minor, double weight) {
         const double base = std::floor(minor);
         const double frac = minor - base;
@@ -133,7 +133,7 @@ void draw_line_wu(canvas_t *canvas, float x0, float y0, float x1, float y1, floa
     };
     // End columns: the segment covers only part of them (Wu's "gap" weight).
     const double first = std::round(ca0), last = std::round(ca1);
-    const auto minor_at = [&](double a) { return b0 + slope * (a - a0); };
+    const auto minor_at = [&](double a) { return cb0 + slope * (a - ca0); };
     if (first == last) {
         plot_pair(std::int64_t(first), minor_at(0.5 * (ca0 + ca1)), ca1 - ca0 + (ca1 == ca0 ? 1.0 : 0.0));
         return;
