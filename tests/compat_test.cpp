@@ -57,17 +57,16 @@ struct program_run {
     std::vector<std::string> lines;  // stdout, one entry per line
 };
 
-// Runs $BUILD/compat/<name> with the folder as its only argument.
+// Runs $BUILD/compat/<name> with the folder as its only argument; a program that is
+// missing or does not exit with 0 fails the test case.
 program_run run_program(const std::string &name, const scratch_dir &dir) {
     program_run r;
     const std::string exe = build_dir() + "/compat/" + name;
-    if (!fs::exists(exe)) {
-        std::fprintf(stderr, "missing %s: build it with `make BUILD=%s tests`\n", exe.c_str(), build_dir().c_str());
+    if (!CHECK_MSG(fs::exists(exe), "missing " + exe + ": build it with `make BUILD=" + build_dir() + " tests`"))
         return r;
-    }
     const std::string command = "'" + exe + "' '" + dir.path.string() + "'";
     FILE *pipe = popen(command.c_str(), "r");
-    if (!pipe) return r;
+    if (!CHECK_MSG(pipe != nullptr, "cannot run " + exe)) return r;
     std::string line;
     for (int ch; (ch = std::fgetc(pipe)) != EOF;) {
         if (ch == '\n') {
@@ -80,6 +79,7 @@ program_run run_program(const std::string &name, const scratch_dir &dir) {
     if (!line.empty()) r.lines.push_back(line);
     const int status = pclose(pipe);
     r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    CHECK_MSG(r.exit_code == 0, name + " exited with " + std::to_string(r.exit_code));
     return r;
 }
 
@@ -100,6 +100,25 @@ std::vector<std::vector<double>> numbers_after(const program_run &r, const std::
         rows.push_back(values);
     }
     return rows;
+}
+
+// The rows of numbers_after(r, key), each required to hold exactly `width` numbers (a
+// malformed row fails the test case and is dropped).
+std::vector<std::vector<double>> rows_of(const program_run &r, const std::string &key, std::size_t width) {
+    std::vector<std::vector<double>> rows;
+    for (std::vector<double> &v : numbers_after(r, key))
+        if (CHECK_MSG(v.size() == width, "'" + key + "' line with " + std::to_string(v.size()) + " numbers"))
+            rows.push_back(std::move(v));
+    return rows;
+}
+
+// The numbers of the one `key` line, which must hold exactly `width` numbers; empty (and the
+// test case failed) otherwise.
+std::vector<double> single_row(const program_run &r, const std::string &key, std::size_t width) {
+    std::vector<std::vector<double>> rows = rows_of(r, key, width);
+    if (!CHECK_MSG(rows.size() == 1, "expected one '" + key + "' line, got " + std::to_string(rows.size())))
+        return {};
+    return rows[0];
 }
 
 // ---- images ---------------------------------------------------------------------------------
@@ -158,6 +177,12 @@ dvec3 unit(dvec3 v) {
     return n > 0 ? (1.0 / n) * v : dvec3{0, 0, 0};
 }
 dvec3 row3(const std::vector<double> &v, std::size_t first) { return {v[first], v[first + 1], v[first + 2]}; }
+// v[first .. first+2] within `tolerance` of `expected`, componentwise.
+void check_near3(const std::vector<double> &v, std::size_t first, dvec3 expected, double tolerance) {
+    CHECK_NEAR(v[first], expected.x, tolerance);
+    CHECK_NEAR(v[first + 1], expected.y, tolerance);
+    CHECK_NEAR(v[first + 2], expected.z, tolerance);
+}
 
 // Rotations (right-handed, radians) in double.
 dvec3 rotate_x(dvec3 p, double a) { return {p.x, p.y * std::cos(a) - p.z * std::sin(a), p.y * std::sin(a) + p.z * std::cos(a)}; }
@@ -190,9 +215,7 @@ constexpr double kQuakeTolerance = 3e-3;
 TEST(clock_face_image_equals_primary_api_and_hand_computed_pixels) {
     scratch_dir dir;
     const program_run r = run_program("clock_face", dir);
-    CHECK_EQ(r.exit_code, 0);
-    const auto failed = numbers_after(r, "failed_save");
-    CHECK_MSG(failed.size() == 1 && failed[0].size() == 1 && failed[0][0] == -1.0,
+    CHECK_MSG(single_row(r, "failed_save", 1) == std::vector<double>{-1},
               "canvas_save_pgm must return -1 for a path in a missing folder");
     CHECK(!fs::exists(dir.path / "no_such_folder"));
 
@@ -250,20 +273,14 @@ const int kCubeEdges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
 TEST(rotating_cube_vertices_match_double_projection) {
     scratch_dir dir;
     const program_run r = run_program("rotating_cube", dir);
-    CHECK_EQ(r.exit_code, 0);
-    const auto agree = numbers_after(r, "transform_forms_agree");
-    CHECK_MSG(agree.size() == 1 && agree[0] == std::vector<double>{1.0},
+    CHECK_MSG(single_row(r, "transform_forms_agree", 1) == std::vector<double>{1},
               "mat4_mul_vec3 and mat4_transform_vec3 must give the same bits");
-    const auto rows = numbers_after(r, "vertex");
+    const auto rows = rows_of(r, "vertex", 5);
     CHECK_EQ(rows.size(), std::size_t(kCubeFrames * 8));
     // glFrustum(−1, 1, −1, 1, 1, 10): x_ndc = x/−z, y_ndc = y/−z,
     // z_ndc = (−(f+n)/(f−n)·z − 2fn/(f−n)) / −z with n = 1, f = 10.
     const double n = 1, f = 10;
     for (const auto &row : rows) {
-        if (row.size() != 5) {
-            CHECK(false);
-            continue;
-        }
         const int frame = int(row[0]), i = int(row[1]);
         const double angle = double(float(frame * 2 * M_PI / kCubeFrames));  // the program's float angle
         dvec3 p = rotate_y(kCube[std::size_t(i)], angle);
@@ -279,7 +296,6 @@ TEST(rotating_cube_vertices_match_double_projection) {
 TEST(rotating_cube_image_equals_primary_api) {
     scratch_dir dir;
     const program_run r = run_program("rotating_cube", dir);
-    CHECK_EQ(r.exit_code, 0);
     const gray_image img = read_image(dir.file("rotating_cube.pgm"));
     canvas_t *expected = create_canvas(kCubeSize, kCubeSize);
     CHECK(expected != nullptr);
@@ -305,55 +321,31 @@ TEST(rotating_cube_image_equals_primary_api) {
 TEST(spherical_and_slerp_printout_matches_double_formulas) {
     scratch_dir dir;
     const program_run r = run_program("spherical_slerp", dir);
-    CHECK_EQ(r.exit_code, 0);
 
     // x = r sinφ cosθ, y = r sinφ sinθ, z = r cosφ (θ azimuth, φ polar: the report's).
-    const auto from = numbers_after(r, "from_spherical");
+    const auto from = rows_of(r, "from_spherical", 6);
     CHECK_EQ(from.size(), std::size_t(5));
     for (const auto &v : from) {
-        if (v.size() != 6) {
-            CHECK(false);
-            continue;
-        }
         const double rr = v[0], th = v[1], ph = v[2], tol = kFloatTolerance * std::fmax(1.0, std::fabs(rr));
-        CHECK_NEAR(v[3], rr * std::sin(ph) * std::cos(th), tol);
-        CHECK_NEAR(v[4], rr * std::sin(ph) * std::sin(th), tol);
-        CHECK_NEAR(v[5], rr * std::cos(ph), tol);
+        check_near3(v, 3, {rr * std::sin(ph) * std::cos(th), rr * std::sin(ph) * std::sin(th), rr * std::cos(ph)}, tol);
     }
 
-    const auto to = numbers_after(r, "to_spherical");
+    const auto to = rows_of(r, "to_spherical", 6);
     CHECK_EQ(to.size(), std::size_t(4));
     for (const auto &v : to) {
-        if (v.size() != 6) {
-            CHECK(false);
-            continue;
-        }
         const dvec3 p = row3(v, 0);
         CHECK_NEAR(v[3], std::sqrt(dot(p, p)), kFloatTolerance * std::sqrt(dot(p, p)));
         CHECK_NEAR(v[4], std::atan2(p.y, p.x), kFloatTolerance);
         CHECK_NEAR(v[5], std::atan2(std::hypot(p.x, p.y), p.z), kFloatTolerance);
     }
 
-    const auto normalized = numbers_after(r, "normalize_fast");
-    CHECK_EQ(normalized.size(), std::size_t(1));
-    if (normalized.size() == 1 && normalized[0].size() == 6) {
-        const dvec3 expected = unit(row3(normalized[0], 0));  // (3, 4, 12) / 13
-        CHECK_NEAR(normalized[0][3], expected.x, kQuakeTolerance * 1.0);
-        CHECK_NEAR(normalized[0][4], expected.y, kQuakeTolerance * 1.0);
-        CHECK_NEAR(normalized[0][5], expected.z, kQuakeTolerance * 1.0);
-    }
+    if (const auto v = single_row(r, "normalize_fast", 6); !v.empty())
+        check_near3(v, 3, unit(row3(v, 0)), kQuakeTolerance);  // (3, 4, 12) / 13
 
-    const auto slerps = numbers_after(r, "slerp");
+    const auto slerps = rows_of(r, "slerp", 10);
     CHECK_EQ(slerps.size(), std::size_t(10));
     for (const auto &v : slerps) {
-        if (v.size() != 10) {
-            CHECK(false);
-            continue;
-        }
-        const dvec3 expected = slerp_ref(row3(v, 0), row3(v, 3), v[6]);
-        CHECK_NEAR(v[7], expected.x, kQuakeTolerance);
-        CHECK_NEAR(v[8], expected.y, kQuakeTolerance);
-        CHECK_NEAR(v[9], expected.z, kQuakeTolerance);
+        check_near3(v, 7, slerp_ref(row3(v, 0), row3(v, 3), v[6]), kQuakeTolerance);
     }
 }
 
@@ -370,18 +362,10 @@ const dvec3 kLightDirection = {1, 1, 0.5};
 TEST(lit_bezier_positions_and_edge_lighting_match_double) {
     scratch_dir dir;
     const program_run r = run_program("lit_bezier", dir);
-    CHECK_EQ(r.exit_code, 0);
-    const auto frames = numbers_after(r, "frame");
+    const auto frames = rows_of(r, "frame", 5);
     CHECK_EQ(frames.size(), std::size_t(kBezierFrames + 1));
     for (const auto &v : frames) {
-        if (v.size() != 5) {
-            CHECK(false);
-            continue;
-        }
-        const dvec3 expected = bezier_ref(kP0, kP1, kP2, kP3, v[1]);
-        CHECK_NEAR(v[2], expected.x, kFloatTolerance * 4);
-        CHECK_NEAR(v[3], expected.y, kFloatTolerance * 4);
-        CHECK_NEAR(v[4], expected.z, kFloatTolerance * 4);
+        check_near3(v, 2, bezier_ref(kP0, kP1, kP2, kP3, v[1]), kFloatTolerance * 4);
     }
     // The loop closes exactly: B(1) = p3 = p0 = B(0).
     if (frames.size() == std::size_t(kBezierFrames + 1)) {
@@ -390,14 +374,10 @@ TEST(lit_bezier_positions_and_edge_lighting_match_double) {
     }
 
     // Lit edge = intensity · clamp01(unit(b − a) · unit(L)) (the report's per-edge Lambert).
-    const auto edges = numbers_after(r, "edge");
+    const auto edges = rows_of(r, "edge", 9);
     CHECK_EQ(edges.size(), std::size_t(4 * (kBezierFrames + 1)));
     int lit = 0, dark = 0;
     for (const auto &v : edges) {
-        if (v.size() != 9) {
-            CHECK(false);
-            continue;
-        }
         const double cosine = dot(unit(row3(v, 5) - row3(v, 2)), unit(kLightDirection));
         const double expected = kLightIntensity * std::fmin(1.0, std::fmax(0.0, cosine));
         CHECK_NEAR(v[8], expected, kFloatTolerance);
@@ -409,7 +389,6 @@ TEST(lit_bezier_positions_and_edge_lighting_match_double) {
 TEST(lit_bezier_image_stays_in_the_circular_viewport) {
     scratch_dir dir;
     const program_run r = run_program("lit_bezier", dir);
-    CHECK_EQ(r.exit_code, 0);
     const gray_image img = read_image(dir.file("lit_bezier.pgm"));
     CHECK_EQ(img.width, int(kBezierSize));
     if (img.width != int(kBezierSize)) return;
@@ -440,25 +419,12 @@ TEST(lit_bezier_image_stays_in_the_circular_viewport) {
 TEST(own_helpers_program_compiles_and_reads_pixels_directly) {
     scratch_dir dir;
     const program_run r = run_program("own_helpers", dir);
-    CHECK_EQ(r.exit_code, 0);
-    const auto norm = numbers_after(r, "own_normalize");
-    CHECK_MSG(norm.size() == 1 && norm[0].size() == 6, "own_normalize line");
-    if (norm.size() == 1 && norm[0].size() == 6) {
-        CHECK_NEAR(norm[0][3], 0.6, 1e-7);
-        CHECK_NEAR(norm[0][4], 0.8, 1e-7);
-        CHECK_EQ(norm[0][5], 0.0);
-    }
-    const auto cross = numbers_after(r, "own_cross");
-    CHECK(cross.size() == 1 && cross[0] == (std::vector<double>{1, 0, 0, 0, 1, 0, 0, 0, 1}));
-    const auto dot_row = numbers_after(r, "own_dot");
-    CHECK(dot_row.size() == 1 && dot_row[0].back() == 32.0);
-    const auto add_scale = numbers_after(r, "own_add_scale");
-    CHECK(add_scale.size() == 1 && add_scale[0] == (std::vector<double>{2.5, 2, 1}));
-    const auto fast = numbers_after(r, "library_normalize_fast");
-    if (CHECK(fast.size() == 1 && fast[0].size() == 6)) {
-        CHECK_NEAR(fast[0][3], 0.6, kQuakeTolerance);
-        CHECK_NEAR(fast[0][4], 0.8, kQuakeTolerance);
-    }
+    if (const auto v = single_row(r, "own_normalize", 6); !v.empty()) check_near3(v, 3, {0.6, 0.8, 0}, 1e-7);
+    CHECK(single_row(r, "own_cross", 9) == (std::vector<double>{1, 0, 0, 0, 1, 0, 0, 0, 1}));
+    CHECK(single_row(r, "own_dot", 7) == (std::vector<double>{1, 2, 3, 4, 5, 6, 32}));
+    CHECK(single_row(r, "own_add_scale", 3) == (std::vector<double>{2.5, 2, 1}));
+    if (const auto v = single_row(r, "library_normalize_fast", 6); !v.empty())
+        check_near3(v, 3, {0.6, 0.8, 0}, kQuakeTolerance);
 
     // The program's own P2 writer: set_pixel_f at a pixel centre lands on that pixel only,
     // so row 3 holds (int)(x/15·255 + 0.5) and every other row 0.
@@ -475,19 +441,13 @@ TEST(own_helpers_program_compiles_and_reads_pixels_directly) {
 TEST(compat_header_program_matches_double_and_saves_identical_files) {
     scratch_dir dir;
     const program_run r = run_program("compat_header", dir);
-    CHECK_EQ(r.exit_code, 0);
 
     // model = T(1, 2, 3) · Rz(0.3)·Ry(0.2)·Rx(0.1) · S(2): the point (1, 1, 1).
-    const auto point = numbers_after(r, "model_point");
-    if (CHECK(point.size() == 1 && point[0].size() == 6)) {
-        const dvec3 expected = rotate_z(rotate_y(rotate_x({2, 2, 2}, double(0.1f)), double(0.2f)), double(0.3f)) +
-                               dvec3{1, 2, 3};
-        CHECK_NEAR(point[0][3], expected.x, 1e-5);
-        CHECK_NEAR(point[0][4], expected.y, 1e-5);
-        CHECK_NEAR(point[0][5], expected.z, 1e-5);
-    }
-    const auto model = numbers_after(r, "model"), product = numbers_after(r, "identity_times_model");
-    CHECK(model.size() == 1 && product.size() == 1 && model[0] == product[0] && model[0].size() == 16);
+    if (const auto v = single_row(r, "model_point", 6); !v.empty())
+        check_near3(v, 3, rotate_z(rotate_y(rotate_x({2, 2, 2}, double(0.1f)), double(0.2f)), double(0.3f)) + dvec3{1, 2, 3},
+                    1e-5);
+    const auto model = single_row(r, "model", 16);
+    CHECK(!model.empty() && model == single_row(r, "identity_times_model", 16));
 
     // glFrustum(l, r, b, t, n, f) = (−1, 2, −0.5, 1.5, 1, 20), column-major.
     const double l = -1, rr = 2, b = -0.5, t = 1.5, n = 1, f = 20;
@@ -500,26 +460,19 @@ TEST(compat_header_program_matches_double_and_saves_identical_files) {
     expected[11] = -1;
     expected[14] = -2 * f * n / (f - n);
     for (const char *name : {"frustum", "frustum_out"}) {
-        const auto m = numbers_after(r, name);
-        if (!CHECK_MSG(m.size() == 1 && m[0].size() == 16, name)) continue;
-        for (int i = 0; i < 16; ++i) CHECK_NEAR(m[0][std::size_t(i)], expected[std::size_t(i)], kFloatTolerance);
+        const auto m = single_row(r, name, 16);
+        for (std::size_t i = 0; i < m.size(); ++i) CHECK_NEAR(m[i], expected[i], kFloatTolerance);
     }
 
-    const auto mid = numbers_after(r, "slerp_mid");
-    if (CHECK(mid.size() == 1 && mid[0].size() == 3)) {
-        CHECK_NEAR(mid[0][0], std::sqrt(0.5), kQuakeTolerance);
-        CHECK_NEAR(mid[0][1], std::sqrt(0.5), kQuakeTolerance);
-        CHECK_EQ(mid[0][2], 0.0);
-    }
-    const auto unchanged = numbers_after(r, "update_spherical_unchanged");
-    CHECK(unchanged.size() == 1 && unchanged[0] == std::vector<double>{1});
-    const auto failed = numbers_after(r, "failed_save");
-    CHECK(failed.size() == 1 && failed[0] == std::vector<double>{-1});
+    if (const auto v = single_row(r, "slerp_mid", 3); !v.empty())
+        check_near3(v, 0, {std::sqrt(0.5), std::sqrt(0.5), 0}, kQuakeTolerance);
+    CHECK(single_row(r, "update_spherical_unchanged", 1) == std::vector<double>{1});
+    CHECK(single_row(r, "failed_save", 1) == std::vector<double>{-1});
 
     // The four save names write the same bytes; the 7-argument line of intensity 0.5 covers
     // row 10 (y in [10, 11)) completely from x = 1.5 to 30.5 (round caps of radius 0.5), so
     // columns 2..29 hold 0.5 → 127.5 before rounding, rows 9 and 11 nothing.
-    const auto saves = numbers_after(r, "save");
+    const auto saves = rows_of(r, "save", 1);
     CHECK_EQ(saves.size(), std::size_t(4));
     for (const auto &s : saves) CHECK(s == std::vector<double>{0});
     const std::string first = file_bytes(dir.file("compat_save_canvas_as_pgm.pgm"));
