@@ -492,6 +492,52 @@ TEST(compat_header_program_matches_double_and_saves_identical_files) {
     CHECK_EQ(img.at(31, 10), 0);
 }
 
+// ---- the report's own demo flow, with the report's names ---------------------------------------------
+
+TEST(report_demo_soccer_ball_camera_lighting_match_hand_computed_values) {
+    scratch_dir dir;
+    const program_run r = run_program("report_demo", dir);
+    CHECK(single_row(r, "soccer_counts", 2) == (std::vector<double>{60, 90}));
+    // A truncated icosahedron of circumradius R has edge a = 4R / √(58 + 18√5) (R ≈ 2.478 a).
+    const double edge = 4.0 / std::sqrt(58.0 + 18.0 * std::sqrt(5.0));
+    for (double v : single_row(r, "soccer_radius", 2)) CHECK_NEAR(v, 1.0, kFloatTolerance);
+    for (double v : single_row(r, "soccer_edge", 2)) CHECK_NEAR(v, edge, kFloatTolerance);
+    // glFrustum(−1, 1, −1, 1, 1, 10) at z = −2.5: NDC z = ((f+n)/(f−n)·2.5 − 2fn/(f−n)) / 2.5 = 1/3.
+    if (const auto v = single_row(r, "centre_ndc", 3); !v.empty()) check_near3(v, 0, {0, 0, 1.0 / 3.0}, kFloatTolerance);
+
+    // The ball (radius 1, centre 2.5 in front of the camera) projects inside the circle of
+    // NDC radius tan(asin(R/d)) = R/√(d² − R²) around the canvas centre; its silhouette
+    // vertices lie on the sphere, so ink reaches that circle to within a few pixels.
+    const gray_image img = read_image(dir.file("report_soccer.pgm"));
+    CHECK_EQ(img.width, 200);
+    if (img.width != 200 || img.height != 200) return;
+    const double silhouette_px = 100.0 / std::sqrt(2.5 * 2.5 - 1.0);
+    const double reach = 0.5 + 1.0 + 0.71;  // disc of thickness 1, splat, pixel-centre slack
+    double farthest_ink = 0;
+    for (int y = 0; y < 200; ++y)
+        for (int x = 0; x < 200; ++x)
+            if (img.at(x, y) != 0) farthest_ink = std::fmax(farthest_ink, std::hypot(x + 0.5 - 100, y + 0.5 - 100));
+    CHECK(farthest_ink <= silhouette_px + reach);
+    CHECK(farthest_ink >= silhouette_px - 3.0);
+
+    if (const auto v = single_row(r, "light", 6); !v.empty()) {
+        check_near3(v, 0, {std::sin(double(0.25f)), 0, std::cos(double(0.25f))}, kFloatTolerance);
+        check_near3(v, 3, {1, 0, 0.25}, kFloatTolerance);
+    }
+    const dvec3 light = {std::sin(double(0.25f)), 0, std::cos(double(0.25f))};
+    const auto lit = rows_of(r, "lit_edge", 8);
+    CHECK_EQ(lit.size(), std::size_t(5));
+    for (const auto &v : lit)  // Lambert of an edge does not depend on where it has moved
+        CHECK_NEAR(v[7], std::fmax(0.0, dot(unit(row3(v, 4) - row3(v, 1)), light)), kFloatTolerance);
+    const auto path = rows_of(r, "bezier", 4);
+    CHECK_EQ(path.size(), std::size_t(5));
+    for (const auto &v : path) check_near3(v, 1, bezier_ref({0, 0, 0}, {1, 2, 0}, {3, 2, 1}, {4, 0, 0}, v[0]), kFloatTolerance * 4);
+    if (const auto v = single_row(r, "normalize_slerp", 6); !v.empty()) {
+        check_near3(v, 0, {0, 0, 1}, kQuakeTolerance);
+        check_near3(v, 3, {std::sqrt(0.5), 0, std::sqrt(0.5)}, kQuakeTolerance);
+    }
+}
+
 // ---- in-process: the aliases are the primary functions, and literals resolve -------------------------
 
 TEST(aliases_agree_with_the_primary_functions) {

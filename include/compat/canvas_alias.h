@@ -8,7 +8,17 @@
 #ifndef TINY3D_COMPAT_CANVAS_ALIAS_H
 #define TINY3D_COMPAT_CANVAS_ALIAS_H
 
+#include <cstddef>
+#include <type_traits>
+
 #include "../canvas.h"
+
+// The form 15 of the 20 surveyed implementations share, which user programs read directly
+// (canvas->width, canvas->pixels[y][x]): keep these three members first.
+static_assert(std::is_same_v<decltype(canvas_t::width), int> && offsetof(canvas_t, width) == 0 &&
+                  std::is_same_v<decltype(canvas_t::height), int> && offsetof(canvas_t, height) == sizeof(int) &&
+                  std::is_same_v<decltype(canvas_t::pixels), float **>,
+              "canvas_t must start with int width, int height, float **pixels");
 
 // create_canvas under its other name: a width × height canvas of zeros, or a null pointer
 // when a side is ≤ 0, the size exceeds CANVAS_MAX_SIDE / CANVAS_MAX_PIXELS, or memory

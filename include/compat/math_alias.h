@@ -9,7 +9,24 @@
 #ifndef TINY3D_COMPAT_MATH_ALIAS_H
 #define TINY3D_COMPAT_MATH_ALIAS_H
 
+#include <cstddef>
+#include <type_traits>
+
 #include "../math3d.h"
+
+// The forms those programs rely on: plain aggregates (so (vec3_t){1, 2, 3}, {.x = 1} and
+// mat4_t m = {0} compile), x, y, z first, m[16] column-major, M_PI, the pointer normalise.
+static_assert(std::is_aggregate_v<vec3_t> && std::is_trivially_copyable_v<vec3_t>, "vec3_t must stay a plain aggregate");
+static_assert(std::is_same_v<decltype(vec3_t::x), float> && offsetof(vec3_t, x) == 0 &&
+                  offsetof(vec3_t, y) == sizeof(float) && offsetof(vec3_t, z) == 2 * sizeof(float),
+              "vec3_t must start with float x, y, z");
+static_assert(std::is_aggregate_v<mat4_t> && std::is_same_v<decltype(mat4_t::m), float[16]>,
+              "mat4_t must stay { float m[16]; }");
+static_assert(std::is_same_v<decltype(vec3_normalize_fast(static_cast<vec3_t *>(nullptr))), void>,
+              "the pointer form vec3_normalize_fast(vec3_t *)");
+#ifndef M_PI
+#error "math3d.h must make M_PI visible"
+#endif
 
 // Short type names some programs use.
 typedef vec3_t vec3;
