@@ -14,10 +14,11 @@ struct point2 {
     T x, y;
 };
 
-// A convex polygon of at most kMax vertices (a square cut by up to 4 half-planes has ≤ 8).
+// A convex polygon of at most kMax vertices: a square cut by up to 4 half-planes (each
+// cut adds at most one vertex to a convex polygon).
 template <class T>
 struct small_polygon {
-    static constexpr int kMax = 12;
+    static constexpr int kMax = 8;
     point2<T> v[kMax];
     int n = 0;
 };
@@ -99,6 +100,7 @@ T edge_disc_area(point2<T> p, point2<T> q, T r2) {
     if (a == 0) return 0;
     const T b = p.x * d.x + p.y * d.y;
     const T c = p.x * p.x + p.y * p.y - r2;
+    if (c <= 0 && q.x * q.x + q.y * q.y <= r2) return (p.x * q.y - p.y * q.x) / 2;  // inside: a triangle
     const T disc = b * b - a * c;
     if (disc <= 0) return sector_area<T, kLibm>(p, q, r2);  // the edge's line misses the circle
     const T s = std::sqrt(disc);
