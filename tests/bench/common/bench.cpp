@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "canvas.h"
+#include "chart.h"
 
 namespace bench {
 namespace {
@@ -89,7 +90,49 @@ std::string ratio_cell(double ratio) {
     return buf;
 }
 
+// The distinct values of one text field over the rows, joined by " / ".
+std::string distinct_joined(const std::vector<row> &rows, std::string row::*field) {
+    std::vector<std::string> seen;
+    for (const row &r : rows)
+        if (std::find(seen.begin(), seen.end(), r.*field) == seen.end()) seen.push_back(r.*field);
+    std::string out;
+    for (const std::string &s : seen) out += (out.empty() ? "" : " / ") + s;
+    return out;
+}
+
+constexpr int chart_width = 800, chart_height = 500;
+
 }  // namespace
+
+tiny3d::chart_spec chart_of(const std::vector<row> &rows, const std::string &title) {
+    tiny3d::chart_spec spec;
+    spec.title = title;
+    spec.x_title = "time per unit, " + distinct_joined(rows, &row::unit) + " (median; bar: min-max)";
+    spec.y_title = "error vs reference, " + distinct_joined(rows, &row::error_unit) + " (mean; bar: to max)";
+    for (const row &r : rows) {
+        tiny3d::chart_point p;
+        p.label = r.variant.find(r.kind) == std::string::npos ? r.variant + " [" + r.kind + "]" : r.variant;
+        p.x = r.time.median;
+        p.x_lo = r.time.min;
+        p.x_hi = r.time.max;
+        p.y = std::isfinite(r.error_mean) ? r.error_mean : r.error_max;
+        if (std::isnan(p.y) && r.kind == "reference") p.y = 0;  // exact by definition
+        if (std::isfinite(r.error_mean) && std::isfinite(r.error_max)) {
+            p.y_lo = r.error_mean;
+            p.y_hi = r.error_max;
+        }
+        spec.points.push_back(std::move(p));
+    }
+    return spec;
+}
+
+tiny3d::status write_chart(const std::string &path, const std::vector<row> &rows, const std::string &title) {
+    auto canvas = tiny3d::make_canvas(chart_width, chart_height);
+    if (!canvas) return canvas.to_status();
+    const auto layout = tiny3d::draw_chart(**canvas, chart_of(rows, title));
+    if (!layout) return layout.to_status();
+    return tiny3d::save_pgm(**canvas, path);
+}
 
 timing measure_ns(int repeats, double work_units, const std::function<void()> &fn) {
     using clock = std::chrono::steady_clock;
@@ -257,7 +300,9 @@ int report(const options &o, const std::string &family, const std::vector<row> &
     const std::string csv_path = o.out_dir + "/" + family + ".csv";
     if (const tiny3d::status s = tiny3d::write_file_atomic(csv_path, csv.data(), csv.size()); !s)
         return fail(s.message());
-    std::printf("wrote %s\n", csv_path.c_str());
+    const std::string chart_path = o.out_dir + "/" + family + ".pgm";
+    if (const tiny3d::status s = write_chart(chart_path, rows, chart_title); !s) return fail(s.message());
+    std::printf("wrote %s and %s\n", csv_path.c_str(), chart_path.c_str());
     std::fflush(stdout);
     return 0;
 }

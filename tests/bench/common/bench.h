@@ -27,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include "chart.h"
 #include "tiny3d_result.h"
 
 namespace bench {
@@ -98,6 +99,13 @@ std::string csv_text(const std::vector<row> &rows);
 std::vector<double> ratios_to_faithful(const std::vector<row> &rows);
 // The printed table (also used by the summary tool).
 std::string table_text(const std::vector<row> &rows);
+// The chart report() draws: x = time median (whisker min..max), y = error mean (whisker
+// mean..max; error max when there is no mean; a reference row without error is at 0, drawn
+// on the axis floor); legend = variant, plus " [kind]" when the
+// variant's name does not say it.
+tiny3d::chart_spec chart_of(const std::vector<row> &rows, const std::string &title);
+// Draws chart_of(rows, title) on an 800 × 500 canvas and saves it as PGM at `path`.
+tiny3d::status write_chart(const std::string &path, const std::vector<row> &rows, const std::string &title);
 // Reads csv_text's format back (the ratio column is recomputed, not read). Errors name
 // `path` and the 1-based line: wrong header, wrong field count, a number that is not one.
 tiny3d::result<std::vector<row>> parse_csv(const std::string &text, const std::string &path);
