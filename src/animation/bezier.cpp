@@ -173,21 +173,20 @@ result<looped_path> looped_path::from_segments(std::vector<cubic_bezier> segment
     return assemble(std::move(segments), samples_per_segment);
 }
 
-vec3_t looped_path::point(double u) const {
-    if (segments_.empty()) return {0.0f, 0.0f, 0.0f};
+namespace {
+// Evaluates `eval` (bezier_point or bezier_tangent) on the segment that u falls in.
+template <class Eval>
+vec3_t evaluate_wrapped(const std::vector<cubic_bezier> &segments, double u, Eval eval) {
+    if (segments.empty()) return {0.0f, 0.0f, 0.0f};
     std::size_t s;
     float t;
-    locate(u, segments_.size(), s, t);
-    return bezier_point(segments_[s], t);
+    locate(u, segments.size(), s, t);
+    return eval(segments[s], t);
 }
+}  // namespace
 
-vec3_t looped_path::tangent(double u) const {
-    if (segments_.empty()) return {0.0f, 0.0f, 0.0f};
-    std::size_t s;
-    float t;
-    locate(u, segments_.size(), s, t);
-    return bezier_tangent(segments_[s], t);
-}
+vec3_t looped_path::point(double u) const { return evaluate_wrapped(segments_, u, bezier_point); }
+vec3_t looped_path::tangent(double u) const { return evaluate_wrapped(segments_, u, bezier_tangent); }
 
 double looped_path::parameter_at_fraction(double f) const {
     const double wrapped = f - std::floor(f);
