@@ -88,7 +88,7 @@ struct light_rig {
 result<light_rig> make_light_rig(std::span<const light_t> lights, float ambient);
 
 // I(p, n) above for a point p and a UNIT normal n (pass (0, 0, 0) for "no normal": ambient
-// only). The per-pixel core: inline, no allocation, no branches beyond the light loop.
+// only). The per-pixel core: inline, no allocation.
 inline float shade_point(const light_rig &rig, vec3_t p, vec3_t unit_normal) {
     float sum = rig.ambient;
     for (int i = 0; i < rig.count; ++i) {
