@@ -1,11 +1,311 @@
 // raster.h — filled triangles: z-buffer, half-space and scan-line rasterizers, culling,
-// triangle clipping, shading levels, textures, transparency, tiled two-thread rendering.
-// Part of the renderer module (renderer.h includes it).
+// triangle clipping, shading levels, textures, transparency, tiled two-thread rendering,
+// and the PLY ray-cast lab (seed 002). Part of the renderer module (renderer.h includes it).
+//
+// Conventions (pinned by tests/raster_test.cpp):
+//  * Screen space: pixels, origin top-left, y down; pixel (x, y) covers [x, x+1) × [y, y+1)
+//    and is "covered" by a triangle when its CENTRE (x + 0.5, y + 0.5) is inside.
+//  * Vertices are snapped to a fixed-point grid of 1/16 pixel (RASTER_SUBPIXEL_BITS = 4)
+//    before coverage is decided; edge functions are exact integers, so the decision does
+//    not depend on triangle order, threads or band boundaries.
+//  * Top-left fill rule: a centre exactly on an edge belongs to the triangle when that edge
+//    is a top edge (horizontal, interior below) or a left edge (interior to its right).
+//    A mesh whose triangles share edges covers every pixel centre inside it exactly once.
+//  * Front faces are counter-clockwise in clip/NDC space (y up), which is clockwise on the
+//    y-down screen. Back-face culling removes the others.
+//  * Depth: window depth = 0.5·z_ndc + 0.5 (0 at the near plane, 1 at the far plane), a
+//    linear function of screen x, y (z/w is affine in screen space), stored as float.
+//  * Attributes: screen-space barycentrics give AFFINE interpolation; perspective-correct
+//    interpolation interpolates attr/w and 1/w and divides per pixel.
+//  * Skipped silently (documented, never an error): triangles with zero snapped area,
+//    any non-finite coordinate, or any screen coordinate beyond ±RASTER_MAX_COORD pixels
+//    (the clip stage of render_context never produces such).
 #ifndef TINY3D_RASTER_H
 #define TINY3D_RASTER_H
 
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
 #include "canvas.h"
+#include "lighting.h"
 #include "math3d.h"
 #include "mesh.h"
+#include "tiny3d_result.h"
+
+namespace tiny3d {
+
+inline constexpr int RASTER_SUBPIXEL_BITS = 4;                       // 1/16 px snapping
+inline constexpr int RASTER_SUBPIXEL_ONE = 1 << RASTER_SUBPIXEL_BITS;
+inline constexpr float RASTER_MAX_COORD = 1 << 22;                   // px, |x|, |y| limit
+
+// ---- depth buffer ---------------------------------------------------------------------
+
+// Depth comparison: a fragment passes when `fragment OP stored` holds.
+enum class depth_func { never, less, less_equal, equal, greater, greater_equal, not_equal, always };
+
+// Float depth per pixel in ONE contiguous row-major block. resize() reallocates only when
+// the pixel count grows; clear() never allocates.
+class zbuffer {
+public:
+    // Error (and unchanged buffer) when a side is ≤ 0 or the size exceeds the canvas limits.
+    status resize(int width, int height);
+    void clear(float depth = 1.0f);                          // every pixel := depth
+    void clear_rows(int y0, int y1, float depth = 1.0f);     // rows [y0, y1) only
+    int width() const { return width_; }
+    int height() const { return height_; }
+    float *row(int y) { return data_.data() + static_cast<std::size_t>(y) * width_; }
+    const float *row(int y) const { return data_.data() + static_cast<std::size_t>(y) * width_; }
+    float at(int x, int y) const { return row(y)[x]; }
+
+private:
+    int width_ = 0, height_ = 0;
+    std::vector<float> data_;
+};
+
+// ---- one triangle in screen space -----------------------------------------------------
+
+struct screen_vertex {
+    float x, y;    // pixels (centres at +0.5, y down)
+    float z;       // window depth 0..1
+    float inv_w;   // 1 / w_clip, > 0 (1 for a 2-D triangle)
+};
+
+// Which rows/columns a call may touch: [x0, x1) × [y0, y1), intersected with the target.
+struct pixel_rect {
+    int x0, y0, x1, y1;
+};
+
+// The snapped, oriented edge functions of one triangle, shared by every half-space path.
+// Built by triangle_setup(); `valid` is false for the skipped triangles listed above.
+enum class cull_mode { none, back, front };
+
+struct triangle_edges {
+    bool valid = false;
+    bool culled = false;        // rejected by the cull mode given to triangle_setup
+    bool front_facing = false;  // counter-clockwise in NDC (y up) = negative screen area
+    int min_x = 0, max_x = -1, min_y = 0, max_y = -1;  // covered-pixel bounds (inclusive)
+    // Edge k is opposite vertex k: E_k(px, py) = c[k] + a[k]·px + b[k]·py for pixel (px, py),
+    // positive inside, biased by −1 on non-top-left edges so "inside" is E_k ≥ 0.
+    // (The arrays below are left uninitialised when !valid: setup is on the hot path.)
+    std::int64_t a[3], b[3], c[3];
+    std::int64_t area2 = 0;  // twice the snapped area, in (1/16 px)², > 0
+    std::int64_t span_x = 0, span_y = 0;  // snapped vertex box size, 1/16 px
+    double x[3], y[3];                    // snapped vertices, px
+};
+
+// Snaps and orients a screen triangle, clamps its pixel bounds to `clip`. With a cull mode,
+// a triangle facing the culled way comes back invalid with `culled` set (nothing else
+// computed: the cheap early-out).
+triangle_edges triangle_setup(const screen_vertex &v0, const screen_vertex &v1,
+                              const screen_vertex &v2, pixel_rect clip, cull_mode cull = cull_mode::none);
+
+// Calls fragment(x, y, l0, l1, l2) for every covered pixel of the triangle inside `clip`,
+// rows top to bottom, left to right; l0..l2 are the screen-space (affine) barycentrics of
+// the pixel centre w.r.t. the snapped vertices v0, v1, v2 (sum 1). Either winding.
+// Exact 64-bit edge functions; the reference for the faster fills below.
+template <class Fragment>
+void rasterize_triangle(const screen_vertex &v0, const screen_vertex &v1, const screen_vertex &v2,
+                        pixel_rect clip, Fragment &&fragment) {
+    const triangle_edges t = triangle_setup(v0, v1, v2, clip);
+    if (!t.valid) return;
+    const double inv_area = 1.0 / static_cast<double>(t.area2);
+    for (int y = t.min_y; y <= t.max_y; ++y) {
+        std::int64_t e0 = t.c[0] + t.a[0] * t.min_x + t.b[0] * y;
+        std::int64_t e1 = t.c[1] + t.a[1] * t.min_x + t.b[1] * y;
+        std::int64_t e2 = t.c[2] + t.a[2] * t.min_x + t.b[2] * y;
+        for (int x = t.min_x; x <= t.max_x; ++x, e0 += t.a[0], e1 += t.a[1], e2 += t.a[2]) {
+            if ((e0 | e1 | e2) < 0) continue;
+            // Unbiased edge values (the bias of −1 is < 1 area unit: barycentrics within 1e-9).
+            const double l0 = static_cast<double>(e0) * inv_area;
+            const double l1 = static_cast<double>(e1) * inv_area;
+            fragment(x, y, static_cast<float>(l0), static_cast<float>(l1),
+                     static_cast<float>(1.0 - l0 - l1));
+        }
+    }
+}
+
+// Half-space fill with depth test and an affine (screen-linear) intensity: writes
+// intensity (clamped to 0..1) and depth where the test passes (depth written when
+// depth_write). SSE2 4-wide with 32-bit edge functions when the triangle spans < 2040 px,
+// 64-bit scalar otherwise (same coverage). `depth` may be null (no test, no write).
+void fill_triangle(canvas_t &canvas, zbuffer *depth, const screen_vertex v[3],
+                   const float intensity[3], depth_func test, bool depth_write, pixel_rect clip);
+
+// The faithful variant (seed 003): sort the vertices by y, walk the long and the two short
+// edges row by row (pixel-centre rows), fill each span between the edge crossings;
+// intensity and depth by barycentrics per pixel. Float arithmetic on unsnapped vertices:
+// shared edges can leave gaps or double hits (measured by the benchmark).
+void fill_triangle_scanline(canvas_t &canvas, zbuffer *depth, const screen_vertex v[3],
+                            const float intensity[3], depth_func test);
+
+// ---- clipping ---------------------------------------------------------------------------
+
+// A clip-space vertex with interpolated attributes (intensity, normal, uv, …).
+inline constexpr int CLIP_MAX_ATTRIBUTES = 12;
+struct clip_vertex {
+    vec4_t position;  // clip space (OpenGL): visible when −w ≤ x, y, z ≤ w
+    std::array<float, CLIP_MAX_ATTRIBUTES> attr;
+};
+
+// Planes a polygon is clipped against (bit flags). The x/y planes are a guard band:
+// |x| ≤ guard·w, |y| ≤ guard·w.
+enum clip_plane : unsigned {
+    CLIP_NEAR = 1u, CLIP_FAR = 2u, CLIP_LEFT = 4u, CLIP_RIGHT = 8u, CLIP_BOTTOM = 16u, CLIP_TOP = 32u
+};
+inline constexpr int CLIP_MAX_VERTICES = 9;  // a triangle clipped by 6 planes
+
+// Outcode of a clip-space position: the CLIP_* planes it lies outside of.
+unsigned clip_outcode(vec4_t p, float guard);
+
+// Sutherland–Hodgman: clips the convex polygon in[0..n) against every plane in `planes`
+// (attributes interpolated linearly in clip space, which is perspective-correct), writing
+// the result to out (capacity CLIP_MAX_VERTICES). Returns the vertex count (0 = all
+// clipped away, else ≥ 3). n must be ≤ 3 (a triangle) — larger polygons return 0.
+int clip_polygon(const clip_vertex *in, int n, unsigned planes, float guard, int attr_count,
+                 clip_vertex *out);
+
+// ---- textures -------------------------------------------------------------------------
+
+enum class texture_filter { nearest, bilinear };
+enum class texture_wrap { repeat, clamp };
+
+// A grey texture: width × height texels in 0..1, row-major, row 0 = v near 0.
+// Texel (i, j) has its centre at u = (i + 0.5)/width, v = (j + 0.5)/height.
+struct texture {
+    int width = 0, height = 0;
+    std::vector<float> texels;
+};
+
+// A texture from a canvas (copied). Error if the canvas is empty.
+result<texture> texture_from_canvas(const canvas_t &canvas);
+// Loads a PGM (P2/P5) as a texture; errors name the file and problem.
+result<texture> load_texture_pgm(const std::string &path);
+
+// Samples at (u, v) (1 = the full texture). repeat wraps u, v modulo 1; clamp holds the
+// edge texels. Non-finite u or v returns 0.
+float texture_sample(const texture &tex, float u, float v, texture_filter filter, texture_wrap wrap);
+
+// ---- meshes prepared for rasterization and the render context --------------------------
+
+// Triangles over shared vertices, each vertex with a position, unit normal and uv.
+struct raster_mesh {
+    std::vector<vec3_t> positions;
+    std::vector<vec3_t> normals;  // one per position (unit), used by Gouraud / Phong
+    std::vector<vec2> uvs;        // one per position (zero when the mesh has none)
+    std::vector<std::array<std::uint32_t, 3>> triangles;  // counter-clockwise from outside
+    vec3_t bound_center{0, 0, 0};
+    float bound_radius = 0;       // bounding sphere, for frustum culling
+};
+
+// From a tiny3d::mesh: faces fan-triangulated; positions shared when the mesh has no
+// per-corner attributes, otherwise one vertex per corner. `vertex_normals` (one per
+// position, e.g. mesh_vertex_normals(m)) is used when the mesh has no corner normals; pass
+// an empty span to use the face normal of each corner's face. Error when an index is out of
+// range or the normals count is wrong.
+result<raster_mesh> make_raster_mesh(const mesh &m, std::span<const vec3_t> vertex_normals);
+
+enum class shading { flat, gouraud, phong };
+
+// What one draw call does. Shading (per the quality level), with the lighting module's
+// model I = clamp01(ambient + Σ_k intensity_k · max(0, n · L_k)) in world space:
+//   flat:    shade_flat of the world-space triangle, once per triangle;
+//   gouraud: shade_gouraud_vertex per vertex, interpolated (screen-affine, like Scene S);
+//   phong:   normal and position interpolated per pixel, shade_phong_pixel.
+// With a texture, the shaded intensity is multiplied by the sampled texel (uv interpolated
+// perspective-correct or affine). alpha < 1: the triangles are queued and drawn at
+// end_frame(), after every opaque one, sorted back to front by mean depth (stable), blended
+// dst = alpha·src + (1 − alpha)·dst, depth tested but not written.
+struct draw_params {
+    mat4_t model;            // object → world
+    mat4_t view_projection;  // world → clip (projection · view)
+    light_rig lights;        // make_light_rig(...)
+    shading shade = shading::gouraud;
+    cull_mode cull = cull_mode::back;
+    depth_func depth = depth_func::less;
+    float alpha = 1.0f;                            // < 1: translucent
+    const texture *tex = nullptr;                  // optional, must outlive end_frame()
+    texture_filter filter = texture_filter::bilinear;
+    texture_wrap wrap = texture_wrap::repeat;
+    bool perspective_correct = true;               // uv / normal interpolation
+};
+
+struct frame_stats {
+    std::size_t triangles_in = 0;       // submitted
+    std::size_t culled_frustum = 0;     // whole draws rejected by bounding sphere, in triangles
+    std::size_t culled_backface = 0;
+    std::size_t clipped = 0;            // triangles that needed Sutherland–Hodgman
+    std::size_t rasterized = 0;         // (sub-)triangles sent to the fill
+};
+
+// Owns every reusable buffer (depth, transformed vertices, triangle setups, the
+// translucent queue) and a worker pool of threads − 1 threads created once. A frame:
+//   begin_frame(canvas) → draw(...)* → end_frame().
+// The canvas is split into horizontal bands, one per thread; each band sees the triangles
+// in submission order, so the image is bit-identical for any thread count.
+// No allocation per frame once buffers have grown to the scene's size.
+class render_context {
+public:
+    explicit render_context(int threads = 1);  // clamped to 1..16
+    ~render_context();
+    render_context(const render_context &) = delete;
+    render_context &operator=(const render_context &) = delete;
+
+    int threads() const;
+    // Clears colour to clear_intensity and depth to 1. Error if the canvas is invalid.
+    status begin_frame(canvas_t &target, float clear_intensity = 0.0f);
+    // Transforms, culls, clips, shades and rasterizes (opaque) or queues (alpha < 1) the
+    // mesh. Needs begin_frame first (otherwise does nothing).
+    void draw(const raster_mesh &mesh, const draw_params &params);
+    // Draws the queued translucent triangles back to front.
+    void end_frame();
+    const zbuffer &depth() const;
+    const frame_stats &stats() const;
+
+private:
+    struct impl;
+    std::unique_ptr<impl> impl_;
+};
+
+// ---- the PLY ray-cast lab (seed 002) ----------------------------------------------------
+
+inline constexpr int LAB_IMAGE_SIDE = 256;
+
+// The lab's camera: bounding box centre and extent E, the rotated camera and up vectors
+// (eq. 1–4) and the image rectangle (eq. 5–12), in double precision.
+struct lab_camera {
+    double center[3], extent;
+    double camera[3], up[3];
+    double left[3], right[3], top[3], bottom[3], topleft[3];
+};
+
+// Builds the lab camera for mesh positions and rotation angles in RADIANS (X, then Y,
+// then Z, eq. 1–3 applied as Rz·Ry·Rx). Error when the mesh has no finite position.
+result<lab_camera> ply_lab_camera(const mesh &m, double rx, double ry, double rz);
+
+// A lab image: side × side bytes, row-major, 0 = background, 155 + (i mod 100) for the
+// triangle i (faces fan-split in file order) nearest along the pixel's ray.
+struct lab_image {
+    int width = 0, height = 0;
+    std::vector<std::uint8_t> pixels;
+};
+
+// The faithful method: for each pixel the ray through eq. 13, every triangle tested with
+// eq. 14–21, z-buffer on n/d (a later triangle wins exact ties, as the lab's "greater
+// than" test implies); rays within 1e-9 relative of parallel to a plane skip it.
+lab_image raycast_lab(const mesh &m, const lab_camera &cam, int side = LAB_IMAGE_SIDE);
+
+// The fast path: the same per-pixel tests, but each triangle only visits the pixels of its
+// projected bounding box (projection through the lab camera, widened by 2 px). The image
+// is identical to raycast_lab's (same arithmetic, same order per pixel).
+lab_image render_lab_fast(const mesh &m, const lab_camera &cam, int side = LAB_IMAGE_SIDE);
+
+// Writes the lab image as P6 PPM (grey: r = g = b) or, when path ends in ".pgm", as P5.
+status save_lab_image(const lab_image &img, const std::string &path);
+
+}  // namespace tiny3d
 
 #endif

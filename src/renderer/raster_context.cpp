@@ -1,0 +1,443 @@
+// raster_context.cpp — the render context: worker pool, vertex transform and shading,
+// culling, clipping, binning into horizontal bands, band-parallel rasterization, the
+// translucent queue. Every buffer is owned here and reused from frame to frame.
+#include <algorithm>
+#include <cmath>
+#include <condition_variable>
+#include <mutex>
+#include <thread>
+
+#include "raster_internal.h"
+
+namespace tiny3d {
+
+namespace {
+
+constexpr int MAX_THREADS = 16;
+// Guard band: the x/y clip planes sit at |x|, |y| ≤ guard·w, chosen so that the whole band
+// spans fewer pixels than the 32-bit fill allows; never tighter than the frustum itself.
+constexpr float GUARD_SPAN_PIXELS = 2000.0f;
+constexpr float MAX_GUARD = 4.0f;
+
+// A fixed set of worker threads; run(job) calls job(i) for i = 0..n−1, i = 0 on the caller,
+// and returns when all are done. No allocation per run.
+class worker_pool {
+public:
+    explicit worker_pool(int threads) {
+        for (int i = 1; i < threads; ++i) workers_.emplace_back([this, i] { loop(i); });
+    }
+    ~worker_pool() {
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            stop_ = true;
+        }
+        wake_.notify_all();
+        for (std::thread &t : workers_) t.join();
+    }
+    int size() const { return static_cast<int>(workers_.size()) + 1; }
+
+    template <class Job>
+    void run(Job &job) {
+        if (workers_.empty()) {
+            job(0);
+            return;
+        }
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            call_ = [](void *j, int i) { (*static_cast<Job *>(j))(i); };
+            job_ = &job;
+            pending_ = static_cast<int>(workers_.size());
+            ++generation_;
+        }
+        wake_.notify_all();
+        job(0);
+        std::unique_lock<std::mutex> lock(mutex_);
+        done_.wait(lock, [this] { return pending_ == 0; });
+    }
+
+private:
+    void loop(int index) {
+        unsigned long long seen = 0;
+        for (;;) {
+            void (*call)(void *, int);
+            void *job;
+            {
+                std::unique_lock<std::mutex> lock(mutex_);
+                wake_.wait(lock, [&] { return stop_ || generation_ != seen; });
+                if (stop_) return;
+                seen = generation_;
+                call = call_;
+                job = job_;
+            }
+            call(job, index);
+            std::lock_guard<std::mutex> lock(mutex_);
+            if (--pending_ == 0) done_.notify_one();
+        }
+    }
+
+    std::vector<std::thread> workers_;
+    std::mutex mutex_;
+    std::condition_variable wake_, done_;
+    void (*call_)(void *, int) = nullptr;
+    void *job_ = nullptr;
+    unsigned long long generation_ = 0;
+    int pending_ = 0;
+    bool stop_ = false;
+};
+
+// A transformed vertex.
+struct xvertex {
+    vec4_t clip;
+    screen_vertex screen;  // valid when outcode has no CLIP_NEAR bit (w > 0)
+    float shade;           // Gouraud intensity (or 0)
+    unsigned outcode;
+};
+
+// Per-vertex attributes of the generic (per-pixel) path, in clip_vertex::attr order.
+enum attr_slot { ATTR_PX, ATTR_PY, ATTR_PZ, ATTR_NX, ATTR_NY, ATTR_NZ, ATTR_U, ATTR_V, ATTR_SHADE, ATTR_COUNT };
+static_assert(ATTR_COUNT <= CLIP_MAX_ATTRIBUTES);
+
+// A triangle for the per-pixel path (Phong, textures, translucency).
+struct generic_triangle {
+    screen_vertex v[3];
+    float attr[3][ATTR_COUNT];
+    float mean_depth;
+    std::uint32_t state;     // index into the frame's draw states
+    std::uint32_t sequence;  // submission order among the translucent ones (sort tie-break)
+};
+
+struct draw_state {
+    draw_params params;
+};
+
+screen_vertex to_screen(vec4_t c, float half_w, float half_h) {
+    const float inv_w = 1.0f / c.w;
+    return {(c.x * inv_w + 1.0f) * half_w, (1.0f - c.y * inv_w) * half_h, 0.5f * c.z * inv_w + 0.5f, inv_w};
+}
+
+vec4_t mul(const mat4_t &m, vec3_t p) {
+    return {m.m[0] * p.x + m.m[4] * p.y + m.m[8] * p.z + m.m[12], m.m[1] * p.x + m.m[5] * p.y + m.m[9] * p.z + m.m[13],
+            m.m[2] * p.x + m.m[6] * p.y + m.m[10] * p.z + m.m[14], m.m[3] * p.x + m.m[7] * p.y + m.m[11] * p.z + m.m[15]};
+}
+
+vec3_t mul3(const mat4_t &m, vec3_t p) {
+    const vec4_t r = mul(m, p);
+    return {r.x, r.y, r.z};
+}
+
+// Sphere (object space) entirely outside one frustum plane of clip = M·p? Planes from the
+// rows of M (Gribb–Hartmann): row3 ± row_k, normalised.
+bool sphere_outside(const mat4_t &m, vec3_t c, float radius) {
+    auto row = [&](int r) { return vec4_t{m.m[r], m.m[4 + r], m.m[8 + r], m.m[12 + r]}; };
+    const vec4_t w = row(3);
+    for (int k = 0; k < 3; ++k) {
+        const vec4_t rk = row(k);
+        for (float sign : {1.0f, -1.0f}) {
+            const vec4_t p{w.x + sign * rk.x, w.y + sign * rk.y, w.z + sign * rk.z, w.w + sign * rk.w};
+            const float len = std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z);
+            if (!(len > 0.0f)) continue;
+            if ((p.x * c.x + p.y * c.y + p.z * c.z + p.w) / len < -radius) return true;
+        }
+    }
+    return false;
+}
+
+}  // namespace
+
+struct render_context::impl {
+    explicit impl(int threads) : pool(threads) {}
+
+    worker_pool pool;
+    canvas_t *target = nullptr;
+    zbuffer depth;
+    bool pending_clear = false;
+    float clear_intensity = 0.0f;
+    float guard = 1.0f;
+    frame_stats stats;
+
+    std::vector<xvertex> vertices;
+    std::vector<float> vertex_attr;  // ATTR_COUNT per vertex (generic path only)
+    struct segment {                 // what one phase-1 worker produced
+        std::vector<detail::fast_triangle> fast;
+        std::vector<triangle_edges> wide;
+        std::vector<generic_triangle> generic;
+        std::vector<std::uint32_t> bins[MAX_THREADS];  // fast-triangle indices per band
+        frame_stats stats;
+    };
+    segment segments[MAX_THREADS];
+    std::vector<draw_state> states;              // this frame's draw calls
+    std::vector<generic_triangle> translucent;   // queued for end_frame
+
+    int bands() const { return pool.size(); }
+    int band_y0(int b) const { return static_cast<int>(static_cast<long long>(target->height) * b / bands()); }
+
+    void clear_band(int b) {
+        const int y0 = band_y0(b), y1 = band_y0(b + 1);
+        if (y0 >= y1) return;
+        detail::fill_floats(target->pixels[y0], static_cast<std::size_t>(y1 - y0) * target->width, clear_intensity);
+        depth.clear_rows(y0, y1, 1.0f);
+    }
+
+    void transform(const raster_mesh &m, const draw_params &p, const mat4_t &mvp, bool generic, std::size_t v0,
+                   std::size_t v1);
+    void setup(const raster_mesh &m, const draw_params &p, std::uint32_t state, bool generic, std::size_t t0,
+               std::size_t t1, segment &out);
+    // Appends a fast triangle and its band bins (skips empty ones).
+    void add_fast(const triangle_edges &t, const screen_vertex v[3], const float shade[3], segment &out) {
+        detail::fast_triangle f;
+        if (!detail::make_fast_triangle(t, v, shade, static_cast<std::int32_t>(out.wide.size()), f)) return;
+        if (f.wide >= 0) out.wide.push_back(t);
+        const std::uint32_t index = static_cast<std::uint32_t>(out.fast.size());
+        out.fast.push_back(f);
+        for (int b = 0; b < bands(); ++b)
+            if (f.min_y < band_y0(b + 1) && f.max_y >= band_y0(b)) out.bins[b].push_back(index);
+    }
+    void emit(const clip_vertex *poly, int n, const draw_params &p, std::uint32_t state, bool generic, segment &out);
+    void draw_generic(const generic_triangle &g, int y0, int y1);
+};
+
+// ---- phase 1a: vertices -------------------------------------------------------------------
+
+void render_context::impl::transform(const raster_mesh &m, const draw_params &p, const mat4_t &mvp, bool generic,
+                                     std::size_t v0, std::size_t v1) {
+    const float half_w = 0.5f * static_cast<float>(target->width), half_h = 0.5f * static_cast<float>(target->height);
+    const normal_transform nt = make_normal_transform(p.model);
+    const bool gouraud = p.shade == shading::gouraud;
+    for (std::size_t i = v0; i < v1; ++i) {
+        xvertex &x = vertices[i];
+        x.clip = mul(mvp, m.positions[i]);
+        x.outcode = clip_outcode(x.clip, guard);
+        if (!(x.outcode & CLIP_NEAR)) x.screen = to_screen(x.clip, half_w, half_h);
+        vec3_t world{0, 0, 0}, normal{0, 0, 0};
+        if (gouraud || generic) {
+            world = mul3(p.model, m.positions[i]);
+            normal = apply_normal_transform(nt, m.normals[i]);
+        }
+        x.shade = gouraud ? shade_gouraud_vertex(p.lights, world, normal) : 0.0f;
+        if (generic) {
+            float *a = &vertex_attr[i * ATTR_COUNT];
+            a[ATTR_PX] = world.x, a[ATTR_PY] = world.y, a[ATTR_PZ] = world.z;
+            a[ATTR_NX] = normal.x, a[ATTR_NY] = normal.y, a[ATTR_NZ] = normal.z;
+            a[ATTR_U] = m.uvs[i].x, a[ATTR_V] = m.uvs[i].y;
+            a[ATTR_SHADE] = x.shade;
+        }
+    }
+}
+
+// ---- phase 1b: triangles -------------------------------------------------------------------
+
+// One convex polygon (already inside the near/far planes and the guard band) as a fan.
+void render_context::impl::emit(const clip_vertex *poly, int n, const draw_params &p, std::uint32_t state,
+                                bool generic, segment &out) {
+    const float half_w = 0.5f * static_cast<float>(target->width), half_h = 0.5f * static_cast<float>(target->height);
+    const pixel_rect full{0, 0, target->width, target->height};
+    for (int k = 1; k + 1 < n; ++k) {
+        const clip_vertex *c[3] = {&poly[0], &poly[k], &poly[k + 1]};
+        const screen_vertex v[3] = {to_screen(c[0]->position, half_w, half_h), to_screen(c[1]->position, half_w, half_h),
+                                    to_screen(c[2]->position, half_w, half_h)};
+        const triangle_edges t = triangle_setup(v[0], v[1], v[2], full, p.cull);
+        if (!t.valid) {
+            out.stats.culled_backface += t.culled;
+            continue;
+        }
+        ++out.stats.rasterized;
+        if (generic) {
+            generic_triangle g;
+            for (int j = 0; j < 3; ++j) {
+                g.v[j] = v[j];
+                for (int a = 0; a < ATTR_COUNT; ++a) g.attr[j][a] = c[j]->attr[a];
+            }
+            g.mean_depth = (v[0].z + v[1].z + v[2].z) / 3.0f;
+            g.state = state;
+            g.sequence = 0;
+            out.generic.push_back(g);
+            continue;
+        }
+        const float shade[3] = {c[0]->attr[ATTR_SHADE], c[1]->attr[ATTR_SHADE], c[2]->attr[ATTR_SHADE]};
+        add_fast(t, v, shade, out);
+    }
+}
+
+void render_context::impl::setup(const raster_mesh &m, const draw_params &p, std::uint32_t state, bool generic,
+                                 std::size_t t0, std::size_t t1, segment &out) {
+    const bool flat = p.shade == shading::flat;
+    const pixel_rect full{0, 0, target->width, target->height};
+    for (std::size_t i = t0; i < t1; ++i) {
+        const std::array<std::uint32_t, 3> &tri = m.triangles[i];
+        const xvertex &a = vertices[tri[0]], &b = vertices[tri[1]], &c = vertices[tri[2]];
+        if (a.outcode & b.outcode & c.outcode) continue;  // all outside one plane
+        float flat_shade = 0.0f;
+        if (flat) flat_shade = shade_flat(p.lights, mul3(p.model, m.positions[tri[0]]), mul3(p.model, m.positions[tri[1]]),
+                                          mul3(p.model, m.positions[tri[2]]));
+        if ((a.outcode | b.outcode | c.outcode) == 0 && !generic) {
+            // The common case: no clipping, straight to the fast setup.
+            const screen_vertex v[3] = {a.screen, b.screen, c.screen};
+            const triangle_edges t = triangle_setup(v[0], v[1], v[2], full, p.cull);
+            if (!t.valid) {
+                out.stats.culled_backface += t.culled;
+                continue;
+            }
+            ++out.stats.rasterized;
+            const float shade[3] = {flat ? flat_shade : a.shade, flat ? flat_shade : b.shade, flat ? flat_shade : c.shade};
+            add_fast(t, v, shade, out);
+            continue;
+        }
+        clip_vertex in[3];
+        for (int j = 0; j < 3; ++j) {
+            const xvertex &x = vertices[tri[j]];
+            in[j].position = x.clip;
+            in[j].attr.fill(0.0f);
+            if (generic)
+                for (int s = 0; s < ATTR_COUNT; ++s) in[j].attr[s] = vertex_attr[tri[j] * ATTR_COUNT + s];
+            in[j].attr[ATTR_SHADE] = flat ? flat_shade : x.shade;
+        }
+        const unsigned planes = a.outcode | b.outcode | c.outcode;
+        if (planes) ++out.stats.clipped;
+        clip_vertex poly[CLIP_MAX_VERTICES];
+        const int n = planes ? clip_polygon(in, 3, planes, guard, ATTR_COUNT, poly) : 3;
+        emit(planes ? poly : in, n, p, state, generic, out);
+    }
+}
+
+// ---- phase 2: per-pixel path ----------------------------------------------------------------
+
+void render_context::impl::draw_generic(const generic_triangle &g, int y0, int y1) {
+    const draw_params &p = states[g.state].params;
+    const bool translucent = p.alpha < 1.0f;
+    const float alpha = std::clamp(p.alpha, 0.0f, 1.0f);
+    const pixel_rect band{0, y0, target->width, y1};
+    rasterize_triangle(g.v[0], g.v[1], g.v[2], band, [&](int x, int y, float l0, float l1, float l2) {
+        const float z = l0 * g.v[0].z + l1 * g.v[1].z + l2 * g.v[2].z;
+        float *zp = depth.row(y) + x;
+        if (!detail::depth_passes(p.depth, z, *zp)) return;
+        // Perspective-correct weights: l_k/w_k normalised (attr/w and 1/w interpolated).
+        float w0 = l0, w1 = l1, w2 = l2;
+        if (p.perspective_correct) {
+            w0 = l0 * g.v[0].inv_w, w1 = l1 * g.v[1].inv_w, w2 = l2 * g.v[2].inv_w;
+            const float s = 1.0f / (w0 + w1 + w2);
+            w0 *= s, w1 *= s, w2 *= s;
+        }
+        auto lerp = [&](int slot) { return w0 * g.attr[0][slot] + w1 * g.attr[1][slot] + w2 * g.attr[2][slot]; };
+        float shade;
+        if (p.shade == shading::phong)
+            shade = shade_phong_pixel(p.lights, {lerp(ATTR_PX), lerp(ATTR_PY), lerp(ATTR_PZ)},
+                                      {lerp(ATTR_NX), lerp(ATTR_NY), lerp(ATTR_NZ)});
+        else shade = lerp(ATTR_SHADE);
+        if (p.tex) shade *= texture_sample(*p.tex, lerp(ATTR_U), lerp(ATTR_V), p.filter, p.wrap);
+        float &dst = target->pixels[y][x];
+        if (translucent) {
+            dst = detail::clamp01(alpha * shade + (1.0f - alpha) * dst);
+        } else {
+            dst = detail::clamp01(shade);
+            *zp = z;
+        }
+    });
+}
+
+// ---- the public class -------------------------------------------------------------------------
+
+render_context::render_context(int threads) : impl_(std::make_unique<impl>(std::clamp(threads, 1, MAX_THREADS))) {}
+render_context::~render_context() = default;
+int render_context::threads() const { return impl_->pool.size(); }
+const zbuffer &render_context::depth() const { return impl_->depth; }
+const frame_stats &render_context::stats() const { return impl_->stats; }
+
+status render_context::begin_frame(canvas_t &target, float clear_intensity) {
+    impl &s = *impl_;
+    if (!target.pixels || !target.data) return error{"", 0, -1, "render_context: canvas has no pixels"};
+    const status size_ok = s.depth.resize(target.width, target.height);
+    if (!size_ok) return size_ok;
+    s.target = &target;
+    s.clear_intensity = detail::clamp01(clear_intensity);
+    s.pending_clear = true;
+    s.stats = {};
+    s.states.clear();
+    s.translucent.clear();
+    s.guard = std::clamp(GUARD_SPAN_PIXELS / static_cast<float>(std::max(target.width, target.height)), 1.0f, MAX_GUARD);
+    return {};
+}
+
+void render_context::draw(const raster_mesh &mesh, const draw_params &params) {
+    impl &s = *impl_;
+    if (!s.target || mesh.positions.size() != mesh.normals.size() || mesh.positions.size() != mesh.uvs.size()) return;
+    s.stats.triangles_in += mesh.triangles.size();
+    const mat4_t mvp = mat4_multiply(params.view_projection, params.model);
+    const bool outside = sphere_outside(mvp, mesh.bound_center, mesh.bound_radius);
+    if (outside) {
+        s.stats.culled_frustum += mesh.triangles.size();
+        return;
+    }
+    for (const auto &t : mesh.triangles)
+        if (t[0] >= mesh.positions.size() || t[1] >= mesh.positions.size() || t[2] >= mesh.positions.size()) return;
+    const bool generic = params.shade == shading::phong || params.tex != nullptr || params.alpha < 1.0f;
+    const std::uint32_t state = static_cast<std::uint32_t>(s.states.size());
+    s.states.push_back({params});
+    const std::size_t nv = mesh.positions.size();
+    if (s.vertices.size() < nv) s.vertices.resize(nv);
+    if (generic && s.vertex_attr.size() < nv * ATTR_COUNT) s.vertex_attr.resize(nv * ATTR_COUNT);
+    const int n = s.pool.size();
+    const std::size_t nt = mesh.triangles.size();
+    auto phase_vertices = [&](int t) {
+        s.transform(mesh, params, mvp, generic, nv * t / n, nv * (t + 1) / n);
+    };
+    s.pool.run(phase_vertices);
+    auto phase_triangles = [&](int t) {
+        impl::segment &seg = s.segments[t];
+        seg.fast.clear();
+        seg.wide.clear();
+        seg.generic.clear();
+        seg.stats = {};
+        for (int b = 0; b < n; ++b) seg.bins[b].clear();
+        s.setup(mesh, params, state, generic, nt * t / n, nt * (t + 1) / n, seg);
+    };
+    s.pool.run(phase_triangles);
+    if (params.alpha < 1.0f) {
+        for (int t = 0; t < n; ++t)
+            for (generic_triangle g : s.segments[t].generic) {
+                g.sequence = static_cast<std::uint32_t>(s.translucent.size());
+                s.translucent.push_back(g);
+            }
+    }
+    auto phase_raster = [&](int band) {
+        const int y0 = s.band_y0(band), y1 = s.band_y0(band + 1);
+        if (s.pending_clear) s.clear_band(band);
+        for (int t = 0; t < n; ++t) {
+            const impl::segment &seg = s.segments[t];
+            for (std::uint32_t index : seg.bins[band]) {
+                const detail::fast_triangle &f = seg.fast[index];
+                detail::fill_fast_rows(*s.target, &s.depth, f, f.wide >= 0 ? &seg.wide[f.wide] : nullptr, params.depth,
+                                       true, y0, y1);
+            }
+            if (params.alpha >= 1.0f)
+                for (const generic_triangle &g : seg.generic) s.draw_generic(g, y0, y1);
+        }
+    };
+    s.pool.run(phase_raster);
+    s.pending_clear = false;
+    for (int t = 0; t < n; ++t) {
+        const frame_stats &st = s.segments[t].stats;
+        s.stats.culled_backface += st.culled_backface;
+        s.stats.clipped += st.clipped;
+        s.stats.rasterized += st.rasterized;
+    }
+}
+
+void render_context::end_frame() {
+    impl &s = *impl_;
+    if (!s.target) return;
+    // Back to front; equal depths keep submission order (std::sort: no temporary buffer).
+    std::sort(s.translucent.begin(), s.translucent.end(), [](const generic_triangle &a, const generic_triangle &b) {
+        return a.mean_depth != b.mean_depth ? a.mean_depth > b.mean_depth : a.sequence < b.sequence;
+    });
+    auto phase = [&](int band) {
+        const int y0 = s.band_y0(band), y1 = s.band_y0(band + 1);
+        if (s.pending_clear) s.clear_band(band);
+        for (const generic_triangle &g : s.translucent) s.draw_generic(g, y0, y1);
+    };
+    s.pool.run(phase);
+    s.pending_clear = false;
+    s.translucent.clear();
+    s.target = nullptr;
+}
+
+}  // namespace tiny3d

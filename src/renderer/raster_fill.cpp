@@ -1,0 +1,366 @@
+// raster_fill.cpp — triangle setup (snapping, orientation, top-left bias), the half-space
+// fill with depth and affine intensity (SSE2 4-wide, scalar 64-bit fallback), and the
+// faithful scan-line fill of seed 003.
+#include <algorithm>
+#include <cmath>
+
+#include "raster_internal.h"
+
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
+
+namespace tiny3d {
+
+namespace {
+
+constexpr std::int64_t HALF_SUBPIXEL = RASTER_SUBPIXEL_ONE / 2;  // pixel centre offset
+
+// Round to the nearest 1/16 pixel (ties to even). |x| ≤ RASTER_MAX_COORD, so x·16 fits.
+inline std::int64_t snap(float x) {
+#ifdef __SSE2__
+    return _mm_cvtss_si32(_mm_set_ss(x * static_cast<float>(RASTER_SUBPIXEL_ONE)));
+#else
+    return std::lrint(x * static_cast<float>(RASTER_SUBPIXEL_ONE));
+#endif
+}
+
+bool usable(const screen_vertex &v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::fabs(v.x) <= RASTER_MAX_COORD &&
+           std::fabs(v.y) <= RASTER_MAX_COORD;
+}
+
+}  // namespace
+
+triangle_edges triangle_setup(const screen_vertex &v0, const screen_vertex &v1, const screen_vertex &v2,
+                              pixel_rect clip, cull_mode cull) {
+    triangle_edges t;
+    if (!usable(v0) || !usable(v1) || !usable(v2)) return t;
+    const screen_vertex *v[3] = {&v0, &v1, &v2};
+    std::int64_t X[3], Y[3];
+    for (int k = 0; k < 3; ++k) {
+        X[k] = snap(v[k]->x);
+        Y[k] = snap(v[k]->y);
+    }
+    const std::int64_t area2 = (X[1] - X[0]) * (Y[2] - Y[0]) - (Y[1] - Y[0]) * (X[2] - X[0]);
+    if (area2 == 0) return t;
+    t.front_facing = area2 < 0;
+    if ((cull == cull_mode::back && !t.front_facing) || (cull == cull_mode::front && t.front_facing)) {
+        t.culled = true;
+        return t;
+    }
+    const std::int64_t s = area2 > 0 ? 1 : -1;  // orient so that inside is positive
+    t.area2 = area2 * s;
+    for (int k = 0; k < 3; ++k) {
+        const int ia = k == 2 ? 0 : k + 1, ib = k == 0 ? 2 : k - 1;  // edge opposite vertex k
+        const std::int64_t dx = s * (X[ib] - X[ia]), dy = s * (Y[ib] - Y[ia]);
+        // E(P) = dx·(Py − Ya) − dy·(Px − Xa) with P = 16·pixel + 8 (the pixel centre).
+        t.a[k] = -dy * RASTER_SUBPIXEL_ONE;
+        t.b[k] = dx * RASTER_SUBPIXEL_ONE;
+        t.c[k] = dx * (HALF_SUBPIXEL - Y[ia]) - dy * (HALF_SUBPIXEL - X[ia]);
+        const bool top_left = dy < 0 || (dy == 0 && dx > 0);
+        if (!top_left) t.c[k] -= 1;  // ties on right/bottom edges fall outside
+    }
+    const std::int64_t min_X = std::min({X[0], X[1], X[2]}), max_X = std::max({X[0], X[1], X[2]});
+    const std::int64_t min_Y = std::min({Y[0], Y[1], Y[2]}), max_Y = std::max({Y[0], Y[1], Y[2]});
+    // Pixel px is a candidate when its centre 16·px + 8 lies in [min_X, max_X]
+    // (>> is floor division: arithmetic shift, defined in C++20).
+    t.min_x = static_cast<int>(std::max<std::int64_t>(-((HALF_SUBPIXEL - min_X) >> RASTER_SUBPIXEL_BITS), clip.x0));
+    t.max_x = static_cast<int>(std::min<std::int64_t>((max_X - HALF_SUBPIXEL) >> RASTER_SUBPIXEL_BITS, clip.x1 - 1));
+    t.min_y = static_cast<int>(std::max<std::int64_t>(-((HALF_SUBPIXEL - min_Y) >> RASTER_SUBPIXEL_BITS), clip.y0));
+    t.max_y = static_cast<int>(std::min<std::int64_t>((max_Y - HALF_SUBPIXEL) >> RASTER_SUBPIXEL_BITS, clip.y1 - 1));
+    t.span_x = max_X - min_X;
+    t.span_y = max_Y - min_Y;
+    for (int k = 0; k < 3; ++k) {
+        t.x[k] = static_cast<double>(X[k]) / RASTER_SUBPIXEL_ONE;
+        t.y[k] = static_cast<double>(Y[k]) / RASTER_SUBPIXEL_ONE;
+    }
+    t.valid = t.min_x <= t.max_x && t.min_y <= t.max_y;
+    return t;
+}
+
+namespace detail {
+
+namespace {
+
+// Affine plane f(x, y) over pixel centres through the three snapped vertices: the value at
+// the centre of pixel (px, py) and the per-pixel steps. Cramer's rule in double.
+struct plane {
+    float at_ref, dx, dy;
+};
+
+plane attribute_plane(const triangle_edges &t, double inv_det, const float f[3], int px, int py) {
+    const double d1x = t.x[1] - t.x[0], d1y = t.y[1] - t.y[0], d2x = t.x[2] - t.x[0], d2y = t.y[2] - t.y[0];
+    const double f1 = static_cast<double>(f[1]) - f[0], f2 = static_cast<double>(f[2]) - f[0];
+    const double gx = (f1 * d2y - f2 * d1y) * inv_det;
+    const double gy = (f2 * d1x - f1 * d2x) * inv_det;
+    const double ref = f[0] + gx * (px + 0.5 - t.x[0]) + gy * (py + 0.5 - t.y[0]);
+    return {static_cast<float>(ref), static_cast<float>(gx), static_cast<float>(gy)};
+}
+
+}  // namespace
+
+bool make_fast_triangle(const triangle_edges &t, const screen_vertex v[3], const float intensity[3],
+                        std::int32_t wide_index, fast_triangle &out) {
+    if (!t.valid) return false;
+    out.min_x = t.min_x;
+    out.max_x = t.max_x;
+    out.min_y = t.min_y;
+    out.max_y = t.max_y;
+    const bool fits = t.span_x < FAST_SPAN_LIMIT && t.span_y < FAST_SPAN_LIMIT;
+    out.wide = fits ? -1 : wide_index;
+    for (int k = 0; k < 3; ++k) {
+        const std::int64_t e = t.c[k] + t.a[k] * t.min_x + t.b[k] * t.min_y;
+        out.e[k] = fits ? static_cast<std::int32_t>(e) : 0;
+        out.a[k] = fits ? static_cast<std::int32_t>(t.a[k]) : 0;
+        out.b[k] = fits ? static_cast<std::int32_t>(t.b[k]) : 0;
+    }
+    const float depth[3] = {v[0].z, v[1].z, v[2].z};
+    // det = twice the signed area in px² (the snapped area2 carries the orientation sign).
+    const double det = (t.x[1] - t.x[0]) * (t.y[2] - t.y[0]) - (t.x[2] - t.x[0]) * (t.y[1] - t.y[0]);
+    const double inv_det = 1.0 / det;
+    const plane zp = attribute_plane(t, inv_det, depth, t.min_x, t.min_y);
+    const plane ip = attribute_plane(t, inv_det, intensity, t.min_x, t.min_y);
+    out.z = zp.at_ref;
+    out.zdx = zp.dx;
+    out.zdy = zp.dy;
+    out.i = ip.at_ref;
+    out.idx = ip.dx;
+    out.idy = ip.dy;
+    return true;
+}
+
+namespace {
+
+// One pixel of the scalar paths (also the right-edge tail of the SIMD path).
+inline void shade_pixel(float *color, float *zrow, int x, float z, float intensity, depth_func test,
+                        bool depth_write) {
+    if (zrow) {
+        if (!depth_passes(test, z, zrow[x])) return;
+        if (depth_write) zrow[x] = z;
+    }
+    color[x] = clamp01(intensity);
+}
+
+void fill_rows_scalar64(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, const triangle_edges &t,
+                        depth_func test, bool depth_write, int y0, int y1) {
+    for (int y = y0; y < y1; ++y) {
+        std::int64_t e[3];
+        for (int k = 0; k < 3; ++k) e[k] = t.c[k] + t.a[k] * f.min_x + t.b[k] * y;
+        const float zr = f.z + f.zdy * static_cast<float>(y - f.min_y);
+        const float ir = f.i + f.idy * static_cast<float>(y - f.min_y);
+        float *color = canvas.pixels[y];
+        float *zrow = depth ? depth->row(y) : nullptr;
+        for (int x = f.min_x; x <= f.max_x; ++x) {
+            if ((e[0] | e[1] | e[2]) >= 0) {
+                const float dxp = static_cast<float>(x - f.min_x);
+                shade_pixel(color, zrow, x, zr + f.zdx * dxp, ir + f.idx * dxp, test, depth_write);
+            }
+            for (int k = 0; k < 3; ++k) e[k] += t.a[k];
+        }
+    }
+}
+
+#ifdef __SSE2__
+// Edge k at the first pixel of row min_y + dy: inside the box, so it fits in 32 bits
+// (the product alone may not).
+inline std::int32_t row_edge(const fast_triangle &f, int k, int dy) {
+    return static_cast<std::int32_t>(f.e[k] + static_cast<std::int64_t>(f.b[k]) * dy);
+}
+
+template <depth_func Test>
+inline __m128 depth_mask(__m128 z, __m128 stored) {
+    if constexpr (Test == depth_func::less) return _mm_cmplt_ps(z, stored);
+    else if constexpr (Test == depth_func::less_equal) return _mm_cmple_ps(z, stored);
+    else if constexpr (Test == depth_func::equal) return _mm_cmpeq_ps(z, stored);
+    else if constexpr (Test == depth_func::greater) return _mm_cmpgt_ps(z, stored);
+    else if constexpr (Test == depth_func::greater_equal) return _mm_cmpge_ps(z, stored);
+    else if constexpr (Test == depth_func::not_equal) return _mm_cmpneq_ps(z, stored);
+    else if constexpr (Test == depth_func::always) return _mm_castsi128_ps(_mm_set1_epi32(-1));
+    else return _mm_setzero_ps();
+}
+
+inline __m128 select(__m128 mask, __m128 a, __m128 b) {  // mask ? a : b
+    return _mm_or_ps(_mm_and_ps(mask, a), _mm_andnot_ps(mask, b));
+}
+
+// The 4-wide loop: edge values of 4 neighbouring pixels in one register each; the sign
+// bits of e0 | e1 | e2 mark the pixels outside. Lanes past the canvas' right edge are
+// finished one by one from the same register values.
+template <depth_func Test, bool HasDepth>
+void fill_rows_sse2(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bool depth_write, int y0,
+                    int y1) {
+    const __m128 lane_f = _mm_set_ps(3.0f, 2.0f, 1.0f, 0.0f);
+    __m128i step[3], start[3];
+    for (int k = 0; k < 3; ++k) {
+        start[k] = _mm_set_epi32(3 * f.a[k], 2 * f.a[k], f.a[k], 0);  // a·lane
+        step[k] = _mm_set1_epi32(4 * f.a[k]);
+    }
+    const __m128 zstep = _mm_set1_ps(4.0f * f.zdx), istep = _mm_set1_ps(4.0f * f.idx);
+    const __m128 zoff = _mm_mul_ps(_mm_set1_ps(f.zdx), lane_f), ioff = _mm_mul_ps(_mm_set1_ps(f.idx), lane_f);
+    const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f);
+    const int width = canvas.width;
+    // Edge values at the row start advance exactly (integers) by b per row.
+    __m128i row0 = _mm_add_epi32(_mm_set1_epi32(row_edge(f, 0, y0 - f.min_y)), start[0]);
+    __m128i row1 = _mm_add_epi32(_mm_set1_epi32(row_edge(f, 1, y0 - f.min_y)), start[1]);
+    __m128i row2 = _mm_add_epi32(_mm_set1_epi32(row_edge(f, 2, y0 - f.min_y)), start[2]);
+    const __m128i rstep0 = _mm_set1_epi32(f.b[0]), rstep1 = _mm_set1_epi32(f.b[1]), rstep2 = _mm_set1_epi32(f.b[2]);
+    for (int y = y0; y < y1; ++y, row0 = _mm_add_epi32(row0, rstep0), row1 = _mm_add_epi32(row1, rstep1),
+             row2 = _mm_add_epi32(row2, rstep2)) {
+        const int dy = y - f.min_y;
+        __m128i e0 = row0, e1 = row1, e2 = row2;
+        __m128 z = _mm_add_ps(_mm_set1_ps(f.z + f.zdy * static_cast<float>(dy)), zoff);
+        __m128 in = _mm_add_ps(_mm_set1_ps(f.i + f.idy * static_cast<float>(dy)), ioff);
+        float *color = canvas.pixels[y];
+        float *zrow = HasDepth ? depth->row(y) : nullptr;
+        for (int x = f.min_x; x <= f.max_x; x += 4) {
+            const __m128i outside = _mm_srai_epi32(_mm_or_si128(_mm_or_si128(e0, e1), e2), 31);
+            const int out_bits = _mm_movemask_ps(_mm_castsi128_ps(outside));
+            if (out_bits != 0xF) {
+                if (x + 4 <= width) {
+                    __m128 mask = _mm_andnot_ps(_mm_castsi128_ps(outside), _mm_castsi128_ps(_mm_set1_epi32(-1)));
+                    if constexpr (HasDepth) {
+                        const __m128 stored = _mm_loadu_ps(zrow + x);
+                        mask = _mm_and_ps(mask, depth_mask<Test>(z, stored));
+                        if (depth_write) _mm_storeu_ps(zrow + x, select(mask, z, stored));
+                    }
+                    if (_mm_movemask_ps(mask)) {
+                        const __m128 shade = _mm_min_ps(_mm_max_ps(in, zero), one);
+                        _mm_storeu_ps(color + x, select(mask, shade, _mm_loadu_ps(color + x)));
+                    }
+                } else {
+                    alignas(16) float zl[4], il[4];
+                    _mm_store_ps(zl, z);
+                    _mm_store_ps(il, in);
+                    for (int l = 0; l < 4 && x + l < width; ++l)
+                        if (!(out_bits & (1 << l))) shade_pixel(color, zrow, x + l, zl[l], il[l], Test, depth_write);
+                }
+            }
+            e0 = _mm_add_epi32(e0, step[0]);
+            e1 = _mm_add_epi32(e1, step[1]);
+            e2 = _mm_add_epi32(e2, step[2]);
+            z = _mm_add_ps(z, zstep);
+            in = _mm_add_ps(in, istep);
+        }
+    }
+}
+
+template <bool HasDepth>
+void fill_rows_dispatch(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, depth_func test,
+                        bool depth_write, int y0, int y1) {
+    switch (test) {
+        case depth_func::never: return;
+        case depth_func::less: return fill_rows_sse2<depth_func::less, HasDepth>(canvas, depth, f, depth_write, y0, y1);
+        case depth_func::less_equal:
+            return fill_rows_sse2<depth_func::less_equal, HasDepth>(canvas, depth, f, depth_write, y0, y1);
+        case depth_func::equal: return fill_rows_sse2<depth_func::equal, HasDepth>(canvas, depth, f, depth_write, y0, y1);
+        case depth_func::greater:
+            return fill_rows_sse2<depth_func::greater, HasDepth>(canvas, depth, f, depth_write, y0, y1);
+        case depth_func::greater_equal:
+            return fill_rows_sse2<depth_func::greater_equal, HasDepth>(canvas, depth, f, depth_write, y0, y1);
+        case depth_func::not_equal:
+            return fill_rows_sse2<depth_func::not_equal, HasDepth>(canvas, depth, f, depth_write, y0, y1);
+        case depth_func::always: return fill_rows_sse2<depth_func::always, HasDepth>(canvas, depth, f, depth_write, y0, y1);
+    }
+}
+#endif
+
+}  // namespace
+
+void fill_floats(float *dst, std::size_t count, float value) {
+    std::size_t i = 0;
+#ifdef __SSE2__
+    for (; i < count && (reinterpret_cast<std::uintptr_t>(dst + i) & 15u); ++i) dst[i] = value;
+    const __m128 v = _mm_set1_ps(value);
+    for (; i + 16 <= count; i += 16) {
+        _mm_store_ps(dst + i, v);
+        _mm_store_ps(dst + i + 4, v);
+        _mm_store_ps(dst + i + 8, v);
+        _mm_store_ps(dst + i + 12, v);
+    }
+#endif
+    for (; i < count; ++i) dst[i] = value;
+}
+
+void fill_fast_rows(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, const triangle_edges *wide_edges,
+                    depth_func test, bool depth_write, int y0, int y1) {
+    y0 = std::max(y0, f.min_y);
+    y1 = std::min(y1, f.max_y + 1);
+    if (y0 >= y1) return;
+    if (f.wide >= 0) {
+        if (wide_edges) fill_rows_scalar64(canvas, depth, f, *wide_edges, test, depth_write, y0, y1);
+        return;
+    }
+#ifdef __SSE2__
+    if (depth) fill_rows_dispatch<true>(canvas, depth, f, test, depth_write, y0, y1);
+    else fill_rows_dispatch<false>(canvas, depth, f, depth_func::always, false, y0, y1);
+#else
+    triangle_edges t;
+    for (int k = 0; k < 3; ++k) {
+        t.a[k] = f.a[k];
+        t.b[k] = f.b[k];
+        t.c[k] = f.e[k] - static_cast<std::int64_t>(f.a[k]) * f.min_x - static_cast<std::int64_t>(f.b[k]) * f.min_y;
+    }
+    fill_rows_scalar64(canvas, depth, f, t, test, depth_write, y0, y1);
+#endif
+}
+
+}  // namespace detail
+
+void fill_triangle(canvas_t &canvas, zbuffer *depth, const screen_vertex v[3], const float intensity[3],
+                   depth_func test, bool depth_write, pixel_rect clip) {
+    if (!canvas.pixels || (depth && (depth->width() != canvas.width || depth->height() != canvas.height))) return;
+    clip.x0 = std::max(clip.x0, 0);
+    clip.y0 = std::max(clip.y0, 0);
+    clip.x1 = std::min(clip.x1, canvas.width);
+    clip.y1 = std::min(clip.y1, canvas.height);
+    const triangle_edges t = triangle_setup(v[0], v[1], v[2], clip);
+    detail::fast_triangle f;
+    if (!detail::make_fast_triangle(t, v, intensity, 0, f)) return;
+    detail::fill_fast_rows(canvas, depth, f, &t, test, depth_write, f.min_y, f.max_y + 1);
+}
+
+// ---- the faithful scan-line fill (seed 003) ---------------------------------------------
+
+void fill_triangle_scanline(canvas_t &canvas, zbuffer *depth, const screen_vertex v[3], const float intensity[3],
+                            depth_func test) {
+    if (!canvas.pixels || (depth && (depth->width() != canvas.width || depth->height() != canvas.height))) return;
+    for (int k = 0; k < 3; ++k)
+        if (!usable(v[k]) || !std::isfinite(v[k].z) || !std::isfinite(intensity[k])) return;
+    // Sort by y (the seed's bubble sort), keeping each vertex's intensity with it.
+    int order[3] = {0, 1, 2};
+    if (v[order[0]].y > v[order[1]].y) std::swap(order[0], order[1]);
+    if (v[order[1]].y > v[order[2]].y) std::swap(order[1], order[2]);
+    if (v[order[0]].y > v[order[1]].y) std::swap(order[0], order[1]);
+    const screen_vertex &p0 = v[order[0]], &p1 = v[order[1]], &p2 = v[order[2]];
+    const float area = (p1.x - p0.x) * (p2.y - p0.y) - (p1.y - p0.y) * (p2.x - p0.x);
+    if (area == 0.0f || p2.y == p0.y) return;
+    const float i0 = intensity[order[0]], i1 = intensity[order[1]], i2 = intensity[order[2]];
+    // Rows whose centre y + 0.5 lies in [p0.y, p2.y].
+    const int row0 = std::max(0, static_cast<int>(std::ceil(p0.y - 0.5f)));
+    const int row1 = std::min(canvas.height - 1, static_cast<int>(std::floor(p2.y - 0.5f)));
+    for (int y = row0; y <= row1; ++y) {
+        const float cy = static_cast<float>(y) + 0.5f;
+        // Long edge p0→p2 and the short edge of this half.
+        const float xl = p0.x + (p2.x - p0.x) * (cy - p0.y) / (p2.y - p0.y);
+        const bool upper = cy < p1.y;
+        const screen_vertex &s0 = upper ? p0 : p1, &s1 = upper ? p1 : p2;
+        const float xs = s1.y != s0.y ? s0.x + (s1.x - s0.x) * (cy - s0.y) / (s1.y - s0.y) : s1.x;
+        const float xa = std::min(xl, xs), xb = std::max(xl, xs);
+        const int col0 = std::max(0, static_cast<int>(std::ceil(xa - 0.5f)));
+        const int col1 = std::min(canvas.width - 1, static_cast<int>(std::floor(xb - 0.5f)));
+        float *color = canvas.pixels[y];
+        float *zrow = depth ? depth->row(y) : nullptr;
+        for (int x = col0; x <= col1; ++x) {
+            const float cx = static_cast<float>(x) + 0.5f;
+            // Barycentrics of the centre (areas of the sub-triangles over the whole).
+            const float l1 = ((cx - p0.x) * (p2.y - p0.y) - (cy - p0.y) * (p2.x - p0.x)) / area;
+            const float l2 = ((p1.x - p0.x) * (cy - p0.y) - (p1.y - p0.y) * (cx - p0.x)) / area;
+            const float l0 = 1.0f - l1 - l2;
+            detail::shade_pixel(color, zrow, x, l0 * p0.z + l1 * p1.z + l2 * p2.z, l0 * i0 + l1 * i1 + l2 * i2,
+                                test, true);
+        }
+    }
+}
+
+}  // namespace tiny3d

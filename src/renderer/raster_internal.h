@@ -1,0 +1,61 @@
+// raster_internal.h — the compact per-triangle setup shared by the half-space fill
+// (raster_fill.cpp) and the render context (raster_context.cpp). Not installed.
+#ifndef TINY3D_RASTER_INTERNAL_H
+#define TINY3D_RASTER_INTERNAL_H
+
+#include <cstdint>
+
+#include "raster.h"
+
+namespace tiny3d::detail {
+
+// Edge functions fit in 32 bits (|E| < 2^31) when the snapped vertex bounding box spans
+// less than this many sub-pixel units per axis, including 4 px of SIMD overshoot:
+// |E| ≤ |dX|·|Py − Ya| + |dY|·|Px − Xa| < 2 · (2^15)^2 = 2^31.
+inline constexpr std::int64_t FAST_SPAN_LIMIT = (1 << 15) - 8 * RASTER_SUBPIXEL_ONE;
+
+// One triangle ready for the 4-wide fill: edge values and attribute values at the centre of
+// pixel (min_x, min_y), per-pixel steps in x (a) and y (b). Band-independent: a band only
+// chooses which rows of it to draw, so every thread count gives the same pixels.
+struct fast_triangle {
+    int min_x, max_x, min_y, max_y;  // inclusive pixel bounds, clamped to the target
+    std::int32_t e[3], a[3], b[3];   // valid when wide < 0
+    float z, zdx, zdy;               // window depth plane
+    float i, idx, idy;               // intensity plane
+    std::int32_t wide;               // ≥ 0: index of the 64-bit edges in the wide list
+};
+
+// Builds a fast_triangle from already computed edges (t.valid) and per-vertex depth and
+// intensity. Returns false when the bounds are empty. When the triangle is too large for
+// 32-bit edges, sets `wide` to wide_index (the caller keeps `t` at that index).
+bool make_fast_triangle(const triangle_edges &t, const screen_vertex v[3], const float intensity[3],
+                        std::int32_t wide_index, fast_triangle &out);
+
+// Draws rows [y0, y1) ∩ [min_y, max_y] of the triangle. `wide_edges` is the triangle's
+// 64-bit edges when f.wide ≥ 0 (ignored otherwise).
+void fill_fast_rows(canvas_t &canvas, zbuffer *depth, const fast_triangle &f,
+                    const triangle_edges *wide_edges, depth_func test, bool depth_write, int y0, int y1);
+
+// dst[0..count) := value (SSE2 stores when available).
+void fill_floats(float *dst, std::size_t count, float value);
+
+// Depth comparison as a function, shared by the scalar paths.
+inline bool depth_passes(depth_func test, float fragment, float stored) {
+    switch (test) {
+        case depth_func::never: return false;
+        case depth_func::less: return fragment < stored;
+        case depth_func::less_equal: return fragment <= stored;
+        case depth_func::equal: return fragment == stored;
+        case depth_func::greater: return fragment > stored;
+        case depth_func::greater_equal: return fragment >= stored;
+        case depth_func::not_equal: return fragment != stored;
+        case depth_func::always: return true;
+    }
+    return false;
+}
+
+inline float clamp01(float v) { return v < 0.0f ? 0.0f : (v > 1.0f ? 1.0f : v); }
+
+}  // namespace tiny3d::detail
+
+#endif

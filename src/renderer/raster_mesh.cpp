@@ -1,0 +1,93 @@
+// raster_mesh.cpp — tiny3d::mesh → raster_mesh (fan triangles over shared vertices).
+#include <cmath>
+#include <string>
+
+#include "raster.h"
+
+namespace tiny3d {
+
+namespace {
+
+vec3_t face_normal(const mesh &m, std::size_t f) {
+    // Newell's method over the face's corners (exact for planar polygons).
+    vec3_t n{0, 0, 0};
+    const std::uint32_t s = m.face_start[f], e = m.face_start[f + 1];
+    for (std::uint32_t k = s; k < e; ++k) {
+        const vec3_t a = m.positions[m.indices[k]], b = m.positions[m.indices[k + 1 < e ? k + 1 : s]];
+        n.x += (a.y - b.y) * (a.z + b.z);
+        n.y += (a.z - b.z) * (a.x + b.x);
+        n.z += (a.x - b.x) * (a.y + b.y);
+    }
+    const float len = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+    return len > 0.0f && std::isfinite(len) ? n / len : vec3_t{0, 0, 0};
+}
+
+error mesh_error(const std::string &reason) { return error{"", 0, -1, reason}; }
+
+}  // namespace
+
+result<raster_mesh> make_raster_mesh(const mesh &m, std::span<const vec3_t> vertex_normals) {
+    if (m.face_start.empty() || m.face_start.front() != 0 || m.face_start.back() != m.indices.size())
+        return mesh_error("raster mesh: face_start does not match the corner list");
+    for (std::size_t k = 0; k < m.indices.size(); ++k)
+        if (m.indices[k] >= m.positions.size())
+            return mesh_error("raster mesh: corner " + std::to_string(k) + " refers to position " +
+                              std::to_string(m.indices[k]) + " of " + std::to_string(m.positions.size()));
+    const bool corner_attrs = !m.corner_uvs.empty() || !m.corner_normals.empty();
+    if (!m.corner_uvs.empty() && m.corner_uvs.size() != m.indices.size())
+        return mesh_error("raster mesh: corner_uvs count differs from the corner count");
+    if (!m.corner_normals.empty() && m.corner_normals.size() != m.indices.size())
+        return mesh_error("raster mesh: corner_normals count differs from the corner count");
+    if (!vertex_normals.empty() && vertex_normals.size() != m.positions.size())
+        return mesh_error("raster mesh: " + std::to_string(vertex_normals.size()) + " vertex normals for " +
+                          std::to_string(m.positions.size()) + " positions");
+
+    raster_mesh r;
+    // Vertex of corner k: the position itself when shared, else a vertex per corner.
+    auto corner_normal = [&](std::size_t f, std::uint32_t k) {
+        if (!m.corner_normals.empty()) return m.corner_normals[k];
+        if (!vertex_normals.empty()) return vertex_normals[m.indices[k]];
+        return face_normal(m, f);
+    };
+    if (!corner_attrs && !vertex_normals.empty()) {
+        r.positions = m.positions;
+        r.normals.assign(vertex_normals.begin(), vertex_normals.end());
+        r.uvs.assign(m.positions.size(), vec2{0, 0});
+    } else {
+        r.positions.reserve(m.indices.size());
+        for (std::size_t f = 0; f < m.face_count(); ++f)
+            for (std::uint32_t k = m.face_start[f]; k < m.face_start[f + 1]; ++k) {
+                r.positions.push_back(m.positions[m.indices[k]]);
+                r.normals.push_back(corner_normal(f, k));
+                r.uvs.push_back(m.corner_uvs.empty() ? vec2{0, 0} : m.corner_uvs[k]);
+            }
+    }
+    const bool shared = r.positions.size() == m.positions.size() && !corner_attrs && !vertex_normals.empty();
+    for (std::size_t f = 0; f < m.face_count(); ++f) {
+        const std::uint32_t s = m.face_start[f], e = m.face_start[f + 1];
+        for (std::uint32_t k = s + 1; k + 1 < e; ++k) {
+            if (shared) r.triangles.push_back({m.indices[s], m.indices[k], m.indices[k + 1]});
+            else r.triangles.push_back({s, k, k + 1});
+        }
+    }
+    // Bounding sphere: box centre, largest distance (finite positions only).
+    vec3_t lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
+    for (const vec3_t &p : r.positions) {
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) continue;
+        lo = {std::fmin(lo.x, p.x), std::fmin(lo.y, p.y), std::fmin(lo.z, p.z)};
+        hi = {std::fmax(hi.x, p.x), std::fmax(hi.y, p.y), std::fmax(hi.z, p.z)};
+    }
+    if (lo.x <= hi.x) {
+        r.bound_center = (lo + hi) * 0.5f;
+        float r2 = 0;
+        for (const vec3_t &p : r.positions) {
+            const vec3_t d = p - r.bound_center;
+            const float d2 = d.x * d.x + d.y * d.y + d.z * d.z;
+            if (std::isfinite(d2) && d2 > r2) r2 = d2;
+        }
+        r.bound_radius = std::sqrt(r2) * (1.0f + 1e-6f);
+    }
+    return r;
+}
+
+}  // namespace tiny3d

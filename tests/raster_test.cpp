@@ -1,0 +1,482 @@
+// raster_test.cpp — filled triangles: coverage (watertight, top-left), fast fill vs the
+// 64-bit reference, depth, perspective-correct uv against the analytic value, culling,
+// near-plane clipping against a double-precision ray cast, thread-count invariance,
+// textures, transparency, degenerate / NaN input.
+#include <cmath>
+#include <cstring>
+#include <random>
+#include <vector>
+
+#include "harness.h"
+#include "renderer.h"
+
+using namespace tiny3d;
+
+namespace {
+
+constexpr int W = 64, H = 48;
+
+// Hit counts of a list of screen triangles through the reference visitor.
+std::vector<int> count_hits(const std::vector<std::array<screen_vertex, 3>> &tris, int w, int h) {
+    std::vector<int> hits(static_cast<std::size_t>(w) * h, 0);
+    for (const auto &t : tris)
+        rasterize_triangle(t[0], t[1], t[2], {0, 0, w, h},
+                           [&](int x, int y, float, float, float) { ++hits[static_cast<std::size_t>(y) * w + x]; });
+    return hits;
+}
+
+screen_vertex sv(double x, double y, double z = 0.5) {
+    return {static_cast<float>(x), static_cast<float>(y), static_cast<float>(z), 1.0f};
+}
+
+light_rig constant_light(float ambient) {  // shade = ambient everywhere
+    return make_light_rig(std::span<const light_t>(), ambient).value();
+}
+
+}  // namespace
+
+TEST(watertight_jittered_grid_covers_every_pixel_once) {
+    // A grid of quads over (and beyond) the canvas, vertices jittered at sub-pixel positions
+    // (some exactly on pixel centres), each quad split into two triangles, alternating
+    // diagonals and both windings.
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> jitter(-2.0, 2.0);
+    constexpr int N = 9;
+    double gx[N + 1][N + 1], gy[N + 1][N + 1];
+    for (int j = 0; j <= N; ++j)
+        for (int i = 0; i <= N; ++i) {
+            const bool border = i == 0 || j == 0 || i == N || j == N;
+            gx[j][i] = -4.0 + i * (W + 8.0) / N + (border ? 0 : jitter(rng));
+            gy[j][i] = -4.0 + j * (H + 8.0) / N + (border ? 0 : jitter(rng));
+            if ((i + j) % 3 == 0 && !border) gx[j][i] = std::floor(gx[j][i]) + 0.5, gy[j][i] = std::floor(gy[j][i]) + 0.5;
+        }
+    std::vector<std::array<screen_vertex, 3>> tris;
+    for (int j = 0; j < N; ++j)
+        for (int i = 0; i < N; ++i) {
+            const screen_vertex a = sv(gx[j][i], gy[j][i]), b = sv(gx[j][i + 1], gy[j][i + 1]),
+                                c = sv(gx[j + 1][i + 1], gy[j + 1][i + 1]), d = sv(gx[j + 1][i], gy[j + 1][i]);
+            if ((i + j) % 2) {
+                tris.push_back({a, b, c});
+                tris.push_back({a, d, c});  // opposite winding
+            } else {
+                tris.push_back({a, b, d});
+                tris.push_back({b, c, d});
+            }
+        }
+    const std::vector<int> hits = count_hits(tris, W, H);
+    int wrong = 0;
+    for (int h : hits) wrong += h != 1;
+    CHECK_EQ(wrong, 0);
+}
+
+TEST(watertight_fan_around_a_pixel_centre) {
+    // 16 triangles sharing the vertex (20.5, 20.5), a pixel centre: exactly one owns it.
+    std::vector<std::array<screen_vertex, 3>> tris;
+    const double cx = 20.5, cy = 20.5, r = 15.0;
+    constexpr int K = 16;
+    for (int k = 0; k < K; ++k) {
+        const double a0 = 2 * M_PI * k / K, a1 = 2 * M_PI * (k + 1) / K;
+        tris.push_back({sv(cx, cy), sv(cx + r * std::cos(a0), cy + r * std::sin(a0)),
+                        sv(cx + r * std::cos(a1), cy + r * std::sin(a1))});
+    }
+    const std::vector<int> hits = count_hits(tris, W, H);
+    CHECK_EQ(hits[20 * W + 20], 1);
+    int doubles = 0;
+    for (int h : hits) doubles += h > 1;
+    CHECK_EQ(doubles, 0);
+    // Every pixel whose centre is well inside the polygon (inscribed radius r·cos(π/K)) is hit.
+    int holes = 0;
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x)
+            if (std::hypot(x + 0.5 - cx, y + 0.5 - cy) < r * std::cos(M_PI / K) - 0.1) holes += hits[y * W + x] != 1;
+    CHECK_EQ(holes, 0);
+}
+
+TEST(top_left_rule_on_ties) {
+    // The square [0.5, 2.5]² (centres on all four sides): top and left sides are in,
+    // right and bottom out — exactly pixels (0..1) × (0..1).
+    const std::vector<std::array<screen_vertex, 3>> square = {{sv(0.5, 0.5), sv(2.5, 0.5), sv(2.5, 2.5)},
+                                                              {sv(0.5, 0.5), sv(2.5, 2.5), sv(0.5, 2.5)}};
+    const std::vector<int> hits = count_hits(square, W, H);
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 4; ++x) CHECK_EQ(hits[y * W + x], (x < 2 && y < 2) ? 1 : 0);
+    // A triangle with a horizontal bottom edge through centres and a top edge: (10.5,10.5)
+    // is on the top edge of this one → owned.
+    const std::vector<std::array<screen_vertex, 3>> top = {{sv(10.5, 10.5), sv(14.5, 10.5), sv(10.5, 14.5)}};
+    const std::vector<int> h2 = count_hits(top, W, H);
+    CHECK_EQ(h2[10 * W + 10], 1);  // top-left corner
+    CHECK_EQ(h2[10 * W + 14], 0);  // right end of the top edge: on the hypotenuse (right edge)
+    CHECK_EQ(h2[14 * W + 10], 0);  // bottom end of the left edge: on the hypotenuse
+    CHECK_EQ(h2[12 * W + 12], 0);  // on the hypotenuse (a right/bottom edge)
+    CHECK_EQ(h2[11 * W + 12], 1);
+}
+
+TEST(fast_fill_matches_reference_coverage_and_attributes) {
+    // Random triangles, small and huge (the 64-bit path): fill_triangle covers exactly the
+    // pixels rasterize_triangle visits and writes the affine intensity within 1e-4.
+    std::mt19937 rng(11);
+    canvas_ptr c = make_canvas(W, H).value();
+    for (int trial = 0; trial < 300; ++trial) {
+        const double scale = trial % 10 == 0 ? 5000.0 : (trial % 3 == 0 ? 60.0 : 12.0);
+        std::uniform_real_distribution<double> pos(-scale, scale);
+        const double ox = 20 + pos(rng) * 0.2, oy = 20 + pos(rng) * 0.2;
+        screen_vertex v[3];
+        float in[3];
+        for (int k = 0; k < 3; ++k) {
+            v[k] = sv(ox + pos(rng), oy + pos(rng));
+            in[k] = std::uniform_real_distribution<float>(0.1f, 0.9f)(rng);
+        }
+        canvas_clear(c.get(), 0.0f);
+        fill_triangle(*c, nullptr, v, in, depth_func::always, false, {0, 0, W, H});
+        // Reference: coverage from the 64-bit visitor, value from the plane through the
+        // snapped vertices evaluated in double at the pixel centre.
+        double X[3], Y[3];
+        for (int k = 0; k < 3; ++k) X[k] = std::nearbyint(v[k].x * 16.0) / 16, Y[k] = std::nearbyint(v[k].y * 16.0) / 16;
+        const double det = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
+        std::vector<float> expect(W * H, 0.0f);
+        rasterize_triangle(v[0], v[1], v[2], {0, 0, W, H}, [&](int x, int y, float, float, float) {
+            const double px = x + 0.5, py = y + 0.5;
+            const double l1 = ((px - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (py - Y[0])) / det;
+            const double l2 = ((X[1] - X[0]) * (py - Y[0]) - (px - X[0]) * (Y[1] - Y[0])) / det;
+            expect[y * W + x] = static_cast<float>((1 - l1 - l2) * in[0] + l1 * in[1] + l2 * in[2]);
+        });
+        int wrong = 0;
+        double worst = 0;
+        for (int i = 0; i < W * H; ++i) {
+            const bool a = c->data[i] > 0, b = expect[i] > 0;
+            wrong += a != b;
+            if (a && b) worst = std::max(worst, std::fabs(static_cast<double>(c->data[i]) - expect[i]));
+        }
+        CHECK_EQ(wrong, 0);
+        CHECK_MSG(worst < 2e-4, std::to_string(worst) + " trial " + std::to_string(trial));
+    }
+}
+
+TEST(intersecting_triangles_resolved_per_pixel_by_depth) {
+    canvas_ptr c = make_canvas(W, H).value();
+    zbuffer z;
+    CHECK(z.resize(W, H).ok());
+    z.clear(1.0f);
+    // A: depth rises left→right, z = 0.2 + 0.3·x/64; B falls, z = 0.2 + 0.3·(64 − x)/64.
+    // Both cover most of the canvas; they cross at x = 32.
+    const screen_vertex a[3] = {sv(0, 0, 0.2), sv(128, 0, 0.8), sv(0, 96, 0.2)};
+    const screen_vertex b[3] = {sv(64, 0, 0.2), sv(64, 96, 0.2), sv(-64, 0, 0.8)};
+    const float ia[3] = {0.25f, 0.25f, 0.25f}, ib[3] = {0.75f, 0.75f, 0.75f};
+    fill_triangle(*c, &z, a, ia, depth_func::less, true, {0, 0, W, H});
+    fill_triangle(*c, &z, b, ib, depth_func::less, true, {0, 0, W, H});
+    int checked = 0;
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            const double px = x + 0.5, py = y + 0.5;
+            const double ea = 1 - px / 128 - py / 96, eb = 1 - (64 - px) / 128 - py / 96;  // > 0 inside
+            const double za = 0.2 + 0.3 * px / 64, zb = 0.2 + 0.3 * (64 - px) / 64;
+            if (ea < 0.02 || eb < 0.02 || std::fabs(za - zb) < 1e-3) continue;
+            CHECK_EQ(c->pixels[y][x], za < zb ? 0.25f : 0.75f);
+            CHECK_NEAR(z.at(x, y), std::min(za, zb), 1e-5);
+            ++checked;
+        }
+    CHECK(checked > 50);
+}
+
+TEST(scanline_fill_agrees_with_half_space_away_from_edges) {
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> pos(-10.0f, 70.0f);
+    canvas_ptr a = make_canvas(W, H).value(), b = make_canvas(W, H).value();
+    long mismatched = 0, covered = 0;
+    for (int trial = 0; trial < 100; ++trial) {
+        screen_vertex v[3];
+        for (auto &p : v) p = {pos(rng), pos(rng), 0.5f, 1.0f};
+        const float in[3] = {1, 1, 1};
+        canvas_clear(a.get(), 0);
+        canvas_clear(b.get(), 0);
+        fill_triangle(*a, nullptr, v, in, depth_func::always, false, {0, 0, W, H});
+        fill_triangle_scanline(*b, nullptr, v, in, depth_func::always);
+        for (int i = 0; i < W * H; ++i) {
+            covered += a->data[i] > 0;
+            mismatched += (a->data[i] > 0) != (b->data[i] > 0);
+        }
+    }
+    CHECK(covered > 10000);
+    // Only centres within float rounding / 1/16 px snapping of an edge may differ.
+    CHECK(mismatched * 100 < covered);
+}
+
+namespace {
+
+// A quad facing the camera (at the origin looking down −z): y = −1 at z = −1.5, y = 1 at
+// z = −6, x in [−1, 1]; u runs along the depth (u = (y + 1)/2).
+raster_mesh tilted_quad() {
+    raster_mesh m;
+    m.positions = {{-1, -1, -1.5f}, {1, -1, -1.5f}, {1, 1, -6}, {-1, 1, -6}};
+    m.normals.assign(4, {0, 0, 1});
+    m.uvs = {{0, 0}, {0, 0}, {1, 0}, {1, 0}};
+    m.triangles = {{0, 1, 2}, {0, 2, 3}};
+    m.bound_center = {0, 0, -3.75f};
+    m.bound_radius = 3;
+    return m;
+}
+
+}  // namespace
+
+TEST(perspective_correct_uv_matches_the_analytic_value) {
+    constexpr int S = 256;
+    const float fov = static_cast<float>(M_PI / 2);
+    texture ramp;  // texel value = u (bilinear of a linear ramp reproduces u exactly)
+    ramp.width = 4096;
+    ramp.height = 1;
+    for (int i = 0; i < ramp.width; ++i) ramp.texels.push_back((i + 0.5f) / ramp.width);
+    const raster_mesh quad = tilted_quad();
+    double worst_persp = 0, worst_affine = 0;
+    int samples = 0;
+    for (bool perspective : {true, false}) {
+        canvas_ptr c = make_canvas(S, S).value();
+        render_context ctx(1);
+        draw_params p;
+        p.model = mat4_identity();
+        p.view_projection = mat4_perspective(fov, 1.0f, 0.1f, 100.0f);
+        p.lights = constant_light(1.0f);
+        p.shade = shading::flat;
+        p.tex = &ramp;
+        p.wrap = texture_wrap::clamp;
+        p.perspective_correct = perspective;
+        CHECK(ctx.begin_frame(*c).ok());
+        ctx.draw(quad, p);
+        ctx.end_frame();
+        for (int y = 4; y < S - 4; y += 5)
+            for (int x = 4; x < S - 4; x += 5) {
+                // Ray through the pixel centre; plane z = −3.75 − 2.25·y.
+                const double dx = ((x + 0.5) / S * 2 - 1), dy = 1 - (y + 0.5) / S * 2;  // tan(45°) = 1
+                const double t = 3.75 / (1 - 2.25 * dy);
+                const double hx = t * dx, hy = t * dy;
+                if (std::fabs(hx) > 0.95 || std::fabs(hy) > 0.95) continue;  // keep off the quad's edges
+                const double u = (hy + 1) / 2;
+                const double err = std::fabs(c->pixels[y][x] - u);
+                if (perspective) {
+                    worst_persp = std::max(worst_persp, err);
+                    ++samples;
+                } else {
+                    worst_affine = std::max(worst_affine, err);
+                }
+            }
+    }
+    CHECK(samples > 100);
+    CHECK_NEAR(worst_persp, 0.0, 1e-3);
+    CHECK(worst_affine > 0.05);  // affine mapping is visibly wrong on this slanted quad
+}
+
+TEST(backface_culling_removes_exactly_the_clockwise_ones) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> pos(-1.0f, 1.0f);
+    raster_mesh m;
+    int clockwise = 0;
+    for (int k = 0; k < 200; ++k) {
+        vec3_t a{pos(rng), pos(rng), -3}, b{pos(rng), pos(rng), -3}, c{pos(rng), pos(rng), -3};
+        // Orientation as seen by the camera (x right, y up): cross z of (b − a) × (c − a).
+        const double cz = static_cast<double>(b.x - a.x) * (c.y - a.y) - static_cast<double>(b.y - a.y) * (c.x - a.x);
+        if (std::fabs(cz) < 1e-3) continue;  // keep clear of degenerate snapping
+        clockwise += cz < 0;
+        const std::uint32_t i = static_cast<std::uint32_t>(m.positions.size());
+        m.positions.insert(m.positions.end(), {a, b, c});
+        m.triangles.push_back({i, i + 1, i + 2});
+    }
+    m.normals.assign(m.positions.size(), {0, 0, 1});
+    m.uvs.assign(m.positions.size(), {0, 0});
+    m.bound_center = {0, 0, -3};
+    m.bound_radius = 2;
+    canvas_ptr c = make_canvas(256, 256).value();
+    render_context ctx(1);
+    draw_params p;
+    p.model = mat4_identity();
+    p.view_projection = mat4_perspective(static_cast<float>(M_PI / 2), 1.0f, 0.1f, 100.0f);
+    p.lights = constant_light(0.5f);
+    CHECK(ctx.begin_frame(*c).ok());
+    ctx.draw(m, p);
+    ctx.end_frame();
+    CHECK_EQ(ctx.stats().culled_backface, static_cast<std::size_t>(clockwise));
+    CHECK_EQ(ctx.stats().rasterized, m.triangles.size() - clockwise);
+}
+
+TEST(vertex_behind_the_camera_renders_only_the_visible_part) {
+    constexpr int S = 96;
+    const double near_plane = 0.1;
+    raster_mesh m;
+    // One vertex far in front, two behind the camera (z > 0), one of them off to the side.
+    m.positions = {{0.0f, -0.5f, -4.0f}, {1.5f, 0.8f, 2.0f}, {-1.0f, 0.3f, 1.0f}};
+    m.normals.assign(3, {0, 0, 1});
+    m.uvs.assign(3, {0, 0});
+    m.triangles = {{0, 1, 2}};
+    m.bound_center = {0, 0, 0};
+    m.bound_radius = 5;
+    canvas_ptr c = make_canvas(S, S).value();
+    render_context ctx(1);
+    draw_params p;
+    p.model = mat4_identity();
+    p.view_projection = mat4_perspective(static_cast<float>(M_PI / 2), 1.0f, static_cast<float>(near_plane), 100.0f);
+    p.lights = constant_light(1.0f);
+    p.cull = cull_mode::none;
+    CHECK(ctx.begin_frame(*c).ok());
+    ctx.draw(m, p);
+    ctx.end_frame();
+    CHECK_EQ(ctx.stats().clipped, std::size_t{1});
+    // Double-precision ray cast (Möller–Trumbore) per pixel centre: hit with −z ≥ near.
+    auto sub = [](vec3_t a, vec3_t b) { return std::array<double, 3>{a.x - b.x + 0.0, a.y - b.y + 0.0, a.z - b.z + 0.0}; };
+    auto crs = [](std::array<double, 3> a, std::array<double, 3> b) {
+        return std::array<double, 3>{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    };
+    auto dt = [](std::array<double, 3> a, std::array<double, 3> b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+    const auto e1 = sub(m.positions[1], m.positions[0]), e2 = sub(m.positions[2], m.positions[0]);
+    int covered = 0, wrong = 0;
+    for (int y = 0; y < S; ++y)
+        for (int x = 0; x < S; ++x) {
+            const std::array<double, 3> d{(x + 0.5) / S * 2 - 1, 1 - (y + 0.5) / S * 2, -1};
+            const auto pv = crs(d, e2);
+            const double det = dt(e1, pv);
+            const std::array<double, 3> o{-m.positions[0].x + 0.0, -m.positions[0].y + 0.0, -m.positions[0].z + 0.0};
+            const double u = dt(o, pv) / det;
+            const auto q = crs(o, e1);
+            const double v = dt(d, q) / det, t = dt(e2, q) / det;
+            constexpr double MARGIN = 0.02;  // barycentric margin: keep off the edges
+            const bool inside = u > MARGIN && v > MARGIN && u + v < 1 - MARGIN && t > near_plane * 1.05;
+            const bool outside = u < -MARGIN || v < -MARGIN || u + v > 1 + MARGIN || t < near_plane * 0.95;
+            const bool drawn = c->pixels[y][x] > 0.5f;
+            covered += drawn;
+            if ((inside && !drawn) || (outside && drawn)) ++wrong;
+        }
+    CHECK(covered > 200);
+    CHECK_EQ(wrong, 0);
+}
+
+TEST(clip_polygon_against_the_near_plane) {
+    clip_vertex in[3];
+    in[0].position = {0, 0, 0.5f, 1};    // inside
+    in[1].position = {1, 0, -3, -1};     // behind (z < −w)
+    in[2].position = {0, 1, 0.5f, 1};    // inside
+    for (int k = 0; k < 3; ++k) in[k].attr.fill(static_cast<float>(k));
+    clip_vertex out[CLIP_MAX_VERTICES];
+    const int n = clip_polygon(in, 3, CLIP_NEAR, 1.0f, 1, out);
+    CHECK_EQ(n, 4);
+    for (int k = 0; k < n; ++k) CHECK(out[k].position.z + out[k].position.w >= -1e-6f);
+    // Crossing on edge 0→1: d0 = 1.5, d1 = −4 → t = 1.5/5.5.
+    CHECK_NEAR(out[1].attr[0], 1.5 / 5.5, 1e-6);
+    CHECK_EQ(clip_outcode({NAN, 0, 0, 1}, 1.0f) != 0u, true);
+    // All behind: nothing left.
+    for (auto &v : in) v.position = {0, 0, -2, -1};
+    CHECK_EQ(clip_polygon(in, 3, CLIP_NEAR, 1.0f, 0, out), 0);
+}
+
+TEST(degenerate_and_non_finite_triangles_are_skipped) {
+    const pixel_rect all{0, 0, W, H};
+    CHECK(!triangle_setup(sv(1, 1), sv(5, 5), sv(9, 9), all).valid);      // collinear
+    CHECK(!triangle_setup(sv(1, 1), sv(1, 1), sv(9, 2), all).valid);      // repeated vertex
+    CHECK(!triangle_setup(sv(NAN, 1), sv(5, 5), sv(9, 1), all).valid);
+    CHECK(!triangle_setup(sv(INFINITY, 1), sv(5, 5), sv(9, 1), all).valid);
+    CHECK(!triangle_setup(sv(1e30, 1), sv(5, 5), sv(9, 1), all).valid);
+    CHECK(!triangle_setup(sv(1, 1), sv(1 + 1e-9, 1), sv(1, 1 + 1e-9), all).valid);  // below the snap grid
+    CHECK(triangle_setup(sv(1, 1), sv(30, 2), sv(3, 40), all).valid);
+    // Denormal-sized coordinates snap to the same point: skipped, no crash.
+    CHECK(!triangle_setup(sv(1e-40, 0), sv(0, 1e-40), sv(1e-39, 1e-39), all).valid);
+}
+
+TEST(two_threads_give_the_same_image_as_one) {
+    mesh torus = make_torus(1.0f, 0.35f, 40, 20);
+    const std::vector<vec3_t> normals = mesh_vertex_normals(torus);
+    tiny3d::mesh plain = torus;
+    plain.corner_uvs.clear();
+    const raster_mesh shared = make_raster_mesh(plain, normals).value();
+    const raster_mesh cornered = make_raster_mesh(torus, {}).value();
+    texture checker;
+    checker.width = checker.height = 8;
+    for (int i = 0; i < 64; ++i) checker.texels.push_back(((i + i / 8) % 2) ? 1.0f : 0.3f);
+    light_t lights[2] = {{{1, 1, 1}, 0.8f}, {{-1, 0, 0.5f}, 0.3f}};
+    const light_rig rig = make_light_rig(lights, 0.1f).value();
+    std::vector<float> images[3];
+    for (int threads = 1; threads <= 3; ++threads) {
+        canvas_ptr c = make_canvas(257, 193).value();
+        render_context ctx(threads);
+        for (int frame = 0; frame < 2; ++frame) {
+            CHECK(ctx.begin_frame(*c, 0.05f).ok());
+            draw_params p;
+            p.view_projection = mat4_multiply(mat4_perspective(0.8f, 257.0f / 193, 0.1f, 50),
+                                              mat4_look_at({0, 0.5f, 3}, {0, 0, 0}, {0, 1, 0}));
+            p.lights = rig;
+            const shading levels[3] = {shading::flat, shading::gouraud, shading::phong};
+            for (int k = 0; k < 3; ++k) {
+                p.model = mat4_multiply(mat4_translate(-1.2f + 1.2f * k, 0, -0.5f * k), mat4_rotate_xyz(0.7f, 0.3f * frame, 0));
+                p.shade = levels[k];
+                ctx.draw(shared, p);
+            }
+            p.model = mat4_multiply(mat4_translate(0, 0.6f, 0.8f), mat4_rotate_xyz(1.2f, 0, 0));
+            p.tex = &checker;
+            p.shade = shading::gouraud;
+            ctx.draw(cornered, p);
+            p.alpha = 0.5f;
+            p.model = mat4_multiply(mat4_translate(0.3f, -0.4f, 1.2f), mat4_rotate_xyz(0.2f, 0.5f, 0));
+            ctx.draw(cornered, p);
+            ctx.end_frame();
+        }
+        images[threads - 1].assign(c->data, c->data + 257 * 193);
+    }
+    CHECK(images[0] == images[1]);
+    CHECK(images[0] == images[2]);
+    double sum = 0;
+    for (float v : images[0]) sum += v;
+    CHECK(sum > 257 * 193 * 0.1);  // something was drawn
+}
+
+TEST(translucent_layers_blend_back_to_front) {
+    raster_mesh quad;
+    quad.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+    quad.normals.assign(4, {0, 0, 1});
+    quad.uvs.assign(4, {0, 0});
+    quad.triangles = {{0, 1, 2}, {0, 2, 3}};
+    quad.bound_radius = 1.5f;
+    canvas_ptr c = make_canvas(32, 32).value();
+    render_context ctx(2);
+    CHECK(ctx.begin_frame(*c, 0.2f).ok());
+    draw_params p;
+    p.view_projection = mat4_perspective(static_cast<float>(M_PI / 2), 1, 0.1f, 10);
+    p.alpha = 0.5f;
+    // Submitted front first: the back one must still be blended first.
+    p.model = mat4_translate(0, 0, -2);
+    p.lights = constant_light(1.0f);
+    ctx.draw(quad, p);
+    p.model = mat4_translate(0, 0, -3);
+    p.lights = constant_light(0.6f);
+    ctx.draw(quad, p);
+    ctx.end_frame();
+    const double back = 0.5 * 0.6 + 0.5 * 0.2, front = 0.5 * 1.0 + 0.5 * back;
+    CHECK_NEAR(c->pixels[16][16], front, 1e-6);
+    CHECK_NEAR(ctx.depth().at(16, 16), 1.0, 0.0);  // translucent draws do not write depth
+}
+
+TEST(texture_sampling_nearest_bilinear_wrap_clamp) {
+    texture t;
+    t.width = 2;
+    t.height = 2;
+    t.texels = {0.0f, 1.0f, 0.5f, 0.25f};
+    CHECK_EQ(texture_sample(t, 0.25f, 0.25f, texture_filter::nearest, texture_wrap::repeat), 0.0f);
+    CHECK_EQ(texture_sample(t, 0.75f, 0.75f, texture_filter::nearest, texture_wrap::repeat), 0.25f);
+    CHECK_EQ(texture_sample(t, 1.75f, -0.25f, texture_filter::nearest, texture_wrap::repeat), 0.25f);
+    CHECK_EQ(texture_sample(t, 5.0f, 0.25f, texture_filter::nearest, texture_wrap::clamp), 1.0f);
+    // Bilinear at the centre of the four texel centres: their mean.
+    CHECK_NEAR(texture_sample(t, 0.5f, 0.5f, texture_filter::bilinear, texture_wrap::clamp), 0.4375, 1e-6);
+    // Clamp: left of the first centre holds the edge texels; repeat wraps to the far column.
+    CHECK_NEAR(texture_sample(t, 0.0f, 0.25f, texture_filter::bilinear, texture_wrap::clamp), 0.0, 1e-6);
+    CHECK_NEAR(texture_sample(t, 0.0f, 0.25f, texture_filter::bilinear, texture_wrap::repeat), 0.5, 1e-6);
+    CHECK_EQ(texture_sample(t, NAN, 0.5f, texture_filter::bilinear, texture_wrap::repeat), 0.0f);
+    CHECK_EQ(texture_sample(t, 1e30f, 0.5f, texture_filter::nearest, texture_wrap::repeat) >= 0.0f, true);
+}
+
+TEST(zbuffer_resize_and_clear) {
+    zbuffer z;
+    CHECK(!z.resize(0, 5).ok());
+    CHECK(z.resize(8, 4).ok());
+    z.clear(0.25f);
+    CHECK_EQ(z.at(7, 3), 0.25f);
+    const float *block = z.row(0);
+    CHECK(z.resize(4, 8).ok());  // same pixel count: same block
+    CHECK(z.row(0) == block);
+    z.clear_rows(2, 4, 0.5f);
+    CHECK_EQ(z.at(0, 1), 0.25f);
+    CHECK_EQ(z.at(3, 3), 0.5f);
+}
