@@ -97,9 +97,13 @@ $(BUILD)/bench/bin/%: $(BUILD)/obj/tests/bench/%.o $(BENCH_COMMON_OBJS) $(LIB)
 	@mkdir -p $(@D)
 	$(CXX) $(STD) $(OPT) $< $(BENCH_COMMON_OBJS) $(LIB) -o $@ $(LDLIBS)
 
-bench: $(BENCH_BINS)
+bench: $(BENCH_BINS) $(BUILD)/bench/tools/summary
 	@set -e; mkdir -p $(BUILD)/bench; for b in $(BENCH_BINS); do \
 	  echo "== $$(basename $$b)"; $$b --out $(BUILD)/bench; done
+	@$(BUILD)/bench/tools/summary $(BUILD)/bench
+
+# summary tool, bench-callgrind, docs-charts, docs-tables
+include tests/bench/bench.mk
 
 clean:
 	rm -rf $(BUILD)

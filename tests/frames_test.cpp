@@ -1,0 +1,141 @@
+// frames_test.cpp — frame ranges for render farms: a sequence rendered in two halves
+// (separate processes, separate folders, as two farm jobs would) gives byte-for-byte the
+// frames of one full run, and malformed --frames values fail with a message.
+//
+// Runs the demo programs from $BUILD/demo (BUILD is set by `make test`, which builds the
+// demos first; default "build").
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "harness.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Small frames keep the test fast (the pixels of a range do not depend on the size).
+constexpr const char *frame_size = "96x72";
+
+std::string demo_path(const std::string &name) {
+    const char *build = std::getenv("BUILD");
+    return std::string(build && *build ? build : "build") + "/demo/" + name;
+}
+
+// A fresh temporary folder, removed when the object goes.
+struct temp_dir {
+    fs::path path;
+    temp_dir() {
+        std::string tmpl = (fs::temp_directory_path() / "frames_test_XXXXXX").string();
+        if (::mkdtemp(tmpl.data())) path = tmpl;
+    }
+    ~temp_dir() {
+        std::error_code ec;
+        if (!path.empty()) fs::remove_all(path, ec);
+    }
+};
+
+std::string quoted(const std::string &s) {
+    std::string q = "'";
+    for (const char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
+struct run_result {
+    int exit_code = -1;
+    std::string err;  // what the program wrote on stderr
+};
+
+// Runs `program args…` with stdout discarded and stderr captured.
+run_result run(const std::string &program, const std::vector<std::string> &args, const fs::path &err_file) {
+    std::string cmd = quoted(program);
+    for (const std::string &a : args) cmd += " " + quoted(a);
+    cmd += " >/dev/null 2>" + quoted(err_file.string());
+    run_result r;
+    const int status = std::system(cmd.c_str());
+    r.exit_code = status != -1 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    std::ifstream in(err_file, std::ios::binary);
+    r.err.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    return r;
+}
+
+// File name → bytes, for every regular file in `dir`.
+std::map<std::string, std::string> files_in(const fs::path &dir) {
+    std::map<std::string, std::string> files;
+    std::error_code ec;
+    for (const auto &e : fs::directory_iterator(dir, ec)) {
+        if (!e.is_regular_file()) continue;
+        std::ifstream in(e.path(), std::ios::binary);
+        files[e.path().filename().string()].assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    return files;
+}
+
+// Full run vs two halves in other folders: same file names, same bytes.
+void check_halves_equal_full_run(const std::string &demo, const std::vector<std::string> &extra_args) {
+    const std::string program = demo_path(demo);
+    CHECK_MSG(fs::exists(program), program + " is not built (make test builds the demos first)");
+    if (!fs::exists(program)) return;
+    temp_dir full, first, second, logs;
+    CHECK(!full.path.empty() && !first.path.empty() && !second.path.empty() && !logs.path.empty());
+    const auto args = [&](const fs::path &out, const std::vector<std::string> &more) {
+        std::vector<std::string> a = extra_args;
+        a.insert(a.end(), {"--out", out.string(), "--size", frame_size});
+        a.insert(a.end(), more.begin(), more.end());
+        return a;
+    };
+    const run_result whole = run(program, args(full.path, {}), logs.path / "full.err");
+    CHECK_MSG(whole.exit_code == 0, demo + " full run failed: " + whole.err);
+    const auto reference = files_in(full.path);
+    const int n = int(reference.size());
+    CHECK_MSG(n >= 2, demo + ": expected a sequence of frames, got " + std::to_string(n));
+    if (n < 2) return;
+    const int half = n / 2;
+    const std::string range_a = "0:" + std::to_string(half - 1), range_b = std::to_string(half) + ":" + std::to_string(n - 1);
+    const run_result a = run(program, args(first.path, {"--frames", range_a}), logs.path / "a.err");
+    const run_result b = run(program, args(second.path, {"--frames", range_b}), logs.path / "b.err");
+    CHECK_MSG(a.exit_code == 0, demo + " --frames " + range_a + " failed: " + a.err);
+    CHECK_MSG(b.exit_code == 0, demo + " --frames " + range_b + " failed: " + b.err);
+    const auto part_a = files_in(first.path), part_b = files_in(second.path);
+    CHECK_EQ(int(part_a.size()), half);
+    CHECK_EQ(int(part_b.size()), n - half);
+    std::map<std::string, std::string> joined = part_a;
+    for (const auto &[name, bytes] : part_b) CHECK_MSG(joined.emplace(name, bytes).second, name + " rendered twice");
+    CHECK_EQ(joined.size(), reference.size());
+    for (const auto &[name, bytes] : reference) {
+        const auto it = joined.find(name);
+        CHECK_MSG(it != joined.end(), demo + ": " + name + " missing from the split runs");
+        if (it != joined.end()) CHECK_MSG(it->second == bytes, demo + ": " + name + " differs between the runs");
+    }
+}
+
+}  // namespace
+
+TEST(cube_in_two_halves_equals_one_run) { check_halves_equal_full_run("cube", {}); }
+
+TEST(bad_frame_ranges_fail_with_a_message) {
+    const std::string program = demo_path("cube");
+    CHECK_MSG(fs::exists(program), program + " is not built");
+    if (!fs::exists(program)) return;
+    temp_dir out, logs;
+    for (const std::string bad : {"5:2", "0:100000", "-1:3", "abc", "3", "1:2:3", ""}) {
+        const run_result r = run(program, {"--out", out.path.string(), "--size", frame_size, "--frames", bad},
+                                 logs.path / "bad.err");
+        CHECK_MSG(r.exit_code != 0, "--frames '" + bad + "' was accepted");
+        CHECK_MSG(r.err.find("--frames") != std::string::npos, "--frames '" + bad + "': message was: " + r.err);
+    }
+    const run_result missing = run(program, {"--out", out.path.string(), "--frames"}, logs.path / "m.err");
+    CHECK(missing.exit_code != 0);
+    CHECK(!missing.err.empty());
+    // Nothing was written by the refused runs.
+    CHECK(files_in(out.path).empty());
+}
