@@ -105,6 +105,28 @@ bench: $(BENCH_BINS) $(BUILD)/bench/tools/summary
 # summary tool, bench-callgrind, docs-charts, docs-tables
 include tests/bench/bench.mk
 
+# ---- fuzzing (clang + libFuzzer; not part of `make test`): make fuzz FUZZ_SECONDS=N ----
+# The library is compiled again with clang and the sanitizers under $(BUILD)/fuzz/.
+FUZZ_CXX     ?= clang++
+FUZZ_SECONDS ?= 60
+FUZZ_FLAGS   := $(STD) -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=all
+FUZZ_OBJS    := $(LIB_SRCS:%.cpp=$(BUILD)/fuzz/obj/%.o)
+FUZZ_BINS    := $(patsubst tests/fuzz/%.cpp,$(BUILD)/fuzz/%,$(sort $(wildcard tests/fuzz/fuzz_*.cpp)))
+
+$(BUILD)/fuzz/obj/%.o: %.cpp
+	@mkdir -p $(@D)
+	$(FUZZ_CXX) $(FUZZ_FLAGS) -fsanitize=fuzzer-no-link $(CPPFLAGS) -c $< -o $@
+
+$(BUILD)/fuzz/libtiny3d.a: $(FUZZ_OBJS)
+	rm -f $@ && ar rcs $@ $^
+
+$(BUILD)/fuzz/fuzz_%: tests/fuzz/fuzz_%.cpp $(BUILD)/fuzz/libtiny3d.a
+	$(FUZZ_CXX) $(FUZZ_FLAGS) -fsanitize=fuzzer $(CPPFLAGS) $< $(BUILD)/fuzz/libtiny3d.a -o $@ $(LDLIBS)
+
+.PHONY: fuzz
+fuzz: $(FUZZ_BINS)
+	bash tests/fuzz/run_fuzz.sh $(BUILD) $(FUZZ_SECONDS) $(FUZZ_BINS)
+
 clean:
 	rm -rf $(BUILD)
 

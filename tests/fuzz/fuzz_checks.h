@@ -1,0 +1,163 @@
+// tests/fuzz/fuzz_checks.h — what "no crash, no garbage" means for a loaded file.
+//
+// Shared by the libFuzzer targets (tests/fuzz/fuzz_*.cpp, clang) and by
+// tests/fuzz_regression_test.cpp (g++, part of `make test`), so a crash input kept under
+// tests/fuzz/regressions/ is judged by exactly the checks the fuzzer applied.
+//
+// Every check returns an empty string when the outcome is acceptable, otherwise a sentence
+// saying what was wrong. Acceptable means:
+//  * an error that names the file it was given (error::file) and a non-empty reason, or
+//  * a value that satisfies every invariant the headers promise: a mesh that passes
+//    mesh_validate with finite positions and attributes, sorted unique edges, face and
+//    vertex normals that are unit or zero, an adjacency that accounts for every face edge,
+//    a bounding sphere that holds every position; an image of legal size with every
+//    intensity in 0..1. A loaded mesh is then also rasterised (small meshes only) onto a
+//    small canvas, and every pixel must stay in 0..1: loader output must be safe to draw.
+#ifndef TINY3D_FUZZ_CHECKS_H
+#define TINY3D_FUZZ_CHECKS_H
+
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+#include "canvas.h"
+#include "lighting.h"
+#include "loaders.h"
+#include "math3d.h"
+#include "mesh.h"
+#include "raster.h"
+
+namespace fuzz_checks {
+
+// Meshes bigger than this are only checked, not rendered (keeps each fuzz run fast).
+inline constexpr std::size_t RENDER_MAX_TRIANGLES = 4096;
+inline constexpr int RENDER_SIDE = 24;  // px, the check canvas
+// |n| of a normal reported as unit (float normalisation of any finite vector).
+inline constexpr double UNIT_TOLERANCE = 1e-4;
+// Slack of the bounding sphere test, relative to the radius (float rounding of centre and
+// radius).
+inline constexpr double SPHERE_SLACK = 1e-5;
+
+inline bool finite3(vec3_t v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+inline double length_d(vec3_t v) {
+    return std::sqrt(double(v.x) * v.x + double(v.y) * v.y + double(v.z) * v.z);
+}
+
+// A normal must be (0, 0, 0) or unit length.
+inline bool unit_or_zero(vec3_t n) {
+    if (!finite3(n)) return false;
+    if (n.x == 0.0f && n.y == 0.0f && n.z == 0.0f) return true;
+    return std::fabs(length_d(n) - 1.0) <= UNIT_TOLERANCE;
+}
+
+inline std::string check_error(const tiny3d::error &e, const std::string &name) {
+    if (e.file != name) return "the error names '" + e.file + "' instead of '" + name + "': " + e.message();
+    if (e.reason.empty()) return "the error has no reason";
+    return {};
+}
+
+inline std::string check_canvas_values(const canvas_t &c) {
+    if (c.width <= 0 || c.height <= 0 || !c.data || !c.pixels) return "invalid canvas returned";
+    const std::size_t n = std::size_t(c.width) * std::size_t(c.height);
+    for (std::size_t i = 0; i < n; ++i)
+        if (!(c.data[i] >= 0.0f && c.data[i] <= 1.0f))
+            return "pixel " + std::to_string(i) + " holds " + std::to_string(c.data[i]) + ", outside 0..1";
+    for (int y = 0; y < c.height; ++y)
+        if (c.pixels[y] != c.data + std::size_t(y) * std::size_t(c.width)) return "row pointer mismatch";
+    return {};
+}
+
+// Rasterises the mesh (flat and Gouraud, no culling) framed by its bounding sphere, and
+// checks the image. Only called for meshes that passed the structural checks.
+inline std::string check_renders(const tiny3d::mesh &m) {
+    const tiny3d::bounding_sphere bounds = tiny3d::mesh_bounding_sphere(m);
+    if (!(bounds.radius > 0.0f) || !std::isfinite(bounds.radius)) return {};  // nothing to frame
+    tiny3d::result<tiny3d::raster_mesh> rm = tiny3d::make_raster_mesh(m, tiny3d::mesh_vertex_normals(m));
+    if (!rm) return "make_raster_mesh rejected a valid mesh: " + rm.message();
+    tiny3d::result<tiny3d::canvas_ptr> canvas = tiny3d::make_canvas(RENDER_SIDE, RENDER_SIDE);
+    if (!canvas) return "make_canvas failed";
+    const light_t light = {{0.3f, 0.5f, 1.0f}, 0.8f};
+    tiny3d::result<tiny3d::light_rig> rig = tiny3d::make_light_rig({&light, 1}, 0.1f);
+    if (!rig) return "make_light_rig failed";
+    // Model: centre the mesh and scale it to radius 1, 3 units in front of the camera.
+    const float s = 1.0f / bounds.radius;
+    const mat4_t model = mat4_multiply(mat4_translate(0.0f, 0.0f, -3.0f),
+                                       mat4_multiply(mat4_scale(s, s, s),
+                                                     mat4_translate(-bounds.center.x, -bounds.center.y,
+                                                                    -bounds.center.z)));
+    tiny3d::render_context ctx(1);
+    for (tiny3d::shading shade : {tiny3d::shading::flat, tiny3d::shading::gouraud}) {
+        if (!ctx.begin_frame(**canvas)) return "begin_frame failed";
+        tiny3d::draw_params p{};
+        p.model = model;
+        p.view_projection = tiny3d::mat4_perspective(1.0f, 1.0f, 0.5f, 10.0f);
+        p.lights = *rig;
+        p.shade = shade;
+        p.cull = tiny3d::cull_mode::none;
+        ctx.draw(*rm, p);
+        ctx.end_frame();
+        if (std::string e = check_canvas_values(**canvas); !e.empty()) return "rendered image: " + e;
+    }
+    return {};
+}
+
+inline std::string check_mesh(const tiny3d::result<tiny3d::mesh> &r, const std::string &name) {
+    if (!r) return check_error(r.err(), name);
+    const tiny3d::mesh &m = *r;
+    if (tiny3d::status s = tiny3d::mesh_validate(m); !s) return "invalid mesh returned: " + s.message();
+    for (std::size_t i = 0; i < m.positions.size(); ++i)
+        if (!finite3(m.positions[i])) return "position " + std::to_string(i) + " is not finite";
+    for (const tiny3d::vec2 &uv : m.corner_uvs)
+        if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) return "a corner uv is not finite";
+    for (const vec3_t &n : m.corner_normals)
+        if (!finite3(n)) return "a corner normal is not finite";
+    for (std::size_t e = 0; e < m.edges.size(); ++e) {
+        if (!(m.edges[e].a < m.edges[e].b)) return "edge " + std::to_string(e) + " is not stored with a < b";
+        if (e > 0 && !(m.edges[e - 1].a < m.edges[e].a ||
+                       (m.edges[e - 1].a == m.edges[e].a && m.edges[e - 1].b < m.edges[e].b)))
+            return "edges not sorted and unique at " + std::to_string(e);
+    }
+    for (const vec3_t &n : tiny3d::mesh_face_normals(m))
+        if (!unit_or_zero(n)) return "a face normal is neither unit nor zero";
+    for (const vec3_t &n : tiny3d::mesh_vertex_normals(m))
+        if (!unit_or_zero(n)) return "a vertex normal is neither unit nor zero";
+    const tiny3d::edge_adjacency adj = tiny3d::mesh_edge_faces(m);
+    if (adj.start.size() != m.edges.size() + 1 || adj.faces.size() != adj.start.back())
+        return "edge adjacency has the wrong shape";
+    for (std::uint32_t f : adj.faces)
+        if (f >= m.face_count()) return "edge adjacency names a face out of range";
+    const tiny3d::bounding_sphere bs = tiny3d::mesh_bounding_sphere(m);
+    if (m.positions.empty() != (bs.radius < 0.0f)) return "bounding sphere radius sign is wrong";
+    for (const vec3_t &p : m.positions) {
+        // In double: p − centre may overflow float for coordinates near FLT_MAX.
+        const double dx = double(p.x) - bs.center.x, dy = double(p.y) - bs.center.y, dz = double(p.z) - bs.center.z;
+        const double dist = std::sqrt(dx * dx + dy * dy + dz * dz);
+        if (dist > double(bs.radius) * (1.0 + SPHERE_SLACK)) return "a position lies outside the bounding sphere";
+    }
+    const std::vector<tiny3d::corner_triangle> tris = tiny3d::mesh_triangles(m);
+    if (tris.size() <= RENDER_MAX_TRIANGLES) return check_renders(m);
+    return {};
+}
+
+inline std::string check_obj(std::string_view bytes, const std::string &name) {
+    return check_mesh(tiny3d::parse_obj(bytes, name), name);
+}
+
+inline std::string check_ply(std::string_view bytes, const std::string &name) {
+    return check_mesh(tiny3d::parse_ply(bytes, name), name);
+}
+
+// The PNM reader is path based: `path` names a file holding the bytes.
+inline std::string check_pnm_file(const std::string &path) {
+    tiny3d::result<tiny3d::canvas_ptr> r = tiny3d::load_pgm(path);
+    if (!r) return check_error(r.err(), path);
+    const canvas_t &c = **r;
+    if (tiny3d::status s = tiny3d::check_canvas_size(c.width, c.height); !s) return "canvas beyond limits returned";
+    return check_canvas_values(c);
+}
+
+}  // namespace fuzz_checks
+
+#endif
