@@ -1,5 +1,5 @@
 // pipeline.h — projection, viewport, clipping, frustum culling and wireframes (part of the
-// renderer module; renderer.h includes it). Implementations: src/renderer/projection.cpp,
+// renderer module; renderer.h includes it). Implementations: src/renderer/vertex_projection.cpp,
 // src/renderer/clipping.cpp, src/renderer/wireframe.cpp.
 //
 // Stages, as data flows:
@@ -59,7 +59,7 @@ void render_wireframe(canvas_t *canvas, vec3_t *vertices, int vertex_count, int 
 
 namespace tiny3d {
 
-// ---- projection and viewport (src/renderer/projection.cpp) ----------------------------
+// ---- projection and viewport (src/renderer/vertex_projection.cpp) ----------------------------
 
 struct screen_point {
     float x, y;     // pixels (viewport convention above)
@@ -84,7 +84,7 @@ screen_point project_point(vec3_t v, const mat4_t &model_view_proj, int width, i
 // [t0, t1]; visible = false when nothing remains.
 struct segment_clip {
     bool visible;
-    float t0, t1;
+    double t0, t1;  // double: a float t would cost up to ~1e-4 px on a 2000-px segment
 };
 
 // The clip-space planes, inside where the named signed distance is ≥ 0.
@@ -146,12 +146,12 @@ cull_result cull_sphere(const frustum &f, const bounding_sphere &s);
 // ---- wireframes (src/renderer/wireframe.cpp) ------------------------------------------
 
 enum class line_method {
-    faithful,  // the report's draw_line_f (additive splats)
-    coverage,  // tiny3d::draw_line_coverage when the canvas module provides it; until
-               // then the same as faithful (wireframe_line_method_available says which)
+    faithful,  // the report's draw_line_f (additive splats). It has no intensity: every
+               // edge with ink > 0 is drawn at full ink (per-edge intensity and depth cueing
+               // only decide which edges are skipped, ink ≤ 0)
+    coverage,  // tiny3d::draw_line_coverage: exact area coverage, round caps, combined
+               // "over" (v += c·(1 − v)) with c = ink · coverage
 };
-// False when `method` falls back to another one in this build.
-bool wireframe_line_method_available(line_method method);
 
 struct wireframe_options {
     line_method method = line_method::faithful;
