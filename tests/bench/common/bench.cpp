@@ -134,18 +134,25 @@ tiny3d::status write_chart(const std::string &path, const std::vector<row> &rows
     return tiny3d::save_pgm(**canvas, path);
 }
 
-timing measure_ns(int repeats, double work_units, const std::function<void()> &fn) {
+// The warm-up and timed runs of one measure_ns call. Kept out of line under its own
+// name so `make bench-callgrind` (tests/bench/callgrind.sh) can count its instructions
+// alone: it collects only inside timed_runs and dumps before each measure_ns call.
+[[gnu::noinline]] static void timed_runs(const std::function<void()> &fn, std::vector<double> &per_unit, double units) {
     using clock = std::chrono::steady_clock;
-    const int runs = std::max(repeats, 1);
-    const double units = work_units > 0 ? work_units : 1.0;
     fn();  // warm-up: caches, page faults, lazy allocation
-    std::vector<double> per_unit(std::size_t(runs), 0.0);
     for (double &t : per_unit) {
         const auto start = clock::now();
         fn();
         const auto stop = clock::now();
         t = std::chrono::duration<double, std::nano>(stop - start).count() / units;
     }
+}
+
+timing measure_ns(int repeats, double work_units, const std::function<void()> &fn) {
+    const int runs = std::max(repeats, 1);
+    const double units = work_units > 0 ? work_units : 1.0;
+    std::vector<double> per_unit(std::size_t(runs), 0.0);
+    timed_runs(fn, per_unit, units);
     std::sort(per_unit.begin(), per_unit.end());
     const std::size_t n = per_unit.size();
     const double median = n % 2 ? per_unit[n / 2] : 0.5 * (per_unit[n / 2 - 1] + per_unit[n / 2]);
