@@ -14,6 +14,11 @@ namespace tiny3d {
 namespace {
 
 constexpr int MAX_THREADS = 16;
+// The frame is cut into horizontal bands of BAND_ROWS rows (at most MAX_BANDS), so that one
+// band's colour and depth rows stay in cache while all its triangles are drawn; thread t
+// draws bands t, t + n, t + 2n, …
+constexpr int BAND_ROWS = 32;
+constexpr int MAX_BANDS = 128;
 // Guard band: the x/y clip planes sit at |x|, |y| ≤ guard·w, chosen so that the whole band
 // spans fewer pixels than the 32-bit fill allows; never tighter than the frustum itself.
 constexpr float GUARD_SPAN_PIXELS = 2000.0f;
@@ -161,14 +166,21 @@ struct render_context::impl {
         std::vector<detail::fast_triangle> fast;
         std::vector<triangle_edges> wide;
         std::vector<generic_triangle> generic;
-        std::vector<std::uint32_t> bins[MAX_THREADS];  // fast-triangle indices per band
+        std::vector<std::uint32_t> bins[MAX_BANDS];  // fast-triangle indices per band
         frame_stats stats;
     };
     segment segments[MAX_THREADS];
     std::vector<draw_state> states;              // this frame's draw calls
     std::vector<generic_triangle> translucent;   // queued for end_frame
 
-    int bands() const { return pool.size(); }
+    int band_count = 1;  // set per frame
+    int bands() const { return band_count; }
+    int band_of(int y) const {  // the band holding row y (inverse of band_y0)
+        int b = static_cast<int>(static_cast<long long>(y) * bands() / target->height);
+        while (b + 1 < bands() && band_y0(b + 1) <= y) ++b;
+        while (b > 0 && band_y0(b) > y) --b;
+        return b;
+    }
     int band_y0(int b) const { return static_cast<int>(static_cast<long long>(target->height) * b / bands()); }
 
     void clear_band(int b) {
@@ -189,8 +201,7 @@ struct render_context::impl {
         if (f.wide >= 0) out.wide.push_back(t);
         const std::uint32_t index = static_cast<std::uint32_t>(out.fast.size());
         out.fast.push_back(f);
-        for (int b = 0; b < bands(); ++b)
-            if (f.min_y < band_y0(b + 1) && f.max_y >= band_y0(b)) out.bins[b].push_back(index);
+        for (int b = band_of(f.min_y); b <= band_of(f.max_y); ++b) out.bins[b].push_back(index);
     }
     void emit(const clip_vertex *poly, int n, const draw_params &p, std::uint32_t state, bool generic, segment &out);
     void draw_generic(const generic_triangle &g, int y0, int y1);
@@ -353,6 +364,8 @@ status render_context::begin_frame(canvas_t &target, float clear_intensity) {
     s.stats = {};
     s.states.clear();
     s.translucent.clear();
+    s.band_count = std::clamp(target.height / BAND_ROWS, s.pool.size(), MAX_BANDS);
+    s.band_count = std::min(s.band_count, std::max(target.height, 1));
     s.guard = std::clamp(GUARD_SPAN_PIXELS / static_cast<float>(std::max(target.width, target.height)), 1.0f, MAX_GUARD);
     return {};
 }
@@ -387,7 +400,7 @@ void render_context::draw(const raster_mesh &mesh, const draw_params &params) {
         seg.wide.clear();
         seg.generic.clear();
         seg.stats = {};
-        for (int b = 0; b < n; ++b) seg.bins[b].clear();
+        for (int b = 0; b < s.bands(); ++b) seg.bins[b].clear();
         s.setup(mesh, params, state, generic, nt * t / n, nt * (t + 1) / n, seg);
     };
     s.pool.run(phase_triangles);
@@ -398,7 +411,8 @@ void render_context::draw(const raster_mesh &mesh, const draw_params &params) {
                 s.translucent.push_back(g);
             }
     }
-    auto phase_raster = [&](int band) {
+    auto phase_raster = [&](int thread) {
+      for (int band = thread; band < s.bands(); band += n) {
         const int y0 = s.band_y0(band), y1 = s.band_y0(band + 1);
         if (s.pending_clear) s.clear_band(band);
         for (int t = 0; t < n; ++t) {
@@ -411,6 +425,7 @@ void render_context::draw(const raster_mesh &mesh, const draw_params &params) {
             if (params.alpha >= 1.0f)
                 for (const generic_triangle &g : seg.generic) s.draw_generic(g, y0, y1);
         }
+      }
     };
     s.pool.run(phase_raster);
     s.pending_clear = false;
@@ -429,10 +444,13 @@ void render_context::end_frame() {
     std::sort(s.translucent.begin(), s.translucent.end(), [](const generic_triangle &a, const generic_triangle &b) {
         return a.mean_depth != b.mean_depth ? a.mean_depth > b.mean_depth : a.sequence < b.sequence;
     });
-    auto phase = [&](int band) {
-        const int y0 = s.band_y0(band), y1 = s.band_y0(band + 1);
-        if (s.pending_clear) s.clear_band(band);
-        for (const generic_triangle &g : s.translucent) s.draw_generic(g, y0, y1);
+    const int n = s.pool.size();
+    auto phase = [&](int thread) {
+        for (int band = thread; band < s.bands(); band += n) {
+            const int y0 = s.band_y0(band), y1 = s.band_y0(band + 1);
+            if (s.pending_clear) s.clear_band(band);
+            for (const generic_triangle &g : s.translucent) s.draw_generic(g, y0, y1);
+        }
     };
     s.pool.run(phase);
     s.pending_clear = false;
