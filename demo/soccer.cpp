@@ -1,0 +1,82 @@
+// soccer.cpp — the libtiny3d report's Task 3 demo: the soccer ball (truncated icosahedron,
+// 60 vertices, 90 edges) turning inside a circular viewport, 60 frames per full turn about
+// the y axis (frame k at angle 2π·k/60, so frame 60 would equal frame 0), 512×512 default.
+// Edges are clipped in clip space, then to the circle inscribed in the canvas (the
+// report's circular viewport), drawn far to near with anti-aliased coverage lines and
+// depth cueing (far edges dimmer); the circle's rim is drawn as a thin ring.
+//
+//   soccer [--out DIR] [--frames A:B] [--size WxH]   → DIR/frame_000.pgm … frame_059.pgm
+#include <cmath>
+#include <string>
+
+#include "common/demo_cli.h"
+#include "renderer.h"
+
+namespace {
+
+constexpr int kSize = 512;
+constexpr int kFramesPerTurn = 60;
+constexpr float kTilt = 0.35f;          // radians about x, so the poles are not edge-on
+constexpr float kDistance = 2.6f;       // ball centre at z = −2.6: the ball overlaps the circle
+constexpr float kFovY = 0.75f;          // radians
+constexpr float kEdgeThickness = 1.6f;  // px
+constexpr float kFarInk = 0.3f;         // depth cue: ink of the farthest edges
+constexpr float kRimThickness = 1.0f;
+constexpr float kRimInk = 0.5f;
+constexpr int kRimSegments = 180;
+
+float frame_angle(int frame) { return float(2.0 * M_PI * (frame % kFramesPerTurn) / kFramesPerTurn); }
+
+// The circular viewport's rim as a polygon of short coverage lines.
+void draw_rim(canvas_t &canvas) {
+    const tiny3d::circle c = tiny3d::circular_viewport(canvas);
+    const float r = c.radius - kRimThickness;
+    tiny3d::line_style style;
+    style.intensity = kRimInk;
+    for (int i = 0; i < kRimSegments; ++i) {
+        const double a0 = 2.0 * M_PI * i / kRimSegments, a1 = 2.0 * M_PI * (i + 1) / kRimSegments;
+        tiny3d::draw_line_coverage(&canvas, c.cx + r * float(std::cos(a0)), c.cy + r * float(std::sin(a0)),
+                                   c.cx + r * float(std::cos(a1)), c.cy + r * float(std::sin(a1)), kRimThickness,
+                                   style);
+    }
+}
+
+}  // namespace
+
+int main(int argc, char **argv) {
+    auto parsed = demo::parse(argc, argv, "soccer", kSize, kSize, kFramesPerTurn);
+    if (!parsed) return demo::fail("soccer", parsed.message());
+    demo::options &o = *parsed;
+    if (tiny3d::status s = demo::check_no_rest(o, "soccer [--out DIR] [--frames A:B] [--size WxH]"); !s)
+        return demo::fail(o, s.message());
+    if (tiny3d::status s = demo::prepare_out_dir(o); !s) return demo::fail(o, s.message());
+    auto canvas = tiny3d::make_canvas(o.width, o.height);
+    if (!canvas) return demo::fail(o, canvas.message());
+
+    const tiny3d::mesh ball = tiny3d::make_soccer_ball(1.0f);
+    const tiny3d::bounding_sphere bounds = tiny3d::mesh_bounding_sphere(ball);
+    const mat4_t proj = tiny3d::mat4_perspective(kFovY, float(o.width) / float(o.height), 0.1f, 100.0f);
+    tiny3d::wireframe_options options;
+    options.method = tiny3d::line_method::coverage;
+    options.thickness = kEdgeThickness;
+    options.depth_cue = true;
+    options.depth_cue_far = kFarInk;
+    options.circular_viewport = true;
+    options.bounds = &bounds;
+    tiny3d::wireframe_workspace workspace;
+
+    demo::frame_timer timer("soccer", o.last_frame - o.first_frame + 1);
+    for (int frame = o.first_frame; frame <= o.last_frame; ++frame) {
+        timer.start();
+        canvas_clear(canvas->get(), 0.0f);
+        const mat4_t model = mat4_multiply(mat4_translate(0, 0, -kDistance),
+                                           mat4_multiply(mat4_rotate_xyz(kTilt, 0, 0), tiny3d::mat4_rotate_y(frame_angle(frame))));
+        if (tiny3d::status s = tiny3d::render_wireframe(**canvas, ball, mat4_multiply(proj, model), options, workspace); !s)
+            return demo::fail(o, s.message());
+        draw_rim(**canvas);
+        timer.stop();
+        if (tiny3d::status s = demo::save_frame(**canvas, demo::frame_path(o, frame)); !s) return demo::fail(o, s.message());
+    }
+    timer.report();
+    return 0;
+}
