@@ -92,8 +92,8 @@ std::string tick_label(double value, axis_scale scale);
 inline constexpr int marker_count = 13;
 
 // Draws marker `index` centred at (x, y) (pixel coordinates, centres at +0.5) with
-// half-size `radius` pixels, ink 1 (outlines with draw_line_f; filled shapes by pixel
-// coverage of their centre). Non-finite positions or radius ≤ 0 draw nothing.
+// half-size `radius` pixels, ink 1 (outlines with draw_line_coverage, 1 px wide; filled
+// shapes also set every pixel whose centre is inside). Non-finite positions or radius ≤ 0 draw nothing.
 void draw_marker(canvas_t &canvas, double x, double y, int index, double radius);
 
 // ---- charts ----------------------------------------------------------------------------
@@ -142,7 +142,7 @@ inline constexpr int chart_min_height = 160;
 
 // Clears the canvas and draws the whole chart as dark ink on white paper (intensity 1 =
 // paper): title on top, y axis title (vertical) and tick labels on the left, x ticks and
-// title below, dotted grid lines at the ticks, one marker per point (marker i for point
+// title below, light grid lines at the ticks, one marker per point (marker i for point
 // i) and a legend on the right (marker + label; labels shortened with ".." to fit). All
 // text stays inside the canvas. Fails (canvas untouched) when the canvas is smaller than
 // chart_min_width × chart_min_height or a given axis range is invalid.

@@ -22,9 +22,8 @@ constexpr double legend_share = 0.38;   // the legend takes at most this share o
 constexpr int min_plot_side = 40;       // the plot area is never smaller than this
 constexpr double marker_radius = 3.5;
 constexpr double legend_marker_radius = 3.0;
-constexpr float line_thickness = 1.0f;  // draw_line_f thickness for frame, ticks, markers
-constexpr float grid_intensity = 0.3f;  // dotted grid: ink of one dot
-constexpr int grid_dot_pitch = 3;       // one grid dot every this many pixels
+constexpr float line_thickness = 1.0f;  // frame, ticks, whiskers and marker outlines
+constexpr float grid_intensity = 0.2f;  // grid lines: a light grey once inverted
 constexpr int min_linear_intervals = 8; // axis_ticks aims at span / 8 (gives 4..9 ticks)
 constexpr double tick_tolerance = 1e-9; // relative slack when a tick sits on a range end
 constexpr double end_padding = 0.05;    // choose_axis keeps values this share (of the span
@@ -54,9 +53,12 @@ std::string fit_text(std::string text, int max_width, int scale) {
     return text_width("..", scale) <= max_width ? ".." : "";
 }
 
-// Draws the kind of ink every chart uses (white on black; draw_chart inverts at the end).
-void line(canvas_t &c, double x0, double y0, double x1, double y1) {
-    draw_line_f(&c, float(x0), float(y0), float(x1), float(y1), line_thickness);
+// Draws the kind of ink every chart uses (white on black; draw_chart inverts at the end):
+// the exact-coverage line, so a line along pixel centres is exactly one pixel wide.
+void line(canvas_t &c, double x0, double y0, double x1, double y1, float intensity = 1.0f) {
+    line_style style;
+    style.intensity = intensity;
+    draw_line_coverage(&c, float(x0), float(y0), float(x1), float(y1), line_thickness, style);
 }
 
 // Places text with its top-left corner at (x, y), moved as little as needed to keep it
@@ -334,14 +336,12 @@ result<chart_layout> draw_chart(canvas_t &canvas, const chart_spec &spec) {
     const auto to_x = [&](double v) { return axis_to_pixel(layout.x_axis, v, layout.plot_left, layout.plot_right); };
     const auto to_y = [&](double v) { return axis_to_pixel(layout.y_axis, v, layout.plot_bottom, layout.plot_top); };
 
-    // Grid (dotted), frame, ticks and tick labels.
+    // Grid, frame, ticks and tick labels.
     std::vector<double> x_pixels, y_pixels;
     for (const double t : x_ticks) x_pixels.push_back(to_x(t));
     for (const double t : y_ticks) y_pixels.push_back(to_y(t));
-    for (const double px : x_pixels)
-        for (int py = frame_top; py <= frame_bottom; py += grid_dot_pitch) set_pixel_f(&canvas, float(px), py + 0.5f, grid_intensity);
-    for (const double py : y_pixels)
-        for (int px = frame_left; px <= frame_right; px += grid_dot_pitch) set_pixel_f(&canvas, px + 0.5f, float(py), grid_intensity);
+    for (const double px : x_pixels) line(canvas, px, layout.plot_top, px, layout.plot_bottom, grid_intensity);
+    for (const double py : y_pixels) line(canvas, layout.plot_left, py, layout.plot_right, py, grid_intensity);
     line(canvas, layout.plot_left, layout.plot_bottom, layout.plot_right, layout.plot_bottom);
     line(canvas, layout.plot_left, layout.plot_top, layout.plot_right, layout.plot_top);
     line(canvas, layout.plot_left, layout.plot_top, layout.plot_left, layout.plot_bottom);
