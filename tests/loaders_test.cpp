@@ -17,25 +17,21 @@ const std::string data_dir = "tests/data/";
 
 bool same(vec3_t a, vec3_t b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
 
-// Checks that r failed at `line` (text) with a reason containing `words`.
-void expect_line_error(const result<mesh> &r, long line, const std::string &words, int at) {
+// Checks that r failed at `place` — a 1-based line (text) or a byte offset (binary) — with
+// a reason containing `words`.
+enum class place_kind { line, byte };
+void expect_error(const result<mesh> &r, place_kind kind, long place, const std::string &words, int at) {
+    const std::string where = (kind == place_kind::line ? "line " : "byte ") + std::to_string(place);
     if (r.ok()) {
-        tiny_test::fail(__FILE__, at, "expected an error at line " + std::to_string(line) + ", got a mesh");
+        tiny_test::fail(__FILE__, at, "expected an error at " + where + ", got a mesh");
         return;
     }
-    if (r.err().line != line || r.err().reason.find(words) == std::string::npos)
-        tiny_test::fail(__FILE__, at, "expected line " + std::to_string(line) + " '" + words + "', got: " + r.message());
+    const long got = kind == place_kind::line ? r.err().line : r.err().byte_offset;
+    if (got != place || r.err().reason.find(words) == std::string::npos)
+        tiny_test::fail(__FILE__, at, "expected " + where + " '" + words + "', got: " + r.message());
 }
-void expect_byte_error(const result<mesh> &r, long offset, const std::string &words, int at) {
-    if (r.ok()) {
-        tiny_test::fail(__FILE__, at, "expected an error at byte " + std::to_string(offset) + ", got a mesh");
-        return;
-    }
-    if (r.err().byte_offset != offset || r.err().reason.find(words) == std::string::npos)
-        tiny_test::fail(__FILE__, at, "expected byte " + std::to_string(offset) + " '" + words + "', got: " + r.message());
-}
-#define EXPECT_LINE_ERROR(r, line, words) expect_line_error(r, line, words, __LINE__)
-#define EXPECT_BYTE_ERROR(r, off, words) expect_byte_error(r, off, words, __LINE__)
+#define EXPECT_LINE_ERROR(r, line, words) expect_error(r, place_kind::line, line, words, __LINE__)
+#define EXPECT_BYTE_ERROR(r, off, words) expect_error(r, place_kind::byte, off, words, __LINE__)
 
 // ---- a tiny binary PLY writer (both byte orders, any scalar type) ----
 struct ply_writer {
