@@ -121,6 +121,10 @@ void check_halves_equal_full_run(const std::string &demo, const std::vector<std:
 }  // namespace
 
 TEST(cube_in_two_halves_equals_one_run) { check_halves_equal_full_run("cube", {}); }
+TEST(soccer_in_two_halves_equals_one_run) { check_halves_equal_full_run("soccer", {}); }
+TEST(wireframe_in_two_halves_equals_one_run) { check_halves_equal_full_run("wireframe", {"tests/data/cube_quads.obj"}); }
+// Filled and shaded frames with two worker threads: the split must not change a pixel.
+TEST(shaded_in_two_halves_equals_one_run) { check_halves_equal_full_run("shaded", {"--threads", "2"}); }
 
 TEST(bad_frame_ranges_fail_with_a_message) {
     const std::string program = demo_path("cube");
