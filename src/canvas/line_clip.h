@@ -8,11 +8,13 @@ namespace tiny3d::detail {
 
 // Liang–Barsky: the parameter interval [t0, t1] ⊂ [0, 1] of P(t) = P0 + t·D that lies in
 // the box [xmin, xmax] × [ymin, ymax]; false if the segment misses the box. Double
-// precision, so endpoints of ±1e9 and beyond clip to within 1e-6 px.
-inline bool clip_parameter_range(double x0, double y0, double dx, double dy, double xmin, double ymin,
-                                 double xmax, double ymax, double &t0, double &t1) {
+// precision. side0 / side1 say which box side (0 xmin, 1 xmax, 2 ymin, 3 ymax) moved
+// each end, −1 for an end that was not clipped.
+inline bool liang_barsky(double x0, double y0, double dx, double dy, double xmin, double ymin, double xmax,
+                         double ymax, double &t0, double &t1, int &side0, int &side1) {
     t0 = 0.0;
     t1 = 1.0;
+    side0 = side1 = -1;
     const double p[4] = {-dx, dx, -dy, dy};
     const double q[4] = {x0 - xmin, xmax - x0, y0 - ymin, ymax - y0};
     for (int i = 0; i < 4; ++i) {
@@ -23,13 +25,26 @@ inline bool clip_parameter_range(double x0, double y0, double dx, double dy, dou
         const double r = q[i] / p[i];
         if (p[i] < 0.0) {
             if (r > t1) return false;
-            if (r > t0) t0 = r;
+            if (r > t0) {
+                t0 = r;
+                side0 = i;
+            }
         } else {
             if (r < t0) return false;
-            if (r < t1) t1 = r;
+            if (r < t1) {
+                t1 = r;
+                side1 = i;
+            }
         }
     }
     return true;
+}
+
+// The parameter interval alone (see liang_barsky).
+inline bool clip_parameter_range(double x0, double y0, double dx, double dy, double xmin, double ymin,
+                                 double xmax, double ymax, double &t0, double &t1) {
+    int side0, side1;
+    return liang_barsky(x0, y0, dx, dy, xmin, ymin, xmax, ymax, t0, t1, side0, side1);
 }
 
 // a·d − b·c to within about an ulp of the result, even when the products nearly cancel
@@ -54,25 +69,10 @@ struct clipped_segment {
 inline bool clip_segment(double x0, double y0, double x1, double y1, double xmin, double ymin, double xmax,
                          double ymax, clipped_segment &out) {
     const double dx = x1 - x0, dy = y1 - y0;
-    const double p[4] = {-dx, dx, -dy, dy};
-    const double q[4] = {x0 - xmin, xmax - x0, y0 - ymin, ymax - y0};
     const double side[4] = {xmin, xmax, ymin, ymax};
-    double t0 = 0.0, t1 = 1.0;
-    int side0 = -1, side1 = -1;  // the box side each end was moved to (−1: not clipped)
-    for (int i = 0; i < 4; ++i) {
-        if (p[i] == 0.0) {
-            if (q[i] < 0.0) return false;
-            continue;
-        }
-        const double r = q[i] / p[i];
-        if (p[i] < 0.0) {
-            if (r > t1) return false;
-            if (r > t0) { t0 = r; side0 = i; }
-        } else {
-            if (r < t0) return false;
-            if (r < t1) { t1 = r; side1 = i; }
-        }
-    }
+    double t0, t1;
+    int side0, side1;  // the box side each end was moved to (−1: not clipped)
+    if (!liang_barsky(x0, y0, dx, dy, xmin, ymin, xmax, ymax, t0, t1, side0, side1)) return false;
     const double cross = (side0 >= 0 || side1 >= 0) ? difference_of_products(x0, y1, x1, y0) : 0.0;
     auto on_side = [&](int i, double &x, double &y) {
         if (i < 2) {
@@ -90,7 +90,8 @@ inline bool clip_segment(double x0, double y0, double x1, double y1, double xmin
 }
 
 // The "over" combine used by the anti-aliased lines: v ← v + c·(1 − v), for c, v in 0..1.
-inline void combine_over(float &pixel, float c) { pixel += c * (1.0f - pixel); }
+// c is clamped to ≤ 1 so float rounding of a coverage (1 + 1 ulp) never lifts a pixel above 1.
+inline void combine_over(float &pixel, float c) { pixel += (c < 1.0f ? c : 1.0f) * (1.0f - pixel); }
 
 }  // namespace tiny3d::detail
 
