@@ -30,7 +30,7 @@ void expect_error(const result<mesh> &r, place_kind kind, long place, const std:
     if (got != place || r.err().reason.find(words) == std::string::npos)
         tiny_test::fail(__FILE__, at, "expected " + where + " '" + words + "', got: " + r.message());
 }
-#define EXPECT_LINE_ERROR(r, line, words) expect_error(r, place_kind::line, line, words, __LINE__)
+#define EXPECT_LINE_ERROR(r, at_line, words) expect_error(r, place_kind::line, at_line, words, __LINE__)
 #define EXPECT_BYTE_ERROR(r, off, words) expect_error(r, place_kind::byte, off, words, __LINE__)
 
 // ---- a tiny binary PLY writer (both byte orders, any scalar type) ----
