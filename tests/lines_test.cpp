@@ -167,6 +167,16 @@ TEST(coverage_over_combine) {
     // Full coverage saturates at exactly 1.
     tiny3d::draw_line_coverage(c.get(), 0.0f, 1.5f, 8.0f, 1.5f, 1.0f);
     CHECK_EQ(c->pixels[1][3], 1.0f);
+    // Many overlapping strokes never push a pixel above 1.
+    std::mt19937 rng(5);
+    canvas_ptr d = blank(64, 64);
+    for (int k = 0; k < 300; ++k) {
+        const placed_segment p = random_segment(rng, 3.0);
+        tiny3d::draw_line_coverage(d.get(), p.s.x0 * 0.2f, p.s.y0 * 0.2f, p.s.x1 * 0.2f, p.s.y1 * 0.2f, 3.0f);
+    }
+    float top = 0.0f;
+    for (int i = 0; i < 64 * 64; ++i) top = std::max(top, d->data[i]);
+    CHECK(top <= 1.0f);
 }
 
 TEST(coverage_reversed_is_bit_identical) {

@@ -95,9 +95,11 @@ public:
             for (int j = 0; j < padded; j += 4, p += 4 * stride_, uv = _mm_add_ps(uv, du4_)) {
                 const __m128 cov = _mm_add_ps(centred4(_mm_sub_ps(hw_, uv)), centred4(_mm_add_ps(hw_, uv)));
                 const __m128 old = stride_ == 1 ? _mm_loadu_ps(p) : _mm_set_ps(p[3 * stride_], p[2 * stride_], p[stride_], p[0]);
-                // "over": v + c·(1 − v), c = intensity · coverage
+                // "over": v + c·(1 − v), c = min(intensity · coverage, 1) (the two band
+                // terms can sum to 1 + 1 ulp; unclamped, overlapping strokes reach 1.0000001)
                 alignas(16) float v[4];
-                _mm_store_ps(v, _mm_add_ps(old, _mm_mul_ps(_mm_mul_ps(ink4_, cov), _mm_sub_ps(one_, old))));
+                const __m128 c = _mm_min_ps(_mm_mul_ps(ink4_, cov), one_);
+                _mm_store_ps(v, _mm_add_ps(old, _mm_mul_ps(c, _mm_sub_ps(one_, old))));
                 if (stride_ == 1) {
                     _mm_storeu_ps(p, _mm_load_ps(v));
                 } else {
