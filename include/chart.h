@@ -74,7 +74,7 @@ double axis_to_pixel(const axis_range &range, double value, double p_lo, double 
 // decade inside), otherwise linear with ends rounded out to a multiple of a 1-2-5 step
 // (keeping 5% of the span free; starting at 0 when all values are ≥ 0 and the smallest is
 // below half the largest). Non-finite values are ignored; with none left the result is
-// [0, 1]; a single value v gets a range around v.
+// [0, 1], as when every value is 0; a single other value v gets a range around v.
 axis_range choose_axis(std::span<const double> values);
 
 // Tick positions inside the range (ends included when they fall on a tick): every power

@@ -280,6 +280,9 @@ TEST(choose_axis_uses_log_only_across_decades) {
     const axis_range none = tiny3d::choose_axis(std::span<const double>());
     CHECK_EQ(none.lo, 0.0);
     CHECK_EQ(none.hi, 1.0);
+    const std::vector<double> zeros = {0.0, 0.0};
+    CHECK_EQ(tiny3d::choose_axis(zeros).lo, 0.0);
+    CHECK_EQ(tiny3d::choose_axis(zeros).hi, 1.0);
     const std::vector<double> single = {5.0};
     const axis_range s = tiny3d::choose_axis(single);
     CHECK(s.lo < 5.0 && s.hi > 5.0);

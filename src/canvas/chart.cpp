@@ -183,8 +183,9 @@ axis_range choose_axis(std::span<const double> values) {
         const double e_lo = std::floor(std::log10(lo) - end_padding), e_hi = std::ceil(std::log10(hi) + end_padding);
         return {std::pow(10.0, e_lo), std::pow(10.0, e_hi), axis_scale::log10};
     }
+    if (lo == 0 && hi == 0) return {0.0, 1.0, axis_scale::linear};  // e.g. every error exactly 0
     if (lo == hi) {
-        const double half = lo == 0 ? 1.0 : std::abs(lo) / 2;
+        const double half = std::abs(lo) / 2;
         lo -= half;
         hi += half;
     } else if (lo >= 0 && lo < hi / 2) {
