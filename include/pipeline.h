@@ -208,6 +208,8 @@ public:
 // (= proj · view · model), clipped as clip_segment does and then to the circle if asked.
 // Errors (nothing drawn): an edge index ≥ positions.size(), edge_intensity of the wrong
 // size, hide_back_edges without a matching adjacency, thickness not finite or ≤ 0.
+// Skipped silently (not errors): edges with a NaN or infinite end, whether from a position
+// or from the matrix (tests/hostile_test.cpp).
 status render_wireframe(canvas_t &canvas, const mesh &m, const mat4_t &model_view_proj,
                         const wireframe_options &options, wireframe_workspace &workspace,
                         wireframe_stats *stats = nullptr);

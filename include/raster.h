@@ -258,7 +258,9 @@ public:
     // Clears colour to clear_intensity and depth to 1. Error if the canvas is invalid.
     status begin_frame(canvas_t &target, float clear_intensity = 0.0f);
     // Transforms, culls, clips, shades and rasterizes (opaque) or queues (alpha < 1) the
-    // mesh. Needs begin_frame first (otherwise does nothing).
+    // mesh. Needs begin_frame first (otherwise does nothing). Triangles with a NaN or
+    // infinite vertex (from a position or a non-finite matrix) are skipped, like zero-area
+    // ones; the rest of the mesh is drawn (tests/hostile_test.cpp).
     void draw(const raster_mesh &mesh, const draw_params &params);
     // Draws the queued translucent triangles back to front.
     void end_frame();

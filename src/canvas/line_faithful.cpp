@@ -35,6 +35,17 @@ void draw_line_f(canvas_t *c, float x0, float y0, float x1, float y1, float thic
     if (!clip_parameter_range(x0, y0, dx, dy, -margin, -margin, double(c->width) + margin,
                               double(c->height) + margin, t0, t1))
         return;
+    // Beyond 2^52 samples (ends ~1e15 px apart) the lattice index no longer fits exactly in
+    // double / int64 (casting would be UB): draw the clipped part as its own segment.
+    constexpr double max_lattice_steps = 4503599627370496.0;  // 2^52
+    // The clipped ends come from the stable implicit-equation clip (P0 + t·D cancels here).
+    if (steps_d > max_lattice_steps) {
+        tiny3d::detail::clipped_segment s;
+        if (tiny3d::detail::clip_segment(x0, y0, x1, y1, -margin, -margin, double(c->width) + margin,
+                                         double(c->height) + margin, s))
+            draw_line_f(c, float(s.x0), float(s.y0), float(s.x1), float(s.y1), thickness);
+        return;
+    }
     std::int64_t n_first = static_cast<std::int64_t>(std::floor(t0 * steps_d)) - 1;
     std::int64_t n_last = static_cast<std::int64_t>(std::ceil(t1 * steps_d)) + 1;
     if (n_first < 0) n_first = 0;

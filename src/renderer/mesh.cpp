@@ -23,11 +23,12 @@ vec3_t cross(vec3_t a, vec3_t b) {
 }
 float dot(vec3_t a, vec3_t b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 
-// v / |v|, or (0, 0, 0) when |v| is 0 or not finite.
+// v / |v|, or (0, 0, 0) when |v| is 0 or not finite. |v| in double: in float, |v|² of
+// a vector of 1e-23 underflows to 0 and of 1e20 overflows, losing real directions.
 vec3_t unit_or_zero(vec3_t v) {
-    const float len = std::sqrt(dot(v, v));
-    if (!(len > 0.0f) || !std::isfinite(len)) return {0.0f, 0.0f, 0.0f};
-    return v / len;
+    const double len = std::sqrt(double(v.x) * v.x + double(v.y) * v.y + double(v.z) * v.z);
+    if (!(len > 0.0) || !std::isfinite(len)) return {0.0f, 0.0f, 0.0f};
+    return {float(v.x / len), float(v.y / len), float(v.z / len)};
 }
 
 bool finite3(vec3_t v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
@@ -65,12 +66,18 @@ std::vector<vec3_t> mesh_face_normals(const mesh &m) {
     std::vector<vec3_t> normals(m.face_count(), vec3_t{0.0f, 0.0f, 0.0f});
     for (std::size_t f = 0; f < m.face_count(); ++f) {
         if (!face_in_range(m, f)) continue;
-        // Newell: n = Σ (p_k × p_{k+1}) / 2 is the polygon's vector area.
-        vec3_t sum{0.0f, 0.0f, 0.0f};
+        // Newell: n = Σ (p_k × p_{k+1}) / 2 is the polygon's vector area. Summed in double:
+        // products of float coordinates never overflow or underflow there (1e30·1e30 and
+        // 1e-30·1e-30 both fit), so huge and tiny faces keep their normal.
+        double sx = 0.0, sy = 0.0, sz = 0.0;
         for_each_face_edge(m, f, [&](std::uint32_t a, std::uint32_t b) {
-            sum += cross(m.positions[a], m.positions[b]);
+            const vec3_t &p = m.positions[a], &q = m.positions[b];
+            sx += double(p.y) * q.z - double(p.z) * q.y;
+            sy += double(p.z) * q.x - double(p.x) * q.z;
+            sz += double(p.x) * q.y - double(p.y) * q.x;
         });
-        normals[f] = unit_or_zero(sum);
+        const double len = std::sqrt(sx * sx + sy * sy + sz * sz);
+        if (len > 0.0 && std::isfinite(len)) normals[f] = {float(sx / len), float(sy / len), float(sz / len)};
     }
     return normals;
 }

@@ -26,6 +26,7 @@
 #include "loaders.h"
 #include "math3d.h"
 #include "mesh.h"
+#include "pipeline.h"
 #include "raster.h"
 
 namespace fuzz_checks {
@@ -69,8 +70,9 @@ inline std::string check_canvas_values(const canvas_t &c) {
     return {};
 }
 
-// Rasterises the mesh (flat and Gouraud, no culling) framed by its bounding sphere, and
-// checks the image. Only called for meshes that passed the structural checks.
+// Draws the mesh as wireframes (both line methods) and filled (flat, Gouraud: framed by its
+// bounding sphere; Phong: in the file's raw coordinates, so huge ones get clipped), no
+// culling, and checks each image. Only called for meshes that passed the structural checks.
 inline std::string check_renders(const tiny3d::mesh &m) {
     const tiny3d::bounding_sphere bounds = tiny3d::mesh_bounding_sphere(m);
     if (!(bounds.radius > 0.0f) || !std::isfinite(bounds.radius)) return {};  // nothing to frame
@@ -87,12 +89,26 @@ inline std::string check_renders(const tiny3d::mesh &m) {
                                        mat4_multiply(mat4_scale(s, s, s),
                                                      mat4_translate(-bounds.center.x, -bounds.center.y,
                                                                     -bounds.center.z)));
+    const mat4_t projection = tiny3d::mat4_perspective(1.0f, 1.0f, 0.5f, 10.0f);
+    // Wireframes: framed, and raw (the file's own coordinates, however far or huge: clipped).
+    tiny3d::wireframe_workspace ws;
+    for (const mat4_t &m_model : {model, mat4_identity()})
+        for (tiny3d::line_method method : {tiny3d::line_method::faithful, tiny3d::line_method::coverage}) {
+            canvas_clear(canvas->get(), 0.0f);
+            tiny3d::wireframe_options o;
+            o.method = method;
+            o.thickness = 1.5f;
+            o.depth_cue = true;
+            if (tiny3d::status s = tiny3d::render_wireframe(**canvas, m, mat4_multiply(projection, m_model), o, ws); !s)
+                return "render_wireframe rejected a valid mesh: " + s.message();
+            if (std::string e = check_canvas_values(**canvas); !e.empty()) return "wireframe image: " + e;
+        }
     tiny3d::render_context ctx(1);
-    for (tiny3d::shading shade : {tiny3d::shading::flat, tiny3d::shading::gouraud}) {
+    for (tiny3d::shading shade : {tiny3d::shading::flat, tiny3d::shading::gouraud, tiny3d::shading::phong}) {
         if (!ctx.begin_frame(**canvas)) return "begin_frame failed";
         tiny3d::draw_params p{};
-        p.model = model;
-        p.view_projection = tiny3d::mat4_perspective(1.0f, 1.0f, 0.5f, 10.0f);
+        p.model = shade == tiny3d::shading::phong ? mat4_identity() : model;  // phong: raw coordinates
+        p.view_projection = projection;
         p.lights = *rig;
         p.shade = shade;
         p.cull = tiny3d::cull_mode::none;
