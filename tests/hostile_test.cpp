@@ -402,6 +402,15 @@ TEST(report_wireframe_with_hostile_vertices_and_arguments) {
     render_wireframe(h.get(), v, 9, far_edges, 2, id, proj);
     CHECK(all_in_range(*h));
     CHECK(ink(*h) > 5.0);
+    // An edge to a vertex 1e30 away beyond the far plane draws the same listed either way
+    // round (it vanished when the far end came first: the clipped end cancelled).
+    vec3_t far_pair[] = {{1, -1, -2}, {0, HUGE_COORD, -HUGE_COORD}};
+    int forward[][2] = {{0, 1}}, backward[][2] = {{1, 0}};
+    tiny3d::canvas_ptr fw = blank(), bw = blank();
+    render_wireframe(fw.get(), far_pair, 2, forward, 1, id, proj);
+    render_wireframe(bw.get(), far_pair, 2, backward, 1, id, proj);
+    CHECK(ink(*fw) > 20.0);
+    CHECK_NEAR(ink(*bw), ink(*fw), 1e-3);
     // Bad arguments: nothing drawn.
     tiny3d::canvas_ptr n = blank();
     render_wireframe(n.get(), nullptr, 9, visible, 3, id, proj);

@@ -26,8 +26,16 @@ vec4_t lerp4_d(const vec4_t &a, const vec4_t &b, double t) {
 bool clip_and_project(const vec4_t &a, const vec4_t &b, int width, int height, screen_segment &out) {
     const segment_clip c = clip_segment(a, b, clip_all);
     if (!c.visible) return false;
-    const screen_point p = clip_to_screen(c.t0 > 0.0 ? lerp4_d(a, b, c.t0) : a, width, height);
-    const screen_point q = clip_to_screen(c.t1 < 1.0 ? lerp4_d(a, b, c.t1) : b, width, height);
+    // A clipped end is interpolated from the original end it is nearer to: from a far-off
+    // end (1e30) its parameter is 1 − 1e-28, which rounds to 1, and a + (b − a)·t cancels
+    // to garbage (the edge vanished when listed far end first). Clipping b→a gives the
+    // same interval as small parameters from b.
+    const segment_clip from_b = clip_segment(b, a, clip_all);
+    auto end_at = [&](double t, double t_from_b) {
+        return t <= 0.5 || !from_b.visible ? lerp4_d(a, b, t) : lerp4_d(b, a, t_from_b);
+    };
+    const screen_point p = clip_to_screen(c.t0 > 0.0 ? end_at(c.t0, from_b.t1) : a, width, height);
+    const screen_point q = clip_to_screen(c.t1 < 1.0 ? end_at(c.t1, from_b.t0) : b, width, height);
     if (p.behind || q.behind) return false;  // only for matrices whose near plane allows w ≤ 0
     out = {p.x, p.y, q.x, q.y, 0.5f * (p.depth + q.depth)};
     return true;
