@@ -7,5 +7,6 @@
 #include "renderer.h"
 #include "lighting.h"
 #include "animation.h"
+#include "scene.h"
 
 #endif
