@@ -554,6 +554,17 @@ TEST(ratios_and_measurements) {
     CHECK_EQ(r[1], 0.25);
     CHECK_EQ(r[2], 40.0);
     CHECK(std::isnan(r[3]));
+    // Two workloads in one family and unit: each row compares with the faithful row
+    // listed before it; a row before any faithful row uses the first one after it.
+    std::vector<bench::row> two = sample_rows();
+    two.insert(two.begin(), {"lines", "early fast", "fast", "ns/px", {5, 5, 5}, 0, 0, "abs intensity", ""});
+    two.push_back({"lines", "second faithful", "faithful", "ns/px", {100, 90, 110}, 0, 0, "abs intensity", ""});
+    two.push_back({"lines", "second fast", "fast", "ns/px", {20, 19, 21}, 0, 0, "abs intensity", ""});
+    const std::vector<double> r2 = bench::ratios_to_faithful(two);
+    CHECK_EQ(r2[0], 0.5);   // 5 / 10 (the first faithful row comes after it)
+    CHECK_EQ(r2[2], 0.25);  // 2.5 / 10
+    CHECK_EQ(r2[5], 1.0);
+    CHECK_EQ(r2[6], 0.2);   // 20 / 100
     int calls = 0;
     const bench::timing t = bench::measure_ns(5, 10.0, [&] { ++calls; bench::keep(calls); });
     CHECK_EQ(calls, 6);  // one warm-up + 5 timed runs

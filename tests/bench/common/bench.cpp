@@ -194,12 +194,17 @@ const std::vector<std::string> &csv_columns() {
 
 std::vector<double> ratios_to_faithful(const std::vector<row> &rows) {
     std::vector<double> ratios(rows.size(), std::nan(""));
+    const auto same_group = [&](std::size_t f, std::size_t i) {
+        return rows[f].kind == "faithful" && rows[f].family == rows[i].family && rows[f].unit == rows[i].unit;
+    };
     for (std::size_t i = 0; i < rows.size(); ++i) {
-        const auto faithful = std::find_if(rows.begin(), rows.end(), [&](const row &f) {
-            return f.kind == "faithful" && f.family == rows[i].family && f.unit == rows[i].unit;
-        });
-        if (faithful != rows.end() && faithful->time.median > 0)
-            ratios[i] = rows[i].time.median / faithful->time.median;
+        // The nearest faithful row listed at or before this one, else the first after it.
+        std::size_t f = i + 1;
+        while (f-- > 0)
+            if (same_group(f, i)) break;
+        if (f == std::size_t(-1))
+            for (f = i + 1; f < rows.size() && !same_group(f, i); ++f) {}
+        if (f < rows.size() && rows[f].time.median > 0) ratios[i] = rows[i].time.median / rows[f].time.median;
     }
     return ratios;
 }

@@ -75,9 +75,11 @@ struct options {
 // are command-line tools; the library itself never exits).
 options parse_options(int argc, char **argv);
 
-// The "group" of a row, for the ratio column: rows of the same family with the same time
-// unit. The ratio is row.time.median / (median of the first faithful row in the group);
-// "-" in the table and "nan" in the CSV when the group has no faithful row.
+// The ratio column compares each row with a faithful row of the same family and the same
+// time unit: the nearest one listed at or before it (so a benchmark that measures several
+// workloads lists each workload's faithful row first), else the first one after it. It is
+// row.time.median / faithful.time.median; "-" in the table and "nan" in the CSV when the
+// family has no faithful row in that unit.
 //
 // Prints the table on stdout, creates out_dir if needed, writes out_dir/<family>.csv and
 // out_dir/<family>.pgm atomically. Returns 0, or prints the error on stderr and returns 1
@@ -95,7 +97,7 @@ const std::vector<std::string> &csv_columns();
 // newlines in text become spaces (one record per line); an empty text field is written
 // as "-", so no field is ever empty.
 std::string csv_text(const std::vector<row> &rows);
-// Ratio of each row's median time to its group's faithful median (see report()).
+// Ratio of each row's median time to its faithful row's median (see report()).
 std::vector<double> ratios_to_faithful(const std::vector<row> &rows);
 // The printed table (also used by the summary tool).
 std::string table_text(const std::vector<row> &rows);
