@@ -17,7 +17,7 @@ namespace {
 constexpr int kSize = 512;
 constexpr int kFramesPerTurn = 60;
 constexpr float kTilt = 0.35f;          // radians about x, so the poles are not edge-on
-constexpr float kDistance = 2.6f;       // ball centre at z = −2.6: the ball overlaps the circle
+constexpr float kBallFill = 0.9f;       // the ball's image spans 90 % of the circle's radius
 constexpr float kFovY = 0.75f;          // radians
 constexpr float kEdgeThickness = 1.6f;  // px
 constexpr float kFarInk = 0.3f;         // depth cue: ink of the farthest edges
@@ -56,6 +56,10 @@ int main(int argc, char **argv) {
     const tiny3d::mesh ball = tiny3d::make_soccer_ball(1.0f);
     const tiny3d::bounding_sphere bounds = tiny3d::mesh_bounding_sphere(ball);
     const mat4_t proj = tiny3d::mat4_perspective(kFovY, float(o.width) / float(o.height), 0.1f, 100.0f);
+    // Distance at which the bounding sphere's silhouette (half-angle asin(R/d)) spans
+    // kBallFill of the half field of view: d = R / sin(atan(kBallFill·tan(fov/2))).
+    const float distance =
+        bounds.radius / std::sin(std::atan(kBallFill * std::tan(0.5f * kFovY)));
     tiny3d::wireframe_options options;
     options.method = tiny3d::line_method::coverage;
     options.thickness = kEdgeThickness;
@@ -69,7 +73,7 @@ int main(int argc, char **argv) {
     for (int frame = o.first_frame; frame <= o.last_frame; ++frame) {
         timer.start();
         canvas_clear(canvas->get(), 0.0f);
-        const mat4_t model = mat4_multiply(mat4_translate(0, 0, -kDistance),
+        const mat4_t model = mat4_multiply(mat4_translate(0, 0, -distance),
                                            mat4_multiply(mat4_rotate_xyz(kTilt, 0, 0), tiny3d::mat4_rotate_y(frame_angle(frame))));
         if (tiny3d::status s = tiny3d::render_wireframe(**canvas, ball, mat4_multiply(proj, model), options, workspace); !s)
             return demo::fail(o, s.message());
