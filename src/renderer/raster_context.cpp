@@ -19,6 +19,7 @@ constexpr int MAX_THREADS = 16;
 // draws bands t, t + n, t + 2n, …
 constexpr int BAND_ROWS = 32;
 constexpr int MAX_BANDS = 128;
+static_assert(MAX_BANDS <= 256, "row_band stores band numbers in 8 bits");
 // Guard band: the x/y clip planes sit at |x|, |y| ≤ guard·w, chosen so that the whole band
 // spans fewer pixels than the 32-bit fill allows; never tighter than the frustum itself.
 constexpr float GUARD_SPAN_PIXELS = 2000.0f;
@@ -96,6 +97,8 @@ struct xvertex {
     screen_vertex screen;  // valid when outcode has no CLIP_NEAR bit (w > 0)
     float shade;           // Gouraud intensity (or 0)
     unsigned outcode;
+    bool snapped;          // screen position usable; snapped_x/y hold it in 1/16 px
+    std::int32_t snapped_x, snapped_y;
 };
 
 // Per-vertex attributes of the generic (per-pixel) path, in clip_vertex::attr order.
@@ -174,13 +177,9 @@ struct render_context::impl {
     std::vector<generic_triangle> translucent;   // queued for end_frame
 
     int band_count = 1;  // set per frame
+    std::vector<std::uint8_t> row_band;  // the band holding each row (inverse of band_y0)
     int bands() const { return band_count; }
-    int band_of(int y) const {  // the band holding row y (inverse of band_y0)
-        int b = static_cast<int>(static_cast<long long>(y) * bands() / target->height);
-        while (b + 1 < bands() && band_y0(b + 1) <= y) ++b;
-        while (b > 0 && band_y0(b) > y) --b;
-        return b;
-    }
+    int band_of(int y) const { return row_band[static_cast<std::size_t>(y)]; }
     int band_y0(int b) const { return static_cast<int>(static_cast<long long>(target->height) * b / bands()); }
 
     void clear_band(int b) {
@@ -218,7 +217,11 @@ void render_context::impl::transform(const raster_mesh &m, const draw_params &p,
         xvertex &x = vertices[i];
         x.clip = mul(mvp, m.positions[i]);
         x.outcode = clip_outcode(x.clip, guard);
-        if (!(x.outcode & CLIP_NEAR)) x.screen = to_screen(x.clip, half_w, half_h);
+        x.snapped = false;
+        if (!(x.outcode & CLIP_NEAR)) {
+            x.screen = to_screen(x.clip, half_w, half_h);
+            x.snapped = detail::snap_vertex(x.screen, x.snapped_x, x.snapped_y);
+        }
         vec3_t world{0, 0, 0}, normal{0, 0, 0};
         if (gouraud || generic) {
             world = mul3(p.model, m.positions[i]);
@@ -282,13 +285,18 @@ void render_context::impl::setup(const raster_mesh &m, const draw_params &p, std
                                           mul3(p.model, m.positions[tri[2]]));
         if ((a.outcode | b.outcode | c.outcode) == 0 && !generic) {
             // The common case: no clipping, straight to the fast setup.
-            const screen_vertex v[3] = {a.screen, b.screen, c.screen};
-            const triangle_edges t = triangle_setup(v[0], v[1], v[2], full, p.cull);
+            // Snapped once per vertex in transform(); an unusable vertex skips the triangle
+            // exactly as triangle_setup would.
+            if (!(a.snapped && b.snapped && c.snapped)) continue;
+            const std::int32_t X[3] = {a.snapped_x, b.snapped_x, c.snapped_x};
+            const std::int32_t Y[3] = {a.snapped_y, b.snapped_y, c.snapped_y};
+            const triangle_edges t = detail::triangle_setup_snapped(X, Y, full, p.cull);
             if (!t.valid) {
                 out.stats.culled_backface += t.culled;
                 continue;
             }
             ++out.stats.rasterized;
+            const screen_vertex v[3] = {a.screen, b.screen, c.screen};
             const float shade[3] = {flat ? flat_shade : a.shade, flat ? flat_shade : b.shade, flat ? flat_shade : c.shade};
             add_fast(t, v, shade, out);
             continue;
@@ -366,6 +374,9 @@ status render_context::begin_frame(canvas_t &target, float clear_intensity) {
     s.translucent.clear();
     s.band_count = std::clamp(target.height / BAND_ROWS, s.pool.size(), MAX_BANDS);
     s.band_count = std::min(s.band_count, std::max(target.height, 1));
+    if (s.row_band.size() < static_cast<std::size_t>(target.height)) s.row_band.resize(target.height);
+    for (int b = 0; b < s.band_count; ++b)
+        for (int y = s.band_y0(b); y < s.band_y0(b + 1); ++y) s.row_band[static_cast<std::size_t>(y)] = static_cast<std::uint8_t>(b);
     s.guard = std::clamp(GUARD_SPAN_PIXELS / static_cast<float>(std::max(target.width, target.height)), 1.0f, MAX_GUARD);
     return {};
 }

@@ -16,15 +16,6 @@ namespace {
 
 constexpr std::int64_t HALF_SUBPIXEL = RASTER_SUBPIXEL_ONE / 2;  // pixel centre offset
 
-// Round to the nearest 1/16 pixel (ties to even). |x| ≤ RASTER_MAX_COORD, so x·16 fits.
-inline std::int64_t snap(float x) {
-#ifdef __SSE2__
-    return _mm_cvtss_si32(_mm_set_ss(x * static_cast<float>(RASTER_SUBPIXEL_ONE)));
-#else
-    return std::lrint(x * static_cast<float>(RASTER_SUBPIXEL_ONE));
-#endif
-}
-
 bool usable(const screen_vertex &v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::fabs(v.x) <= RASTER_MAX_COORD &&
            std::fabs(v.y) <= RASTER_MAX_COORD;
@@ -34,14 +25,25 @@ bool usable(const screen_vertex &v) {
 
 triangle_edges triangle_setup(const screen_vertex &v0, const screen_vertex &v1, const screen_vertex &v2,
                               pixel_rect clip, cull_mode cull) {
+    if (!usable(v0) || !usable(v1) || !usable(v2)) return {};
+    const std::int32_t X[3] = {detail::snap_coord(v0.x), detail::snap_coord(v1.x), detail::snap_coord(v2.x)};
+    const std::int32_t Y[3] = {detail::snap_coord(v0.y), detail::snap_coord(v1.y), detail::snap_coord(v2.y)};
+    return detail::triangle_setup_snapped(X, Y, clip, cull);
+}
+
+namespace detail {
+
+bool snap_vertex(const screen_vertex &v, std::int32_t &x, std::int32_t &y) {
+    if (!usable(v)) return false;
+    x = snap_coord(v.x);
+    y = snap_coord(v.y);
+    return true;
+}
+
+triangle_edges triangle_setup_snapped(const std::int32_t Xs[3], const std::int32_t Ys[3], pixel_rect clip,
+                                      cull_mode cull) {
     triangle_edges t;
-    if (!usable(v0) || !usable(v1) || !usable(v2)) return t;
-    const screen_vertex *v[3] = {&v0, &v1, &v2};
-    std::int64_t X[3], Y[3];
-    for (int k = 0; k < 3; ++k) {
-        X[k] = snap(v[k]->x);
-        Y[k] = snap(v[k]->y);
-    }
+    const std::int64_t X[3] = {Xs[0], Xs[1], Xs[2]}, Y[3] = {Ys[0], Ys[1], Ys[2]};
     const std::int64_t area2 = (X[1] - X[0]) * (Y[2] - Y[0]) - (Y[1] - Y[0]) * (X[2] - X[0]);
     if (area2 == 0) return t;
     t.front_facing = area2 < 0;
@@ -78,8 +80,6 @@ triangle_edges triangle_setup(const screen_vertex &v0, const screen_vertex &v1, 
     t.valid = t.min_x <= t.max_x && t.min_y <= t.max_y;
     return t;
 }
-
-namespace detail {
 
 namespace {
 

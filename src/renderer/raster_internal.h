@@ -3,11 +3,35 @@
 #ifndef TINY3D_RASTER_INTERNAL_H
 #define TINY3D_RASTER_INTERNAL_H
 
+#include <cmath>
 #include <cstdint>
 
 #include "raster.h"
 
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
+
 namespace tiny3d::detail {
+
+// Rounds a screen coordinate to the nearest 1/16 pixel (ties to even), in sub-pixel units.
+// Needs |x| ≤ RASTER_MAX_COORD (then x·16 fits in 32 bits).
+inline std::int32_t snap_coord(float x) {
+#ifdef __SSE2__
+    return _mm_cvtss_si32(_mm_set_ss(x * static_cast<float>(RASTER_SUBPIXEL_ONE)));
+#else
+    return static_cast<std::int32_t>(std::lrint(x * static_cast<float>(RASTER_SUBPIXEL_ONE)));
+#endif
+}
+
+// Snaps one vertex (done once per shared vertex by the render context). False, with x, y
+// untouched, when the vertex is one triangle_setup skips (non-finite or beyond
+// RASTER_MAX_COORD).
+bool snap_vertex(const screen_vertex &v, std::int32_t &x, std::int32_t &y);
+
+// triangle_setup on already snapped, usable vertices (sub-pixel units): same result.
+triangle_edges triangle_setup_snapped(const std::int32_t X[3], const std::int32_t Y[3], pixel_rect clip,
+                                      cull_mode cull);
 
 // Edge functions fit in 32 bits (|E| < 2^31) when the snapped vertex bounding box spans
 // less than this many sub-pixel units per axis, including 4 px of SIMD overshoot:
