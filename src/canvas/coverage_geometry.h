@@ -82,19 +82,62 @@ T fast_atan2(T y, T x) {
     return y < 0 ? -angle : angle;
 }
 
-// Signed area of the circular sector of radius r from direction p to direction q (the
-// angle between them, in (−π, π]). kLibm picks std::atan2 (the reference) or fast_atan2.
+// Sum of the signed angles (each in (−π, π]) from direction p to direction q over many
+// sectors. kLibm: one std::atan2 per sector (the reference). Otherwise the angles are
+// summed as a product of complex numbers conj(p)·q and fast_atan2 is taken once per run:
+// while the running product has a positive real part its true angle lies in (−π/2, π/2),
+// so after one more factor (angle in (−π, π]) the sum lies in (−3π/2, 3π/2) and a positive
+// real part again pins it to (−π/2, π/2); otherwise the run is flushed first.
 template <class T, bool kLibm>
-T sector_area(point2<T> p, point2<T> q, T r2) {
-    const T cross = p.x * q.y - p.y * q.x, dot = p.x * q.x + p.y * q.y;
-    return r2 / 2 * (kLibm ? std::atan2(cross, dot) : fast_atan2(cross, dot));
-}
+class angle_sum {
+public:
+    void add(point2<T> p, point2<T> q) {
+        const T cross = p.x * q.y - p.y * q.x, dot = p.x * q.x + p.y * q.y;
+        if constexpr (kLibm) {
+            total_ += std::atan2(cross, dot);
+        } else {
+            const T re = re_ * dot - im_ * cross, im = re_ * cross + im_ * dot;
+            if (re > 0) {
+                re_ = re;
+                im_ = im;
+                // Keep the product's magnitude in range (factors are ~r², r may be tiny or huge).
+                const T size = std::fabs(re_) + std::fabs(im_);
+                if (size > kRescaleAbove || size < kRescaleBelow) {
+                    re_ /= size;
+                    im_ /= size;
+                }
+                return;
+            }
+            flush();
+            if (dot > 0) {
+                re_ = dot;
+                im_ = cross;
+            } else {
+                total_ += fast_atan2(cross, dot);
+            }
+        }
+    }
+    T total() {
+        if constexpr (!kLibm) flush();
+        return total_;
+    }
 
-// Signed area of (triangle O, p, q) ∩ disc(O, r), O = origin. The edge p→q is split where
-// it crosses the circle: inside pieces count as triangles, outside pieces as sectors.
-// Summed over a polygon's edges this is the exact area of polygon ∩ disc.
+private:
+    static constexpr T kRescaleAbove = T(1e30), kRescaleBelow = T(1e-30);
+    void flush() {
+        if (im_ != 0) total_ += fast_atan2(im_, re_);
+        re_ = 1;
+        im_ = 0;
+    }
+    T total_ = 0, re_ = 1, im_ = 0;
+};
+
+// Signed area of (triangle O, p, q) ∩ disc(O, r), O = origin, less the sectors' part: the
+// edge p→q is split where it crosses the circle; inside pieces count as triangles (the
+// returned area), outside pieces as sectors (their angles go to `angles`, area r²/2 per
+// radian). Summed over a polygon's edges this is the exact area of polygon ∩ disc.
 template <class T, bool kLibm>
-T edge_disc_area(point2<T> p, point2<T> q, T r2) {
+T edge_disc_area(point2<T> p, point2<T> q, T r2, angle_sum<T, kLibm> &angles) {
     const point2<T> d{q.x - p.x, q.y - p.y};
     const T a = d.x * d.x + d.y * d.y;
     if (a == 0) return 0;
@@ -102,28 +145,31 @@ T edge_disc_area(point2<T> p, point2<T> q, T r2) {
     const T c = p.x * p.x + p.y * p.y - r2;
     if (c <= 0 && q.x * q.x + q.y * q.y <= r2) return (p.x * q.y - p.y * q.x) / 2;  // inside: a triangle
     const T disc = b * b - a * c;
-    if (disc <= 0) return sector_area<T, kLibm>(p, q, r2);  // the edge's line misses the circle
+    if (disc <= 0) {  // the edge's line misses the circle
+        angles.add(p, q);
+        return 0;
+    }
     const T s = std::sqrt(disc);
     const T t_in = std::clamp((-b - s) / a, T(0), T(1));
     const T t_out = std::clamp((-b + s) / a, T(0), T(1));
     const point2<T> A{p.x + t_in * d.x, p.y + t_in * d.y};
     const point2<T> B{p.x + t_out * d.x, p.y + t_out * d.y};
-    T area = (A.x * B.y - A.y * B.x) / 2;
-    if (t_in > 0) area += sector_area<T, kLibm>(p, A, r2);
-    if (t_out < 1) area += sector_area<T, kLibm>(B, q, r2);
-    return area;
+    if (t_in > 0) angles.add(p, A);
+    if (t_out < 1) angles.add(B, q);
+    return (A.x * B.y - A.y * B.x) / 2;
 }
 
 // Unsigned area of the convex polygon ∩ the disc of radius r centred at (cx, cy).
 template <class T, bool kLibm = true>
 T polygon_disc_area(const small_polygon<T> &poly, T cx, T cy, T r) {
     const T r2 = r * r;
+    angle_sum<T, kLibm> angles;
     T sum = 0;
     for (int i = 0; i < poly.n; ++i) {
         const point2<T> p = poly.v[i], q = poly.v[i + 1 == poly.n ? 0 : i + 1];
-        sum += edge_disc_area<T, kLibm>({p.x - cx, p.y - cy}, {q.x - cx, q.y - cy}, r2);
+        sum += edge_disc_area<T, kLibm>({p.x - cx, p.y - cy}, {q.x - cx, q.y - cy}, r2, angles);
     }
-    return std::fabs(sum);
+    return std::fabs(sum + r2 / 2 * angles.total());
 }
 
 }  // namespace tiny3d::detail

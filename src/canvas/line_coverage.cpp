@@ -292,6 +292,9 @@ void draw_line_coverage(canvas_t *canvas, float x0, float y0, float x1, float y1
     // A square whose centre has slab_lo ≤ v ≤ slab_hi lies inside 0 ≤ v ≤ L.
     const float slab_lo = cdf.w_hi, slab_hi = float(length) - cdf.w_hi;
     const float du = float(ny), dv = float(axes.dy);  // change of u, v per minor step
+    // v ≤ v_min or v ≥ v_max: the square lies beyond an end and its cap (if any).
+    const float v_min = -cdf.w_hi - (frame.cap_a ? hf : 0.0f);
+    const float v_max = float(length) + cdf.w_hi + (frame.cap_b ? hf : 0.0f);
 
     // Major columns the stroke can reach; per column, the minor span of the band
     // (|minor − centreline| ≤ h / axes.dx over the column) plus, near a round end, that
@@ -333,7 +336,7 @@ void draw_line_coverage(canvas_t *canvas, float x0, float y0, float x1, float y1
         float u = float(rx * nx + ry * ny), v = float(rx * axes.dx + ry * axes.dy);
         float *px = data + i * major_stride + row_first * minor_stride;
         for (int j = row_first; j <= row_last; ++j, u += du, v += dv, px += minor_stride) {
-            if (std::fabs(u) >= reach) continue;
+            if (std::fabs(u) >= reach || v <= v_min || v >= v_max) continue;
             float cov;
             if (v >= slab_lo && v <= slab_hi)
                 cov = cdf.band(u, hf);
