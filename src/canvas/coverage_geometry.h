@@ -39,6 +39,29 @@ small_polygon<T> clip_half_plane(const small_polygon<T> &in, T a, T b, T c) {
     return out;
 }
 
+// One pass of clip_half_plane for both sides: `inside` gets the part where a·x + b·y ≥ c,
+// `outside` the part where a·x + b·y ≤ c (the shared cut edge in both). `in` may alias
+// `inside` (it is read in full first).
+template <class T>
+void split_half_plane(const small_polygon<T> &in, T a, T b, T c, small_polygon<T> &inside, small_polygon<T> &outside) {
+    const small_polygon<T> src = in;
+    small_polygon<T> keep, cut;
+    for (int i = 0; i < src.n; ++i) {
+        const point2<T> p = src.v[i], q = src.v[i + 1 == src.n ? 0 : i + 1];
+        const T fp = a * p.x + b * p.y - c, fq = a * q.x + b * q.y - c;
+        if (fp >= 0) keep.v[keep.n++] = p;
+        if (fp <= 0) cut.v[cut.n++] = p;
+        if ((fp < 0 && fq > 0) || (fp > 0 && fq < 0)) {
+            const T t = fp / (fp - fq);
+            const point2<T> x{p.x + t * (q.x - p.x), p.y + t * (q.y - p.y)};
+            keep.v[keep.n++] = x;
+            cut.v[cut.n++] = x;
+        }
+    }
+    inside = keep;
+    outside = cut;
+}
+
 // Shoelace formula: signed area, positive for counter-clockwise (in x-right, y-up terms).
 // Taken relative to the first vertex, so far-off polygons do not cancel catastrophically.
 template <class T>

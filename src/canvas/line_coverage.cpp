@@ -164,25 +164,37 @@ struct stroke_frame {
     }
 
     // The same area for the unit square [x, x+1] × [y, y+1] (relative to A), skipping
-    // every clip and disc that cannot change the result. Used by the fast line.
+    // every clip and disc that cannot change the result. Used by the fast line. Each cap's
+    // disc lies inside the band |u| ≤ h, so a square missing the band misses the stroke;
+    // a square crossing an end is split there once: the part beyond feeds the cap's disc,
+    // the rest (clipped to the band) is body.
     T unit_square_area(T x, T y) const {
         const T nx = -dy, ny = dx;
         // u, v ranges over the corners: centre ± half the square's extent along each axis.
         const T cu = nx * (x + T(0.5)) + ny * (y + T(0.5)), cv = dx * (x + T(0.5)) + dy * (y + T(0.5));
         const T ext = (std::fabs(dx) + std::fabs(dy)) / 2;
-        const small_polygon<T> sq = square(x, y);
+        if (!(cu - ext < half && cu + ext > -half)) return 0;
+        small_polygon<T> rest = square(x, y), beyond;
         T total = 0;
-        if (cv + ext > 0 && cv - ext < length && cu - ext < half && cu + ext > -half) {
-            small_polygon<T> body = sq;
-            if (cu + ext > half) body = clip_half_plane(body, nx, ny, half);
-            if (cu - ext < -half) body = clip_half_plane(body, -nx, -ny, half);
-            if (cv - ext < 0) body = clip_half_plane(body, -dx, -dy, T(0));
-            if (cv + ext > length) body = clip_half_plane(body, dx, dy, length);
-            total = std::fabs(signed_area(body));
+        if (cv - ext < 0) {  // end A (v = 0)
+            if (cv + ext > 0)
+                detail::split_half_plane(rest, dx, dy, T(0), rest, beyond);
+            else
+                std::swap(rest, beyond);
+            if (cap_a) total += cap_part(beyond, x, y, T(0), T(0));
         }
-        if (cap_a && cv - ext < 0) total += cap_part(sq, x, y, T(0), T(0), cv + ext > 0, dx, dy, T(0));
-        if (cap_b && cv + ext > length)
-            total += cap_part(sq, x, y, dx * length, dy * length, cv - ext < length, -dx, -dy, -length);
+        if (cv + ext > length) {  // end B (v = L)
+            if (cv - ext < length)
+                detail::split_half_plane(rest, -dx, -dy, -length, rest, beyond);
+            else
+                std::swap(rest, beyond);
+            if (cap_b) total += cap_part(beyond, x, y, dx * length, dy * length);
+        }
+        if (rest.n >= 3) {
+            if (cu + ext > half) rest = clip_half_plane(rest, nx, ny, half);
+            if (cu - ext < -half) rest = clip_half_plane(rest, -nx, -ny, half);
+            total += std::fabs(signed_area(rest));
+        }
         return total;
     }
 
@@ -197,15 +209,14 @@ struct stroke_frame {
     }
 
 private:
-    // Area of the axis-aligned unit square `sq` (corner x, y) beyond an end (the side
-    // a·px + b·py ≤ c, clipped only if `crosses`) inside the end's disc centred (cx, cy).
-    T cap_part(const small_polygon<T> &sq, T x, T y, T cx, T cy, bool crosses, T a, T b, T c) const {
+    // Area of `part` (the part beyond an end of the unit square with corner x, y) inside
+    // the end's disc centred (cx, cy).
+    T cap_part(const small_polygon<T> &part, T x, T y, T cx, T cy) const {
         const T r2 = half * half;
         const T gx = std::max({x - cx, cx - x - 1, T(0)}), gy = std::max({y - cy, cy - y - 1, T(0)});
-        if (gx * gx + gy * gy >= r2) return 0;  // the square misses the disc
+        if (part.n < 3 || gx * gx + gy * gy >= r2) return 0;  // the square misses the disc
         const T fx = std::max(std::fabs(x - cx), std::fabs(x + 1 - cx));
         const T fy = std::max(std::fabs(y - cy), std::fabs(y + 1 - cy));
-        const small_polygon<T> part = crosses ? clip_half_plane(sq, a, b, c) : sq;
         if (fx * fx + fy * fy <= r2) return std::fabs(signed_area(part));  // inside the disc
         return polygon_disc_area<T, false>(part, cx, cy, half);
     }
