@@ -290,6 +290,14 @@ void render_context::impl::setup(const raster_mesh &m, const draw_params &p, std
             if (!(a.snapped && b.snapped && c.snapped)) continue;
             const std::int32_t X[3] = {a.snapped_x, b.snapped_x, c.snapped_x};
             const std::int32_t Y[3] = {a.snapped_y, b.snapped_y, c.snapped_y};
+            // Cheap early rejection on the snapped 2-D cross product (the same sign test
+            // triangle_setup makes), before the full edge setup.
+            const std::int64_t area2 = detail::snapped_area2(X, Y);
+            if (area2 == 0) continue;
+            if (detail::facing_culled(area2, p.cull)) {
+                ++out.stats.culled_backface;
+                continue;
+            }
             const triangle_edges t = detail::triangle_setup_snapped(X, Y, full, p.cull);
             if (!t.valid) {
                 out.stats.culled_backface += t.culled;

@@ -44,10 +44,10 @@ triangle_edges triangle_setup_snapped(const std::int32_t Xs[3], const std::int32
                                       cull_mode cull) {
     triangle_edges t;
     const std::int64_t X[3] = {Xs[0], Xs[1], Xs[2]}, Y[3] = {Ys[0], Ys[1], Ys[2]};
-    const std::int64_t area2 = (X[1] - X[0]) * (Y[2] - Y[0]) - (Y[1] - Y[0]) * (X[2] - X[0]);
+    const std::int64_t area2 = snapped_area2(Xs, Ys);
     if (area2 == 0) return t;
     t.front_facing = area2 < 0;
-    if ((cull == cull_mode::back && !t.front_facing) || (cull == cull_mode::front && t.front_facing)) {
+    if (facing_culled(area2, cull)) {
         t.culled = true;
         return t;
     }
@@ -83,18 +83,36 @@ triangle_edges triangle_setup_snapped(const std::int32_t Xs[3], const std::int32
 
 namespace {
 
-// Affine plane f(x, y) over pixel centres through the three snapped vertices: the value at
-// the centre of pixel (px, py) and the per-pixel steps. Cramer's rule in double.
+// Affine planes f(x, y) over pixel centres through the three snapped vertices, by Cramer's
+// rule in double: the triangle's geometry (vertex differences, 1/det, the reference pixel
+// centre's offset from vertex 0) once, then each attribute's value at the reference pixel
+// and its per-pixel steps.
 struct plane {
     float at_ref, dx, dy;
 };
 
-plane attribute_plane(const triangle_edges &t, double inv_det, const float f[3], int px, int py) {
-    const double d1x = t.x[1] - t.x[0], d1y = t.y[1] - t.y[0], d2x = t.x[2] - t.x[0], d2y = t.y[2] - t.y[0];
+struct plane_geometry {
+    double d1x, d1y, d2x, d2y, inv_det, ref_dx, ref_dy;
+};
+
+inline plane_geometry make_plane_geometry(const triangle_edges &t, int px, int py) {
+    plane_geometry g;
+    g.d1x = t.x[1] - t.x[0];
+    g.d1y = t.y[1] - t.y[0];
+    g.d2x = t.x[2] - t.x[0];
+    g.d2y = t.y[2] - t.y[0];
+    // det = twice the signed area in px² (the snapped area2 carries the orientation sign).
+    g.inv_det = 1.0 / (g.d1x * g.d2y - g.d2x * g.d1y);
+    g.ref_dx = px + 0.5 - t.x[0];
+    g.ref_dy = py + 0.5 - t.y[0];
+    return g;
+}
+
+inline plane attribute_plane(const plane_geometry &g, const float f[3]) {
     const double f1 = static_cast<double>(f[1]) - f[0], f2 = static_cast<double>(f[2]) - f[0];
-    const double gx = (f1 * d2y - f2 * d1y) * inv_det;
-    const double gy = (f2 * d1x - f1 * d2x) * inv_det;
-    const double ref = f[0] + gx * (px + 0.5 - t.x[0]) + gy * (py + 0.5 - t.y[0]);
+    const double gx = (f1 * g.d2y - f2 * g.d1y) * g.inv_det;
+    const double gy = (f2 * g.d1x - f1 * g.d2x) * g.inv_det;
+    const double ref = f[0] + gx * g.ref_dx + gy * g.ref_dy;
     return {static_cast<float>(ref), static_cast<float>(gx), static_cast<float>(gy)};
 }
 
@@ -116,11 +134,9 @@ bool make_fast_triangle(const triangle_edges &t, const screen_vertex v[3], const
         out.b[k] = fits ? static_cast<std::int32_t>(t.b[k]) : 0;
     }
     const float depth[3] = {v[0].z, v[1].z, v[2].z};
-    // det = twice the signed area in px² (the snapped area2 carries the orientation sign).
-    const double det = (t.x[1] - t.x[0]) * (t.y[2] - t.y[0]) - (t.x[2] - t.x[0]) * (t.y[1] - t.y[0]);
-    const double inv_det = 1.0 / det;
-    const plane zp = attribute_plane(t, inv_det, depth, t.min_x, t.min_y);
-    const plane ip = attribute_plane(t, inv_det, intensity, t.min_x, t.min_y);
+    const plane_geometry g = make_plane_geometry(t, t.min_x, t.min_y);
+    const plane zp = attribute_plane(g, depth);
+    const plane ip = attribute_plane(g, intensity);
     out.z = zp.at_ref;
     out.zdx = zp.dx;
     out.zdy = zp.dy;

@@ -29,6 +29,19 @@ inline std::int32_t snap_coord(float x) {
 // RASTER_MAX_COORD).
 bool snap_vertex(const screen_vertex &v, std::int32_t &x, std::int32_t &y);
 
+// Twice the signed area of a snapped triangle, in (1/16 px)²: negative = front facing
+// (counter-clockwise in NDC, clockwise on the y-down screen), 0 = degenerate.
+inline std::int64_t snapped_area2(const std::int32_t X[3], const std::int32_t Y[3]) {
+    return (static_cast<std::int64_t>(X[1]) - X[0]) * (static_cast<std::int64_t>(Y[2]) - Y[0]) -
+           (static_cast<std::int64_t>(Y[1]) - Y[0]) * (static_cast<std::int64_t>(X[2]) - X[0]);
+}
+
+// Whether `cull` removes a triangle of nonzero signed area area2 (snapped_area2).
+inline bool facing_culled(std::int64_t area2, cull_mode cull) {
+    const bool front_facing = area2 < 0;
+    return (cull == cull_mode::back && !front_facing) || (cull == cull_mode::front && front_facing);
+}
+
 // triangle_setup on already snapped, usable vertices (sub-pixel units): same result.
 triangle_edges triangle_setup_snapped(const std::int32_t X[3], const std::int32_t Y[3], pixel_rect clip,
                                       cull_mode cull);
