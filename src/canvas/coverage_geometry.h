@@ -41,13 +41,12 @@ small_polygon<T> clip_half_plane(const small_polygon<T> &in, T a, T b, T c) {
 
 // One pass of clip_half_plane for both sides: `inside` gets the part where a·x + b·y ≥ c,
 // `outside` the part where a·x + b·y ≤ c (the shared cut edge in both). `in` may alias
-// `inside` (it is read in full first).
+// `inside` or `outside` (both are built aside and stored last).
 template <class T>
 void split_half_plane(const small_polygon<T> &in, T a, T b, T c, small_polygon<T> &inside, small_polygon<T> &outside) {
-    const small_polygon<T> src = in;
     small_polygon<T> keep, cut;
-    for (int i = 0; i < src.n; ++i) {
-        const point2<T> p = src.v[i], q = src.v[i + 1 == src.n ? 0 : i + 1];
+    for (int i = 0; i < in.n; ++i) {
+        const point2<T> p = in.v[i], q = in.v[i + 1 == in.n ? 0 : i + 1];
         const T fp = a * p.x + b * p.y - c, fq = a * q.x + b * q.y - c;
         if (fp >= 0) keep.v[keep.n++] = p;
         if (fp <= 0) cut.v[cut.n++] = p;
