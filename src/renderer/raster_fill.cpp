@@ -235,13 +235,18 @@ void fill_rows_sse2(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bo
             if (out_bits != 0xF) {
                 if (x + 4 <= width) {
                     __m128 mask = _mm_andnot_ps(_mm_castsi128_ps(outside), _mm_castsi128_ps(_mm_set1_epi32(-1)));
+                    __m128 stored = z;
                     if constexpr (HasDepth) {
-                        const __m128 stored = _mm_loadu_ps(zrow + x);
+                        stored = _mm_loadu_ps(zrow + x);
                         mask = _mm_and_ps(mask, depth_mask<Test>(z, stored));
-                        if (depth_write) _mm_storeu_ps(zrow + x, select(mask, z, stored));
                     }
-                    if (_mm_movemask_ps(mask)) {
-                        const __m128 shade = _mm_min_ps(_mm_max_ps(in, zero), one);
+                    const int pass = _mm_movemask_ps(mask);
+                    const __m128 shade = _mm_min_ps(_mm_max_ps(in, zero), one);
+                    if (pass == 0xF) {  // all four pass: plain stores, no read of the colour
+                        if (HasDepth && depth_write) _mm_storeu_ps(zrow + x, z);
+                        _mm_storeu_ps(color + x, shade);
+                    } else if (pass) {
+                        if (HasDepth && depth_write) _mm_storeu_ps(zrow + x, select(mask, z, stored));
                         _mm_storeu_ps(color + x, select(mask, shade, _mm_loadu_ps(color + x)));
                     }
                 } else {
