@@ -184,6 +184,9 @@ inline std::int32_t row_edge(const fast_triangle &f, int k, int dy) {
     return static_cast<std::int32_t>(f.e[k] + static_cast<std::int64_t>(f.b[k]) * dy);
 }
 
+// Bounding-box width (px) from which the 4-wide loop takes the WideRows variant.
+constexpr int PLAIN_STORE_MIN_WIDTH = 32;
+
 template <depth_func Test>
 inline __m128 depth_mask(__m128 z, __m128 stored) {
     if constexpr (Test == depth_func::less) return _mm_cmplt_ps(z, stored);
@@ -202,8 +205,10 @@ inline __m128 select(__m128 mask, __m128 a, __m128 b) {  // mask ? a : b
 
 // The 4-wide loop: edge values of 4 neighbouring pixels in one register each; the sign
 // bits of e0 | e1 | e2 mark the pixels outside. Lanes past the canvas' right edge are
-// finished one by one from the same register values.
-template <depth_func Test, bool HasDepth>
+// finished one by one from the same register values. WideRows (wide triangles: many groups
+// whose four pixels all pass) adds a plain-store branch for such groups that skips the
+// colour read; small triangles (mostly partial groups) go without that branch.
+template <depth_func Test, bool HasDepth, bool WideRows>
 void fill_rows_sse2(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bool depth_write, int y0,
                     int y1) {
     const __m128 lane_f = _mm_set_ps(3.0f, 2.0f, 1.0f, 0.0f);
@@ -241,13 +246,15 @@ void fill_rows_sse2(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bo
                         mask = _mm_and_ps(mask, depth_mask<Test>(z, stored));
                     }
                     const int pass = _mm_movemask_ps(mask);
-                    const __m128 shade = _mm_min_ps(_mm_max_ps(in, zero), one);
-                    if (pass == 0xF) {  // all four pass: plain stores, no read of the colour
+                    if (WideRows && pass == 0xF) {  // all four pass: plain stores, no colour read
                         if (HasDepth && depth_write) _mm_storeu_ps(zrow + x, z);
-                        _mm_storeu_ps(color + x, shade);
-                    } else if (pass) {
+                        _mm_storeu_ps(color + x, _mm_min_ps(_mm_max_ps(in, zero), one));
+                    } else {
                         if (HasDepth && depth_write) _mm_storeu_ps(zrow + x, select(mask, z, stored));
-                        _mm_storeu_ps(color + x, select(mask, shade, _mm_loadu_ps(color + x)));
+                        if (pass) {
+                            const __m128 shade = _mm_min_ps(_mm_max_ps(in, zero), one);
+                            _mm_storeu_ps(color + x, select(mask, shade, _mm_loadu_ps(color + x)));
+                        }
                     }
                 } else {
                     alignas(16) float zl[4], il[4];
@@ -266,22 +273,22 @@ void fill_rows_sse2(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bo
     }
 }
 
-template <bool HasDepth>
+template <bool HasDepth, bool WideRows>
 void fill_rows_dispatch(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, depth_func test,
                         bool depth_write, int y0, int y1) {
     switch (test) {
         case depth_func::never: return;
-        case depth_func::less: return fill_rows_sse2<depth_func::less, HasDepth>(canvas, depth, f, depth_write, y0, y1);
+        case depth_func::less: return fill_rows_sse2<depth_func::less, HasDepth, WideRows>(canvas, depth, f, depth_write, y0, y1);
         case depth_func::less_equal:
-            return fill_rows_sse2<depth_func::less_equal, HasDepth>(canvas, depth, f, depth_write, y0, y1);
-        case depth_func::equal: return fill_rows_sse2<depth_func::equal, HasDepth>(canvas, depth, f, depth_write, y0, y1);
+            return fill_rows_sse2<depth_func::less_equal, HasDepth, WideRows>(canvas, depth, f, depth_write, y0, y1);
+        case depth_func::equal: return fill_rows_sse2<depth_func::equal, HasDepth, WideRows>(canvas, depth, f, depth_write, y0, y1);
         case depth_func::greater:
-            return fill_rows_sse2<depth_func::greater, HasDepth>(canvas, depth, f, depth_write, y0, y1);
+            return fill_rows_sse2<depth_func::greater, HasDepth, WideRows>(canvas, depth, f, depth_write, y0, y1);
         case depth_func::greater_equal:
-            return fill_rows_sse2<depth_func::greater_equal, HasDepth>(canvas, depth, f, depth_write, y0, y1);
+            return fill_rows_sse2<depth_func::greater_equal, HasDepth, WideRows>(canvas, depth, f, depth_write, y0, y1);
         case depth_func::not_equal:
-            return fill_rows_sse2<depth_func::not_equal, HasDepth>(canvas, depth, f, depth_write, y0, y1);
-        case depth_func::always: return fill_rows_sse2<depth_func::always, HasDepth>(canvas, depth, f, depth_write, y0, y1);
+            return fill_rows_sse2<depth_func::not_equal, HasDepth, WideRows>(canvas, depth, f, depth_write, y0, y1);
+        case depth_func::always: return fill_rows_sse2<depth_func::always, HasDepth, WideRows>(canvas, depth, f, depth_write, y0, y1);
     }
 }
 #endif
@@ -313,8 +320,11 @@ void fill_fast_rows(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, co
         return;
     }
 #ifdef __SSE2__
-    if (depth) fill_rows_dispatch<true>(canvas, depth, f, test, depth_write, y0, y1);
-    else fill_rows_dispatch<false>(canvas, depth, f, depth_func::always, false, y0, y1);
+    const bool wide_rows = f.max_x - f.min_x >= PLAIN_STORE_MIN_WIDTH;
+    if (depth && wide_rows) fill_rows_dispatch<true, true>(canvas, depth, f, test, depth_write, y0, y1);
+    else if (depth) fill_rows_dispatch<true, false>(canvas, depth, f, test, depth_write, y0, y1);
+    else if (wide_rows) fill_rows_dispatch<false, true>(canvas, depth, f, depth_func::always, false, y0, y1);
+    else fill_rows_dispatch<false, false>(canvas, depth, f, depth_func::always, false, y0, y1);
 #else
     triangle_edges t;
     for (int k = 0; k < 3; ++k) {
