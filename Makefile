@@ -70,7 +70,11 @@ $(BUILD)/san/tests/%: $(BUILD)/san/obj/tests/%.o $(SAN_LIB)
 	$(CXX) $(STD) $(SANFLAGS) $< $(SAN_LIB) -o $@ $(LDLIBS)
 
 tests: $(TEST_BINS) $(SAN_TESTS) $(DEMO_BINS)
-test: tests
+# `make test` and `make demo` build with one job per core even when called without -j.
+NPROC := $(shell nproc 2>/dev/null || echo 2)
+PARALLEL := -j$(NPROC)
+test:
+	@$(MAKE) --no-print-directory $(PARALLEL) tests
 	@BUILD=$(BUILD) bash tests/run_tests.sh $(TEST_BINS) -- $(SAN_TESTS)
 include tests/compat/compat.mk
 
@@ -88,7 +92,8 @@ define run-demo
 	@echo "demo: $(1)"; mkdir -p $(BUILD)/frames/$(1); $(BUILD)/demo/$(1) $(DEMO_ARGS_$(1)) $(if $(filter $(1),$(DEMO_NO_OUT)),,--out $(BUILD)/frames/$(1))
 
 endef
-demo: $(DEMO_BINS)
+demo:
+	@$(MAKE) --no-print-directory $(PARALLEL) demos
 	$(foreach d,$(DEMO_NAMES),$(call run-demo,$(d)))
 	@echo "frames written under $(BUILD)/frames/"
 

@@ -36,7 +36,7 @@ enum class light_kind : int {
 // -Wextra (it is still an aggregate).
 typedef struct light_t {
     vec3_t direction;        // towards the light (directional lights)
-    float intensity;         // ≥ 0
+    float intensity = 0;     // ≥ 0 (0 by default, so `light_t l = {0};` compiles as C++)
     tiny3d::light_kind kind = tiny3d::light_kind::directional;
     vec3_t position = {0.0f, 0.0f, 0.0f};  // point lights: where the light is
 } light_t;

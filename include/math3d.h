@@ -27,12 +27,14 @@
 #define M_PI 3.14159265358979323846
 #endif
 
+// Members default to 0 so C idioms such as `vec3_t v = {0};` and `vec3_t v = {1};` compile
+// as C++ under -Wextra -Werror (no missing-initializer warning); the types stay aggregates.
 typedef struct vec3_t {
-    float x, y, z;
+    float x = 0, y = 0, z = 0;
 } vec3_t;
 
 typedef struct vec4_t {
-    float x, y, z, w;
+    float x = 0, y = 0, z = 0, w = 0;
 } vec4_t;
 
 typedef struct mat4_t {

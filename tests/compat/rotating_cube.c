@@ -29,6 +29,10 @@ int main(int argc, char **argv) {
 
     mat4 proj = mat4_frustum_asymmetric(-1, 1, -1, 1, 1, 10);
     mat4_t unit = {0}; /* identity built by hand from a zeroed matrix */
+    vec3_t origin = {0}; /* the C idiom for a zero vector */
+    light_t unused_light = {0};
+    (void)unused_light;
+    if (origin.x != 0 || origin.y != 0 || origin.z != 0) return 3;
     unit.m[0] = unit.m[5] = unit.m[10] = unit.m[15] = 1;
 
     int transform_forms_agree = 1;
