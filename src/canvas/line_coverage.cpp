@@ -19,6 +19,7 @@
 #include "canvas.h"
 #include "coverage_geometry.h"
 #include "line_clip.h"
+#include "stroke_outline.h"
 
 namespace tiny3d {
 namespace {
@@ -163,41 +164,6 @@ struct stroke_frame {
         return total;
     }
 
-    // The same area for the unit square [x, x+1] × [y, y+1] (relative to A), skipping
-    // every clip and disc that cannot change the result. Used by the fast line. Each cap's
-    // disc lies inside the band |u| ≤ h, so a square missing the band misses the stroke;
-    // a square crossing an end is split there once: the part beyond feeds the cap's disc,
-    // the rest (clipped to the band) is body.
-    T unit_square_area(T x, T y) const {
-        const T nx = -dy, ny = dx;
-        // u, v ranges over the corners: centre ± half the square's extent along each axis.
-        const T cu = nx * (x + T(0.5)) + ny * (y + T(0.5)), cv = dx * (x + T(0.5)) + dy * (y + T(0.5));
-        const T ext = (std::fabs(dx) + std::fabs(dy)) / 2;
-        if (!(cu - ext < half && cu + ext > -half)) return 0;
-        small_polygon<T> rest = square(x, y), beyond;
-        T total = 0;
-        if (cv - ext < 0) {  // end A (v = 0)
-            if (cv + ext > 0)
-                detail::split_half_plane(rest, dx, dy, T(0), rest, beyond);
-            else
-                std::swap(rest, beyond);
-            if (cap_a) total += cap_part(beyond, x, y, T(0), T(0));
-        }
-        if (cv + ext > length) {  // end B (v = L)
-            if (cv - ext < length)
-                detail::split_half_plane(rest, -dx, -dy, -length, rest, beyond);
-            else
-                std::swap(rest, beyond);
-            if (cap_b) total += cap_part(beyond, x, y, dx * length, dy * length);
-        }
-        if (rest.n >= 3) {
-            if (cu + ext > half) rest = clip_half_plane(rest, nx, ny, half);
-            if (cu - ext < -half) rest = clip_half_plane(rest, -nx, -ny, half);
-            total += std::fabs(signed_area(rest));
-        }
-        return total;
-    }
-
     static small_polygon<T> square(T x, T y) {
         small_polygon<T> sq;
         sq.n = 4;
@@ -208,18 +174,6 @@ struct stroke_frame {
         return sq;
     }
 
-private:
-    // Area of `part` (the part beyond an end of the unit square with corner x, y) inside
-    // the end's disc centred (cx, cy).
-    T cap_part(const small_polygon<T> &part, T x, T y, T cx, T cy) const {
-        const T r2 = half * half;
-        const T gx = std::max({x - cx, cx - x - 1, T(0)}), gy = std::max({y - cy, cy - y - 1, T(0)});
-        if (part.n < 3 || gx * gx + gy * gy >= r2) return 0;  // the square misses the disc
-        const T fx = std::max(std::fabs(x - cx), std::fabs(x + 1 - cx));
-        const T fy = std::max(std::fabs(y - cy), std::fabs(y + 1 - cy));
-        if (fx * fx + fy * fy <= r2) return std::fabs(signed_area(part));  // inside the disc
-        return polygon_disc_area<T, false>(part, cx, cy, half);
-    }
 };
 
 // Direction, length and normal of a segment, with a point treated as direction +x.
@@ -253,6 +207,9 @@ std::pair<int, int> touched_cells(double lo, double hi, int size) {
     if (double(end) < hi) ++end;  // ceil(hi)
     return {first, end - 1};
 }
+
+// A cell index (a floor or ceil already taken) clamped to [−1, size]: safe to convert.
+int clamp_cell(double cell, int size) { return int(std::clamp(cell, -1.0, double(size))); }
 
 }  // namespace
 
@@ -290,71 +247,46 @@ void draw_line_coverage(canvas_t *canvas, float x0, float y0, float x1, float y1
     const double length = (clip.start_clipped || clip.end_clipped)
                               ? std::max(0.0, (clip.x1 - cax) * axes.dx + (clip.y1 - cay) * axes.dy)
                               : axes.length;
-    // The end pixels are clipped in double: in float, near-tangent circle crossings lose
-    // up to 3e-3 of area.
-    const stroke_frame<double> frame{axes.dx, axes.dy, length, h, round && !clip.start_clipped,
-                                     round && !clip.end_clipped};
-    const double cbx = cax + axes.dx * length, cby = cay + axes.dy * length;
+    const bool round_a = round && !clip.start_clipped, round_b = round && !clip.end_clipped;
+    const detail::stroke_outline outline(axes.dx, axes.dy, length, h, round_a, round_b);
+
+    // Columns of the major axis: near each end (where the stroke's X extent begins, up to
+    // where the end line v = 0 or v = L stops: ±h·|dy| around the end's X) every pixel is
+    // computed from the outline; between them each column crosses only the band |u| ≤ h,
+    // whose closed form is exact there.
+    const double end_halo = h * std::fabs(axes.dy);
+    const double bx_local = length * axes.dx;
+    const int first_col = clamp_cell(std::floor(cax + outline.x_min), major_size);
+    const int last_col = clamp_cell(std::ceil(cax + outline.x_max) - 1.0, major_size);
+    int end_a_last = clamp_cell(std::ceil(cax + end_halo) - 1.0, major_size);
+    int end_b_first = clamp_cell(std::floor(cax + bx_local - end_halo), major_size);
+    if (end_b_first <= end_a_last + 1) {  // short: the ends' columns meet
+        end_a_last = last_col;
+        end_b_first = last_col + 1;
+    }
+    float *const data = canvas->data;
+    auto end_columns = [&](int from, int to) {
+        for (int i = std::max(from, 0); i <= std::min(to, major_size - 1); ++i)
+            detail::draw_outline_column(outline, i - cax, cay, data + i * major_stride, minor_stride, minor_size,
+                                        intensity);
+    };
+    end_columns(first_col, end_a_last);
+    end_columns(end_b_first, last_col);
 
     const double nx = -axes.dy, ny = axes.dx;  // unit normal; axes.dx ≥ |axes.dy|
     const square_cdf cdf(nx, ny);
     const float hf = float(h);
-    const float reach = hf + cdf.w_hi;  // |u| ≥ reach: the square misses the stroke
-    // A square whose centre has slab_lo ≤ v ≤ slab_hi lies inside 0 ≤ v ≤ L.
-    const float slab_lo = cdf.w_hi, slab_hi = float(length) - cdf.w_hi;
-    const float du = float(ny), dv = float(axes.dy);  // change of u, v per minor step
-    // v ≤ v_min or v ≥ v_max: the square lies beyond an end and its cap (if any).
-    const float v_min = -cdf.w_hi - (frame.cap_a ? hf : 0.0f);
-    const float v_max = float(length) + cdf.w_hi + (frame.cap_b ? hf : 0.0f);
-
-    // Major columns the stroke can reach; per column, the minor span of the band
-    // (|minor − centreline| ≤ h / axes.dx over the column) plus, near a round end, that
-    // end's disc.
-    const auto [col_first, col_last] = touched_cells(std::min(cax, cbx) - h, std::max(cax, cbx) + h, major_size);
+    const float du = float(ny);  // change of u per minor step
+    // Per column, the minor span of the band: |minor − centreline| ≤ h / axes.dx over the column.
     const double slope = axes.dy / axes.dx, band_half = h / axes.dx;
     const double span_lo = std::min(0.0, slope) - band_half, span_hi = std::max(0.0, slope) + band_half;
-    // Body columns: every pixel within h + kClipSlack of the centre line has its square inside
-    // 0 ≤ v ≤ L (v = (X − A.x + u·dy)/dx at major coordinate X), so neither end matters and
-    // the closed form alone is exact there.
-    const double body_reach = (h + kClipSlack) * std::fabs(axes.dy);
-    const double body_lo = std::ceil(cax + double(slab_lo) * axes.dx + body_reach - 0.5);
-    const double body_hi = std::floor(cax + double(slab_hi) * axes.dx - body_reach - 0.5);
-    float *const data = canvas->data;
     const band_writer writer(cdf, hf, intensity, du, minor_stride, minor_size);
-    for (int i = col_first; i <= col_last; ++i) {
+    for (int i = std::max(end_a_last + 1, 0); i < std::min(end_b_first, major_size); ++i) {
         const double y_left = cay + (i - cax) * slope;
-        double lo = y_left + span_lo, hi = y_left + span_hi;
-        if (i >= body_lo && i <= body_hi) {
-            const auto [row_first, row_last] = touched_cells(lo, hi, minor_size);
-            if (row_first > row_last) continue;
-            const double rx = i + 0.5 - cax, ry = row_first + 0.5 - cay;
-            writer.run(data + i * major_stride, row_first, row_last - row_first + 1, float(rx * nx + ry * ny));
-            continue;
-        }
-        // A column near an end: the cap discs' spans too, and exact clipping where needed.
-        if (frame.cap_a && i + 1 > cax - h && i < cax + h) {
-            lo = std::min(lo, cay - h);
-            hi = std::max(hi, cay + h);
-        }
-        if (frame.cap_b && i + 1 > cbx - h && i < cbx + h) {
-            lo = std::min(lo, cby - h);
-            hi = std::max(hi, cby + h);
-        }
-        const auto [row_first, row_last] = touched_cells(lo, hi, minor_size);
+        const auto [row_first, row_last] = touched_cells(y_left + span_lo, y_left + span_hi, minor_size);
         if (row_first > row_last) continue;
-        // Centre of the first pixel relative to A, then u, v by increments down the column.
         const double rx = i + 0.5 - cax, ry = row_first + 0.5 - cay;
-        float u = float(rx * nx + ry * ny), v = float(rx * axes.dx + ry * axes.dy);
-        float *px = data + i * major_stride + row_first * minor_stride;
-        for (int j = row_first; j <= row_last; ++j, u += du, v += dv, px += minor_stride) {
-            if (std::fabs(u) >= reach || v <= v_min || v >= v_max) continue;
-            float cov;
-            if (v >= slab_lo && v <= slab_hi)
-                cov = cdf.band(u, hf);
-            else
-                cov = float(std::min(frame.unit_square_area(i - cax, j - cay), 1.0));
-            if (cov > 0.0f) detail::combine_over(*px, intensity * cov);
-        }
+        writer.run(data + i * major_stride, row_first, row_last - row_first + 1, float(rx * nx + ry * ny));
     }
 }
 
