@@ -152,6 +152,43 @@ TEST(fast_fill_matches_reference_coverage_and_attributes) {
     }
 }
 
+TEST(fast_fill_exact_on_edges_through_pixel_centres) {
+    // The fast fill finds each row's first and last pixel from the edge crossings in double
+    // precision; ties must still follow the integer edge test exactly. Vertices on a 1/4-px
+    // lattice (exact after snapping) make edges pass exactly through many pixel centres,
+    // and 1/16-px offsets give nearly horizontal and vertical edges. Coverage must equal the
+    // 64-bit reference visitor's, and the lattice must really produce such ties.
+    std::mt19937 rng(23);
+    std::uniform_int_distribution<int> quarter(-8, 4 * W + 8), quarter_y(-8, 4 * H + 8), nudge(-1, 1);
+    canvas_ptr c = make_canvas(W, H).value();
+    long wrong = 0, ties = 0;
+    for (int trial = 0; trial < 3000; ++trial) {
+        int X[3], Y[3];  // 1/16 px
+        for (int k = 0; k < 3; ++k) X[k] = 4 * quarter(rng), Y[k] = 4 * quarter_y(rng);
+        if (trial % 4 == 1) Y[1] = Y[0] + nudge(rng), X[2] = X[0] + nudge(rng);  // near-horizontal / vertical
+        if (trial % 4 == 2)  // small triangles, as in a dense mesh
+            for (int k = 1; k < 3; ++k) X[k] = X[0] + 4 * (quarter(rng) % 24), Y[k] = Y[0] + 4 * (quarter_y(rng) % 24);
+        screen_vertex v[3];
+        for (int k = 0; k < 3; ++k) v[k] = sv(X[k] / 16.0, Y[k] / 16.0);
+        const float in[3] = {0.5f, 0.5f, 0.5f};
+        canvas_clear(c.get(), 0.0f);
+        fill_triangle(*c, nullptr, v, in, depth_func::always, false, {0, 0, W, H});
+        std::vector<char> expect(W * H, 0);
+        rasterize_triangle(v[0], v[1], v[2], {0, 0, W, H}, [&](int x, int y, float, float, float) { expect[y * W + x] = 1; });
+        for (int i = 0; i < W * H; ++i) wrong += (c->data[i] > 0) != (expect[i] != 0);
+        for (int y = 0; y < H; ++y)  // centres exactly on an edge line, counted in integers
+            for (int x = 0; x < W; ++x)
+                for (int k = 0; k < 3; ++k) {
+                    const int a = k, b = (k + 1) % 3;
+                    const long e = static_cast<long>(X[b] - X[a]) * (16 * y + 8 - Y[a]) -
+                                   static_cast<long>(Y[b] - Y[a]) * (16 * x + 8 - X[a]);
+                    ties += e == 0;
+                }
+    }
+    CHECK_EQ(wrong, 0L);
+    CHECK(ties > 1000);
+}
+
 TEST(intersecting_triangles_resolved_per_pixel_by_depth) {
     canvas_ptr c = make_canvas(W, H).value();
     zbuffer z;

@@ -118,23 +118,49 @@ inline plane attribute_plane(const plane_geometry &g, const float f[3]) {
 
 }  // namespace
 
+namespace {
+
+// floor(n / d) for d > 0 (C++ division truncates towards zero).
+inline std::int64_t floor_div(std::int64_t n, std::int64_t d) { return n >= 0 ? n / d : -((-n + d - 1) / d); }
+
+// Rows [0, count) relative to min_y: those where no horizontal edge (a = 0, E = E0 + b·dy)
+// is negative. Narrows [first, last] (relative row numbers).
+inline void clip_rows_by_horizontal_edge(std::int64_t e0, std::int64_t b, int &first, int &last) {
+    if (b > 0) first = static_cast<int>(std::max<std::int64_t>(first, -floor_div(e0, b)));  // dy ≥ ceil(−e0 / b)
+    else last = static_cast<int>(std::min<std::int64_t>(last, floor_div(e0, -b)));         // dy ≤ floor(e0 / −b)
+}
+
+}  // namespace
+
 bool make_fast_triangle(const triangle_edges &t, const screen_vertex v[3], const float intensity[3],
                         std::int32_t wide_index, fast_triangle &out) {
     if (!t.valid) return false;
     out.min_x = t.min_x;
     out.max_x = t.max_x;
-    out.min_y = t.min_y;
-    out.max_y = t.max_y;
+    int first = 0, last = t.max_y - t.min_y;
+    for (int k = 0; k < 3; ++k)
+        if (t.a[k] == 0) clip_rows_by_horizontal_edge(t.c[k] + t.b[k] * t.min_y, t.b[k], first, last);
+    if (first > last) return false;
+    out.min_y = t.min_y + first;
+    out.max_y = t.min_y + last;
     const bool fits = t.span_x < FAST_SPAN_LIMIT && t.span_y < FAST_SPAN_LIMIT;
     out.wide = fits ? -1 : wide_index;
-    for (int k = 0; k < 3; ++k) {
-        const std::int64_t e = t.c[k] + t.a[k] * t.min_x + t.b[k] * t.min_y;
-        out.e[k] = fits ? static_cast<std::int32_t>(e) : 0;
-        out.a[k] = fits ? static_cast<std::int32_t>(t.a[k]) : 0;
-        out.b[k] = fits ? static_cast<std::int32_t>(t.b[k]) : 0;
+    // Edge crossings: E(min_x + x, min_y + dy) = e0 + a·x + b·dy = 0 at x = −e0/a − (b/a)·dy.
+    constexpr double NO_EDGE = 1e30;
+    int left = 0, right = 2;
+    out.cross[0] = out.cross[1] = -NO_EDGE;
+    out.cross[2] = out.cross[3] = NO_EDGE;
+    out.cross_step[0] = out.cross_step[1] = out.cross_step[2] = out.cross_step[3] = 0.0;
+    for (int k = 0; k < 3 && fits; ++k) {
+        if (t.a[k] == 0) continue;
+        const std::int64_t e0 = t.c[k] + t.a[k] * out.min_x + t.b[k] * out.min_y;
+        const double inv_a = 1.0 / static_cast<double>(t.a[k]);
+        const int slot = t.a[k] > 0 ? left++ : right++;
+        out.cross[slot] = -static_cast<double>(e0) * inv_a;
+        out.cross_step[slot] = -static_cast<double>(t.b[k]) * inv_a;
     }
     const float depth[3] = {v[0].z, v[1].z, v[2].z};
-    const plane_geometry g = make_plane_geometry(t, t.min_x, t.min_y);
+    const plane_geometry g = make_plane_geometry(t, out.min_x, out.min_y);
     const plane zp = attribute_plane(g, depth);
     const plane ip = attribute_plane(g, intensity);
     out.z = zp.at_ref;
@@ -178,12 +204,6 @@ void fill_rows_scalar64(canvas_t &canvas, zbuffer *depth, const fast_triangle &f
 }
 
 #ifdef __SSE2__
-// Edge k at the first pixel of row min_y + dy: inside the box, so it fits in 32 bits
-// (the product alone may not).
-inline std::int32_t row_edge(const fast_triangle &f, int k, int dy) {
-    return static_cast<std::int32_t>(f.e[k] + static_cast<std::int64_t>(f.b[k]) * dy);
-}
-
 // Bounding-box width (px) from which the 4-wide loop takes the WideRows variant.
 constexpr int PLAIN_STORE_MIN_WIDTH = 32;
 
@@ -203,70 +223,61 @@ inline __m128 select(__m128 mask, __m128 a, __m128 b) {  // mask ? a : b
     return _mm_or_ps(_mm_and_ps(mask, a), _mm_andnot_ps(mask, b));
 }
 
-// The 4-wide loop: edge values of 4 neighbouring pixels in one register each; the sign
-// bits of e0 | e1 | e2 mark the pixels outside. Lanes past the canvas' right edge are
-// finished one by one from the same register values. WideRows (wide triangles: many groups
-// whose four pixels all pass) adds a plain-store branch for such groups that skips the
-// colour read; small triangles (mostly partial groups) go without that branch.
+// The 4-wide span loop: each row runs from its exact first covered pixel (row_span) in
+// groups of four; a lane is covered when its column is below the row's end, so only the
+// last group of a row is partial and no edge function is evaluated per pixel. A group that
+// would pass the canvas' right edge is finished lane by lane. WideRows (wide triangles:
+// many groups whose four pixels all pass) adds a plain-store branch for such groups that
+// skips the colour read; small triangles go without that branch.
 template <depth_func Test, bool HasDepth, bool WideRows>
 void fill_rows_sse2(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bool depth_write, int y0,
                     int y1) {
+    const __m128i lane = _mm_set_epi32(3, 2, 1, 0), four = _mm_set1_epi32(4);
     const __m128 lane_f = _mm_set_ps(3.0f, 2.0f, 1.0f, 0.0f);
-    __m128i step[3], start[3];
-    for (int k = 0; k < 3; ++k) {
-        start[k] = _mm_set_epi32(3 * f.a[k], 2 * f.a[k], f.a[k], 0);  // a·lane
-        step[k] = _mm_set1_epi32(4 * f.a[k]);
-    }
     const __m128 zstep = _mm_set1_ps(4.0f * f.zdx), istep = _mm_set1_ps(4.0f * f.idx);
     const __m128 zoff = _mm_mul_ps(_mm_set1_ps(f.zdx), lane_f), ioff = _mm_mul_ps(_mm_set1_ps(f.idx), lane_f);
     const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f);
     const int width = canvas.width;
-    // Edge values at the row start advance exactly (integers) by b per row.
-    __m128i row0 = _mm_add_epi32(_mm_set1_epi32(row_edge(f, 0, y0 - f.min_y)), start[0]);
-    __m128i row1 = _mm_add_epi32(_mm_set1_epi32(row_edge(f, 1, y0 - f.min_y)), start[1]);
-    __m128i row2 = _mm_add_epi32(_mm_set1_epi32(row_edge(f, 2, y0 - f.min_y)), start[2]);
-    const __m128i rstep0 = _mm_set1_epi32(f.b[0]), rstep1 = _mm_set1_epi32(f.b[1]), rstep2 = _mm_set1_epi32(f.b[2]);
-    for (int y = y0; y < y1; ++y, row0 = _mm_add_epi32(row0, rstep0), row1 = _mm_add_epi32(row1, rstep1),
-             row2 = _mm_add_epi32(row2, rstep2)) {
+    for (int y = y0; y < y1; ++y) {
         const int dy = y - f.min_y;
-        __m128i e0 = row0, e1 = row1, e2 = row2;
-        __m128 z = _mm_add_ps(_mm_set1_ps(f.z + f.zdy * static_cast<float>(dy)), zoff);
-        __m128 in = _mm_add_ps(_mm_set1_ps(f.i + f.idy * static_cast<float>(dy)), ioff);
+        int lo, hi;
+        row_span(f, dy, lo, hi);
+        if (lo > hi) continue;
+        const float lo_f = static_cast<float>(lo), dy_f = static_cast<float>(dy);
+        __m128 z = _mm_add_ps(_mm_set1_ps(f.z + f.zdy * dy_f + f.zdx * lo_f), zoff);
+        __m128 in = _mm_add_ps(_mm_set1_ps(f.i + f.idy * dy_f + f.idx * lo_f), ioff);
         float *color = canvas.pixels[y];
         float *zrow = HasDepth ? depth->row(y) : nullptr;
-        for (int x = f.min_x; x <= f.max_x; x += 4) {
-            const __m128i outside = _mm_srai_epi32(_mm_or_si128(_mm_or_si128(e0, e1), e2), 31);
-            const int out_bits = _mm_movemask_ps(_mm_castsi128_ps(outside));
-            if (out_bits != 0xF) {
-                if (x + 4 <= width) {
-                    __m128 mask = _mm_andnot_ps(_mm_castsi128_ps(outside), _mm_castsi128_ps(_mm_set1_epi32(-1)));
-                    __m128 stored = z;
-                    if constexpr (HasDepth) {
-                        stored = _mm_loadu_ps(zrow + x);
-                        mask = _mm_and_ps(mask, depth_mask<Test>(z, stored));
-                    }
-                    const int pass = _mm_movemask_ps(mask);
-                    if (WideRows && pass == 0xF) {  // all four pass: plain stores, no colour read
-                        if (HasDepth && depth_write) _mm_storeu_ps(zrow + x, z);
-                        _mm_storeu_ps(color + x, _mm_min_ps(_mm_max_ps(in, zero), one));
-                    } else {
-                        if (HasDepth && depth_write) _mm_storeu_ps(zrow + x, select(mask, z, stored));
-                        if (pass) {
-                            const __m128 shade = _mm_min_ps(_mm_max_ps(in, zero), one);
-                            _mm_storeu_ps(color + x, select(mask, shade, _mm_loadu_ps(color + x)));
-                        }
-                    }
-                } else {
-                    alignas(16) float zl[4], il[4];
-                    _mm_store_ps(zl, z);
-                    _mm_store_ps(il, in);
-                    for (int l = 0; l < 4 && x + l < width; ++l)
-                        if (!(out_bits & (1 << l))) shade_pixel(color, zrow, x + l, zl[l], il[l], Test, depth_write);
+        const int x_end = f.min_x + hi + 1;
+        const __m128i end = _mm_set1_epi32(x_end);
+        int x = f.min_x + lo;
+        __m128i column = _mm_add_epi32(_mm_set1_epi32(x), lane);
+        for (; x < x_end; x += 4) {
+            if (x + 4 > width) {
+                alignas(16) float zl[4], il[4];
+                _mm_store_ps(zl, z);
+                _mm_store_ps(il, in);
+                for (int l = 0; x + l < x_end; ++l) shade_pixel(color, zrow, x + l, zl[l], il[l], Test, depth_write);
+                break;
+            }
+            __m128 mask = _mm_castsi128_ps(_mm_cmpgt_epi32(end, column));
+            __m128 stored = z;
+            if constexpr (HasDepth) {
+                stored = _mm_loadu_ps(zrow + x);
+                mask = _mm_and_ps(mask, depth_mask<Test>(z, stored));
+            }
+            const int pass = _mm_movemask_ps(mask);
+            if (WideRows && pass == 0xF) {  // all four pass: plain stores, no colour read
+                if (HasDepth && depth_write) _mm_storeu_ps(zrow + x, z);
+                _mm_storeu_ps(color + x, _mm_min_ps(_mm_max_ps(in, zero), one));
+            } else {
+                if (HasDepth && depth_write) _mm_storeu_ps(zrow + x, select(mask, z, stored));
+                if (pass) {
+                    const __m128 shade = _mm_min_ps(_mm_max_ps(in, zero), one);
+                    _mm_storeu_ps(color + x, select(mask, shade, _mm_loadu_ps(color + x)));
                 }
             }
-            e0 = _mm_add_epi32(e0, step[0]);
-            e1 = _mm_add_epi32(e1, step[1]);
-            e2 = _mm_add_epi32(e2, step[2]);
+            column = _mm_add_epi32(column, four);
             z = _mm_add_ps(z, zstep);
             in = _mm_add_ps(in, istep);
         }
@@ -326,13 +337,16 @@ void fill_fast_rows(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, co
     else if (wide_rows) fill_rows_dispatch<false, true>(canvas, depth, f, depth_func::always, false, y0, y1);
     else fill_rows_dispatch<false, false>(canvas, depth, f, depth_func::always, false, y0, y1);
 #else
-    triangle_edges t;
-    for (int k = 0; k < 3; ++k) {
-        t.a[k] = f.a[k];
-        t.b[k] = f.b[k];
-        t.c[k] = f.e[k] - static_cast<std::int64_t>(f.a[k]) * f.min_x - static_cast<std::int64_t>(f.b[k]) * f.min_y;
+    for (int y = y0; y < y1; ++y) {
+        const int dy = y - f.min_y;
+        int lo, hi;
+        row_span(f, dy, lo, hi);
+        const float zr = f.z + f.zdy * static_cast<float>(dy), ir = f.i + f.idy * static_cast<float>(dy);
+        float *zrow = depth ? depth->row(y) : nullptr;
+        for (int x = lo; x <= hi; ++x)
+            shade_pixel(canvas.pixels[y], zrow, f.min_x + x, zr + f.zdx * static_cast<float>(x),
+                        ir + f.idx * static_cast<float>(x), test, depth_write);
     }
-    fill_rows_scalar64(canvas, depth, f, t, test, depth_write, y0, y1);
 #endif
 }
 

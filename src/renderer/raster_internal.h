@@ -3,6 +3,7 @@
 #ifndef TINY3D_RASTER_INTERNAL_H
 #define TINY3D_RASTER_INTERNAL_H
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -46,21 +47,47 @@ inline bool facing_culled(std::int64_t area2, cull_mode cull) {
 triangle_edges triangle_setup_snapped(const std::int32_t X[3], const std::int32_t Y[3], pixel_rect clip,
                                       cull_mode cull);
 
-// Edge functions fit in 32 bits (|E| < 2^31) when the snapped vertex bounding box spans
-// less than this many sub-pixel units per axis, including 4 px of SIMD overshoot:
-// |E| ≤ |dX|·|Py − Ya| + |dY|·|Px − Xa| < 2 · (2^15)^2 = 2^31.
+// The span fill's precision argument (fast_triangle) holds when the snapped vertex
+// bounding box spans less than this many sub-pixel units per axis: then every edge value
+// inside the box has |E| ≤ |dX|·|Py − Ya| + |dY|·|Px − Xa| < 2 · (2^15)^2 = 2^31 and
+// |a| = 16·|dY| < 2^19.
 inline constexpr std::int64_t FAST_SPAN_LIMIT = (1 << 15) - 8 * RASTER_SUBPIXEL_ONE;
 
-// One triangle ready for the 4-wide fill: edge values and attribute values at the centre of
-// pixel (min_x, min_y), per-pixel steps in x (a) and y (b). Band-independent: a band only
-// chooses which rows of it to draw, so every thread count gives the same pixels.
+// One triangle ready for the span fill. Row min_y + dy covers exactly the columns
+// min_x + [ceil(max(L0, L1)), floor(min(R0, R1))], where Lj = cross[j] + cross_step[j]·dy
+// is where a left edge (E growing with x) crosses zero, relative to min_x, and Rj the same
+// for a right edge (absent edges are ±∞ dummies); rows cut by a horizontal edge are
+// already removed from [min_y, max_y]. Why this equals the integer test E ≥ 0 exactly:
+// the true crossing −E/a is a fraction with |a| < 2^19, so a non-integer one is at least
+// 2^-19 from any integer, while the double evaluation errs by < 2^-24 (|values| < 2^28);
+// rounding with a bias CROSS_EPS between the two decides every pixel as the integers do.
+// Attribute values at the centre of pixel (min_x, min_y) with per-pixel steps.
+// Band-independent: a band only chooses which rows to draw, so any thread count gives the
+// same pixels.
 struct fast_triangle {
     int min_x, max_x, min_y, max_y;  // inclusive pixel bounds, clamped to the target
-    std::int32_t e[3], a[3], b[3];   // valid when wide < 0
+    double cross[4], cross_step[4];  // [0], [1]: left edges; [2], [3]: right edges
     float z, zdx, zdy;               // window depth plane
     float i, idx, idy;               // intensity plane
     std::int32_t wide;               // ≥ 0: index of the 64-bit edges in the wide list
 };
+
+inline constexpr double CROSS_EPS = 1.0 / (1 << 21);
+
+// The covered columns [lo, hi] of row min_y + dy, relative to min_x (empty when lo > hi).
+// Fast-path triangles only (wide < 0).
+inline void row_span(const fast_triangle &f, int dy, int &lo, int &hi) {
+    const double d = dy, w = f.max_x - f.min_x;
+    const double left = std::max(f.cross[0] + f.cross_step[0] * d, f.cross[1] + f.cross_step[1] * d);
+    const double right = std::min(f.cross[2] + f.cross_step[2] * d, f.cross[3] + f.cross_step[3] * d);
+    // Clamped to [−0.5, w + 0.5] (ceil/floor commute with the clamp), then ceil and floor
+    // by truncating a positive value: ceil(v) = K − trunc(K − v), floor(v) = trunc(v + K) − K.
+    constexpr double K = 1 << 20;
+    const double l = std::min(std::max(left - CROSS_EPS, -0.5), w + 0.5);
+    const double r = std::min(std::max(right + CROSS_EPS, -0.5), w + 0.5);
+    lo = static_cast<int>(K) - static_cast<int>(K - l);
+    hi = static_cast<int>(r + K) - static_cast<int>(K);
+}
 
 // Builds a fast_triangle from already computed edges (t.valid) and per-vertex depth and
 // intensity. Returns false when the bounds are empty. When the triangle is too large for
