@@ -42,10 +42,12 @@ constexpr double kClipSlack = 2.0;
 // Area of a unit square (centre at offset 0) on the side {s' ≤ s} of a line with unit
 // normal (a, b), as the CDF of U = a·X + b·Y, X, Y ~ U(−½, ½): a trapezoidal density.
 // With amax ≥ amin the abs components, w_lo = (amax − amin)/2, w_hi = (amax + amin)/2:
-//   F(s) = ½ + sign(s)·H(|s|),  H(t) = min(t, w_lo)/amax + m(2·amin − m)/(2·amax·amin),
-//   m = clamp(t − w_lo, 0, amin)   (linear middle part, quadratic corners, H(w_hi) = ½).
+//   F(s) = ½ + sign(s)·H(|s|),  H(t) = τ/amax − m²/(2·amax·amin),  τ = min(t, w_hi),
+//   m = max(τ − w_lo, 0)   (linear middle part, quadratic corners, H(w_hi) = ½). Beyond
+//   w_hi, H is the same float constant for every t, so the two terms of band() cancel
+//   exactly for a square outside the band.
 struct square_cdf {
-    float w_lo, w_hi, inv_amax, amin, inv_2ab;
+    float w_lo, w_hi, inv_amax, inv_2ab;
 
     square_cdf(double a, double b) {
         const double amax = std::max(std::fabs(a), std::fabs(b));
@@ -53,17 +55,15 @@ struct square_cdf {
         w_lo = float((amax - amin_d) / 2);
         w_hi = float((amax + amin_d) / 2);
         inv_amax = float(1.0 / amax);
-        amin = float(amin_d);
         // amin ≈ 0 (axis-aligned line): the quadratic corners are narrower than kNarrowCorner
         // px and contribute nothing visible; m ≡ 0 then, and a zero factor avoids 0·inf.
         inv_2ab = amin_d > kNarrowCorner ? float(1.0 / (2.0 * amax * amin_d)) : 0.0f;
-        if (!(amin_d > kNarrowCorner)) amin = 0.0f;
     }
     // sign(s)·H(|s|) = F(s) − ½
     float centred(float s) const {
-        const float t = std::fabs(s);
-        const float m = std::clamp(t - w_lo, 0.0f, amin);
-        const float h = std::min(t, w_lo) * inv_amax + m * (2.0f * amin - m) * inv_2ab;
+        const float t = std::min(std::fabs(s), w_hi);
+        const float m = std::max(t - w_lo, 0.0f);
+        const float h = t * inv_amax - m * m * inv_2ab;
         return std::copysign(h, s);
     }
     // Area of the square inside the band |s'| ≤ half_width when its centre is at u:
@@ -71,73 +71,77 @@ struct square_cdf {
     float band(float u, float half_width) const { return centred(half_width - u) + centred(half_width + u); }
 };
 
-// Combines band coverage × intensity "over" into runs of pixels down a column: the
-// per-line constants of square_cdf, held ready (as SSE2 vectors when available).
+// Combines band coverage × intensity "over" into contiguous runs of pixels (along a canvas
+// row) whose signed distance u changes by du from one pixel to the next: the per-line
+// constants of square_cdf, held ready (as SSE2 vectors when available).
 class band_writer {
 public:
-    band_writer(const square_cdf &cdf, float half_width, float intensity, float du, std::ptrdiff_t stride,
-                int column_size)
-        : cdf_(cdf), half_(half_width), ink_(intensity), du_(du), stride_(stride), column_size_(column_size) {}
+    band_writer(const square_cdf &cdf, float half_width, float intensity, double du)
+        : cdf_(cdf), half_(half_width), ink_(intensity), du_(du) {}
 
-    // `count` pixels from `first` (a row index within the column starting at `column`),
-    // the first at signed distance u, each next one du further.
-    void run(float *column, int first, int count, float u) const {
+    // Pixels lo..hi (0 ≤ lo ≤ hi < row_size) of `row`, pixel lo at signed distance u_lo.
+    // Pixels of the row beyond lo..hi are never touched.
+    void run(float *row, int row_size, int lo, int hi, double u_lo) const {
 #ifdef __SSE2__
-        // Whole groups of four: pad the run at its end (or, at the column's end, at its
-        // start). Padded pixels lie outside the band, where the coverage is exactly 0 and
-        // v + 0·(1 − v) leaves them bit-for-bit unchanged.
-        const int padded = (count + 3) & ~3;
-        if (padded <= column_size_) {
-            const int shift = std::max(0, first + padded - column_size_);
-            first -= shift;
-            u -= float(shift) * du_;
-            float *p = column + first * stride_;
-            __m128 uv = _mm_add_ps(_mm_set1_ps(u), steps_);
-            for (int j = 0; j < padded; j += 4, p += 4 * stride_, uv = _mm_add_ps(uv, du4_)) {
-                const __m128 cov = _mm_add_ps(centred4(_mm_sub_ps(hw_, uv)), centred4(_mm_add_ps(hw_, uv)));
-                const __m128 old = stride_ == 1 ? _mm_loadu_ps(p) : _mm_set_ps(p[3 * stride_], p[2 * stride_], p[stride_], p[0]);
-                // "over": v + c·(1 − v), c = min(intensity · coverage, 1) (the two band
-                // terms can sum to 1 + 1 ulp; unclamped, overlapping strokes reach 1.0000001)
-                alignas(16) float v[4];
-                const __m128 c = _mm_min_ps(_mm_mul_ps(ink4_, cov), one_);
-                _mm_store_ps(v, _mm_add_ps(old, _mm_mul_ps(c, _mm_sub_ps(one_, old))));
-                if (stride_ == 1) {
-                    _mm_storeu_ps(p, _mm_load_ps(v));
-                } else {
-                    p[0] = v[0];
-                    p[stride_] = v[1];
-                    p[2 * stride_] = v[2];
-                    p[3 * stride_] = v[3];
-                }
+        // Groups of four, the last one moved back inside the row if needed; lanes outside
+        // the pixels not yet drawn get coverage 0, and v + 0·(1 − v) leaves them unchanged.
+        if (row_size >= 4) {
+            const __m128 last = _mm_set1_ps(float(hi));
+            for (int i = lo; i <= hi; i += 4) {
+                const int start = std::min(i, row_size - 4);
+                const __m128 index = _mm_add_ps(_mm_set1_ps(float(start)), lanes_);
+                const __m128 keep = _mm_and_ps(_mm_cmpge_ps(index, _mm_set1_ps(float(i))), _mm_cmple_ps(index, last));
+                const __m128 u = _mm_add_ps(_mm_set1_ps(float(u_lo + double(start - lo) * du_)), lane_du_);
+                blend4(row + start, _mm_and_ps(keep, band4(u)));
             }
             return;
         }
 #endif
-        float *p = column + first * stride_;
-        for (int j = 0; j < count; ++j, u += du_, p += stride_) detail::combine_over(*p, ink_ * cdf_.band(u, half_));
+        for (int i = lo; i <= hi; ++i)
+            detail::combine_over(row[i], ink_ * cdf_.band(float(u_lo + double(i - lo) * du_), half_));
+    }
+
+    // 4·groups pixels from p, the first at signed distance u, all of them inside the row
+    // and free to draw: pixels beyond the band get coverage exactly 0 (both CDF terms
+    // saturate at the same value), so a fixed window needs no masks.
+    void window(float *p, float u, int groups) const {
+#ifdef __SSE2__
+        __m128 uv = _mm_add_ps(_mm_set1_ps(u), lane_du_);
+        for (int g = 0; g < groups; ++g, p += 4, uv = _mm_add_ps(uv, du4_)) blend4(p, band4(uv));
+#else
+        for (int k = 0; k < 4 * groups; ++k)
+            detail::combine_over(p[k], ink_ * cdf_.band(float(u + float(k) * float(du_)), half_));
+#endif
     }
 
 private:
 #ifdef __SSE2__
+    // Band coverage of four pixels with signed distances u (square_cdf::band).
+    // Four pixels at p with coverages cov: "over" with c = min(intensity · coverage, 1)
+    // (the two band terms can sum to 1 + 1 ulp; unclamped, overlapping strokes reach 1.0000001).
+    __m128 band4(__m128 u) const { return _mm_add_ps(centred4(_mm_sub_ps(hw_, u)), centred4(_mm_add_ps(hw_, u))); }
+    void blend4(float *p, __m128 cov) const {
+        const __m128 c = _mm_min_ps(_mm_mul_ps(ink4_, cov), one_);
+        const __m128 old = _mm_loadu_ps(p);
+        _mm_storeu_ps(p, _mm_add_ps(old, _mm_mul_ps(c, _mm_sub_ps(one_, old))));
+    }
     // square_cdf::centred for four values at once.
     __m128 centred4(__m128 s) const {
-        const __m128 t = _mm_andnot_ps(sign_bit_, s);
-        const __m128 m = _mm_min_ps(_mm_max_ps(_mm_sub_ps(t, w_lo_), _mm_setzero_ps()), amin_);
-        const __m128 lin = _mm_mul_ps(_mm_min_ps(t, w_lo_), inv_amax_);
-        const __m128 quad = _mm_mul_ps(_mm_mul_ps(m, _mm_sub_ps(two_amin_, m)), inv_2ab_);
-        return _mm_or_ps(_mm_add_ps(lin, quad), _mm_and_ps(sign_bit_, s));  // H ≥ 0: s's sign
+        const __m128 t = _mm_min_ps(_mm_andnot_ps(sign_bit_, s), w_hi_);
+        const __m128 m = _mm_max_ps(_mm_sub_ps(t, w_lo_), _mm_setzero_ps());
+        const __m128 h = _mm_sub_ps(_mm_mul_ps(t, inv_amax_), _mm_mul_ps(_mm_mul_ps(m, m), inv_2ab_));
+        return _mm_or_ps(h, _mm_and_ps(sign_bit_, s));  // H ≥ 0: s's sign
     }
 #endif
     const square_cdf &cdf_;
-    float half_, ink_, du_;
-    std::ptrdiff_t stride_;
-    int column_size_;
+    float half_, ink_;
+    double du_;
 #ifdef __SSE2__
-    const __m128 sign_bit_ = _mm_set1_ps(-0.0f), w_lo_ = _mm_set1_ps(cdf_.w_lo), amin_ = _mm_set1_ps(cdf_.amin);
-    const __m128 two_amin_ = _mm_set1_ps(2.0f * cdf_.amin), inv_amax_ = _mm_set1_ps(cdf_.inv_amax);
+    const __m128 sign_bit_ = _mm_set1_ps(-0.0f), w_lo_ = _mm_set1_ps(cdf_.w_lo), w_hi_ = _mm_set1_ps(cdf_.w_hi);
+    const __m128 inv_amax_ = _mm_set1_ps(cdf_.inv_amax);
     const __m128 inv_2ab_ = _mm_set1_ps(cdf_.inv_2ab), hw_ = _mm_set1_ps(half_), ink4_ = _mm_set1_ps(ink_);
-    const __m128 one_ = _mm_set1_ps(1.0f), du4_ = _mm_set1_ps(4.0f * du_);
-    const __m128 steps_ = _mm_mul_ps(_mm_set1_ps(du_), _mm_set_ps(3.0f, 2.0f, 1.0f, 0.0f));
+    const __m128 one_ = _mm_set1_ps(1.0f), lanes_ = _mm_set_ps(3.0f, 2.0f, 1.0f, 0.0f);
+    const __m128 lane_du_ = _mm_mul_ps(_mm_set1_ps(float(du_)), lanes_), du4_ = _mm_set1_ps(4.0f * float(du_));
 #endif
 };
 
@@ -211,6 +215,11 @@ std::pair<int, int> touched_cells(double lo, double hi, int size) {
 // A cell index (a floor or ceil already taken) clamped to [−1, size]: safe to convert.
 int clamp_cell(double cell, int size) { return int(std::clamp(cell, -1.0, double(size))); }
 
+// floor(x) for −kFloorOffset < x < 2^31 − kFloorOffset, by truncating a positive number
+// (baseline x86-64 has no rounding instruction; std::floor is a libm call there).
+constexpr double kFloorOffset = 1 << 24;
+int floor_small(double x) { return int(x + kFloorOffset) - int(kFloorOffset); }
+
 }  // namespace
 
 void draw_line_coverage(canvas_t *canvas, float x0, float y0, float x1, float y1, float thickness,
@@ -273,20 +282,77 @@ void draw_line_coverage(canvas_t *canvas, float x0, float y0, float x1, float y1
     end_columns(first_col, end_a_last);
     end_columns(end_b_first, last_col);
 
+    const int body_first = std::max(end_a_last + 1, 0), body_last = std::min(end_b_first, major_size) - 1;
+    if (body_first > body_last) return;
     const double nx = -axes.dy, ny = axes.dx;  // unit normal; axes.dx ≥ |axes.dy|
     const square_cdf cdf(nx, ny);
     const float hf = float(h);
-    const float du = float(ny);  // change of u per minor step
-    // Per column, the minor span of the band: |minor − centreline| ≤ h / axes.dx over the column.
+    // Minor span of the band over a column: |minor − centreline| ≤ h / axes.dx.
     const double slope = axes.dy / axes.dx, band_half = h / axes.dx;
-    const double span_lo = std::min(0.0, slope) - band_half, span_hi = std::max(0.0, slope) + band_half;
-    const band_writer writer(cdf, hf, intensity, du, minor_stride, minor_size);
-    for (int i = std::max(end_a_last + 1, 0); i < std::min(end_b_first, major_size); ++i) {
-        const double y_left = cay + (i - cax) * slope;
-        const auto [row_first, row_last] = touched_cells(y_left + span_lo, y_left + span_hi, minor_size);
-        if (row_first > row_last) continue;
-        const double rx = i + 0.5 - cax, ry = row_first + 0.5 - cay;
-        writer.run(data + i * major_stride, row_first, row_last - row_first + 1, float(rx * nx + ry * ny));
+    if (minor_stride == 1) {
+        // Steep on the canvas: each major column is a canvas row holding a short run.
+        const double span_lo = std::min(0.0, slope) - band_half, span_hi = std::max(0.0, slope) + band_half;
+        const band_writer writer(cdf, hf, intensity, ny);
+        // Rows a column can touch: at most ⌈span⌉ + 1, covered by a window of 4-groups.
+        const int groups = (int(std::ceil(span_hi - span_lo)) + 1 + 3) / 4;
+        // Step from column to column (a DDA): `first` = the window's first row, `frac` the
+        // window's lower bound above it, u the signed distance of pixel (i, first).
+        const double lower = cay + (body_first - cax) * slope + span_lo;
+        int first = floor_small(lower);  // |lower| ≤ canvas + margin
+        double frac = lower - first;
+        double u = (body_first + 0.5 - cax) * nx + (first + 0.5 - cay) * ny;
+        for (int i = body_first; i <= body_last; ++i) {
+            float *row = data + i * major_stride;
+            if (first >= 0 && first + 4 * groups <= minor_size) {
+                writer.window(row + first, float(u), groups);
+            } else {
+                const double y_left = cay + (i - cax) * slope;
+                const auto [row_first, row_last] = touched_cells(y_left + span_lo, y_left + span_hi, minor_size);
+                if (row_first <= row_last)
+                    writer.run(row, minor_size, row_first, row_last, u + (row_first - first) * ny);
+            }
+            // |slope| ≤ 1: the window moves by at most one row per column.
+            frac += slope;
+            u += nx;
+            if (frac >= 1.0) {
+                frac -= 1.0;
+                ++first;
+                u += ny;
+            } else if (frac < 0.0) {
+                frac += 1.0;
+                --first;
+                u -= ny;
+            }
+        }
+        return;
+    }
+    // Shallow on the canvas: walk the canvas rows the band crosses over the body columns;
+    // in row j, u = nx·(i + ½ − A.x) + ny·(j + ½ − A.y) is linear in i, and the run is
+    // where |u| < h + w_hi (beyond it the square misses the band).
+    const band_writer writer(cdf, hf, intensity, nx);
+    const double reach = h + double(cdf.w_hi);
+    const double y_first = cay + (body_first - cax) * slope, y_last = cay + (body_last + 1 - cax) * slope;
+    const auto [row_first, row_last] =
+        touched_cells(std::min(y_first, y_last) - band_half, std::max(y_first, y_last) + band_half, minor_size);
+    const double inv_nx = nx != 0.0 ? 1.0 / nx : 0.0;
+    for (int j = row_first; j <= row_last; ++j) {
+        const double r = ny * (j + 0.5 - cay);  // u = r + nx·(i + ½ − A.x)
+        int lo = body_first, hi = body_last;
+        if (nx != 0.0) {
+            const double x_a = cax - 0.5 + (-reach - r) * inv_nx, x_b = cax - 0.5 + (reach - r) * inv_nx;
+            lo = std::max(lo, clamp_cell(std::floor(std::min(x_a, x_b)), major_size));
+            hi = std::min(hi, clamp_cell(std::ceil(std::max(x_a, x_b)), major_size));
+        } else if (!(std::fabs(r) < reach)) {
+            continue;
+        }
+        if (lo > hi) continue;
+        // Whole groups while they stay inside the body columns (pixels past hi there lie
+        // beyond the band: coverage 0), the rest masked.
+        float *row = data + j * minor_stride;
+        const double u_lo = r + nx * (lo + 0.5 - cax);
+        const int groups = std::min((hi - lo + 4) / 4, (body_last - lo + 1) / 4);
+        writer.window(row + lo, float(u_lo), groups);
+        if (lo + 4 * groups <= hi) writer.run(row, major_size, lo + 4 * groups, hi, u_lo + 4.0 * groups * nx);
     }
 }
 
