@@ -274,10 +274,10 @@ void draw_line_coverage(canvas_t *canvas, float x0, float y0, float x1, float y1
         end_b_first = last_col + 1;
     }
     float *const data = canvas->data;
+    detail::outline_columns ends(outline);
     auto end_columns = [&](int from, int to) {
         for (int i = std::max(from, 0); i <= std::min(to, major_size - 1); ++i)
-            detail::draw_outline_column(outline, i - cax, cay, data + i * major_stride, minor_stride, minor_size,
-                                        intensity);
+            ends.draw(i - cax, cay, data + i * major_stride, minor_stride, minor_size, intensity);
     };
     end_columns(first_col, end_a_last);
     end_columns(end_b_first, last_col);

@@ -27,13 +27,20 @@
 
 namespace tiny3d::detail {
 
+// S(w) = ∫₀ʷ √(h² − v²) dv for |w| ≤ h (the arc's primitive; see the file comment).
+inline double arc_primitive(double w, double h) {
+    const double root = std::sqrt(std::max(0.0, h * h - w * w));
+    return 0.5 * (w * root + h * h * fast_atan2(w, root));
+}
+
 // One monotone piece of a chain over [x1, x2]: a straight segment from (x1, y1) to (x2, y2),
-// or the arc y = cy + s·√(h² − (X − cx)²) (s = +1 upper half, −1 lower half) lying on one
-// side of cx.
+// or the arc y = cy + s·√(h² − (X − cx)²) (s = +1 upper half, −1 lower half) of disc
+// `disc` (0 at A, 1 at B) lying on one side of cx, with S at its ends (s1, s2).
 struct outline_piece {
     double x1, x2, y1, y2;
     bool arc;
-    double cx, cy, s;
+    int disc;
+    double cx, cy, s, s1, s2;
 };
 
 // The stroke's upper or lower boundary as a function of X, left to right.
@@ -43,16 +50,17 @@ struct outline_chain {
     int n = 0;
 
     void add_line(double xa, double ya, double xb, double yb) {
-        if (xb > xa) piece[n++] = {xa, xb, ya, yb, false, 0, 0, 0};
+        if (xb > xa) piece[n++] = {xa, xb, ya, yb, false, 0, 0, 0, 0, 0, 0};
     }
-    // The arc of the disc (cx, cy, h) on side s over [xa, xb], split at cx.
-    void add_arc(double xa, double xb, double cx, double cy, double s, double h) {
+    // The arc of disc `disc` (centre cx, cy, radius h) on side s over [xa, xb], split at
+    // cx (where S = 0); sa, sb: S at xa − cx and xb − cx.
+    void add_arc(double xa, double xb, double sa, double sb, int disc, double cx, double cy, double s, double h) {
         auto y = [&](double x) { return cy + s * std::sqrt(std::max(0.0, h * h - (x - cx) * (x - cx))); };
         if (xa < cx && cx < xb) {
-            piece[n++] = {xa, cx, y(xa), cy + s * h, true, cx, cy, s};
-            piece[n++] = {cx, xb, cy + s * h, y(xb), true, cx, cy, s};
+            piece[n++] = {xa, cx, y(xa), cy + s * h, true, disc, cx, cy, s, sa, 0.0};
+            piece[n++] = {cx, xb, cy + s * h, y(xb), true, disc, cx, cy, s, 0.0, sb};
         } else if (xb > xa) {
-            piece[n++] = {xa, xb, y(xa), y(xb), true, cx, cy, s};
+            piece[n++] = {xa, xb, y(xa), y(xb), true, disc, cx, cy, s, sa, sb};
         }
     }
 };
@@ -63,6 +71,7 @@ struct stroke_outline {
     outline_chain upper, lower;
     double h;
     double x_min, x_max;  // the stroke's X extent
+    double cx[2], cy[2];  // the discs' centres (A, B)
 
     stroke_outline(double dx, double dy, double length, double half_width, bool round_a, bool round_b)
         : h(half_width) {
@@ -70,11 +79,18 @@ struct stroke_outline {
         const double bx = length * dx, by = length * dy;
         const double apx = -h * dy, apy = h * dx, amx = h * dy, amy = -h * dx;  // A+, A−
         const double bpx = bx + apx, bpy = by + apy, bmx = bx + amx, bmy = by + amy;  // B+, B−
+        cx[0] = cy[0] = 0.0;
+        cx[1] = bx;
+        cy[1] = by;
+        // S at the arcs' ends: ±S(h) = ±πh²/4 at the leftmost/rightmost points and, S being
+        // odd, ±S(h·dy) at the tangent points (w = ∓h·dy on both discs).
+        const double quarter = 0.25 * 3.14159265358979323846 * h * h;
+        const double tangent = (round_a || round_b) ? arc_primitive(h * dy, h) : 0.0;
         // End A: the round cap's arcs run from the leftmost point (−h, 0) to A+ and A−; a
         // butt end is the segment A+A−, on the lower chain when it falls left to right.
         if (round_a) {
-            upper.add_arc(-h, apx, 0.0, 0.0, 1.0, h);
-            lower.add_arc(-h, amx, 0.0, 0.0, -1.0, h);
+            upper.add_arc(-h, apx, -quarter, -tangent, 0, 0.0, 0.0, 1.0, h);
+            lower.add_arc(-h, amx, -quarter, tangent, 0, 0.0, 0.0, -1.0, h);
         } else if (dy < 0) {
             upper.add_line(amx, amy, apx, apy);
         } else {
@@ -83,8 +99,8 @@ struct stroke_outline {
         upper.add_line(apx, apy, bpx, bpy);
         lower.add_line(amx, amy, bmx, bmy);
         if (round_b) {
-            upper.add_arc(bpx, bx + h, bx, by, 1.0, h);
-            lower.add_arc(bmx, bx + h, bx, by, -1.0, h);
+            upper.add_arc(bpx, bx + h, -tangent, quarter, 1, bx, by, 1.0, h);
+            lower.add_arc(bmx, bx + h, tangent, quarter, 1, bx, by, -1.0, h);
         } else if (dy > 0) {
             upper.add_line(bpx, bpy, bmx, bmy);
         } else {
@@ -96,98 +112,123 @@ struct stroke_outline {
     }
 };
 
-// A piece restricted to one column: [xa, xb], its ends' heights and ∫ y dX over it.
-struct piece_span {
-    const outline_piece *p;
-    double xa, xb, ya, yb, integral, sa, sb;  // sa, sb: S(xa − cx), S(xb − cx) for arcs
-};
+// Draws the stroke's columns from its outline, one major column [c0, c0 + 1] at a time
+// (X relative to A). S at a column line is shared by the upper and lower arcs of a disc
+// and by the column on either side of the line.
+class outline_columns {
+public:
+    explicit outline_columns(const stroke_outline &outline) : o_(outline) {}
 
-// S(w) = ∫₀ʷ √(h² − v²) dv for |w| ≤ h (the arc's primitive; see the file comment).
-inline double arc_primitive(double w, double h) {
-    const double root = std::sqrt(std::max(0.0, h * h - w * w));
-    return 0.5 * (w * root + h * h * fast_atan2(w, root));
-}
-
-// The pieces of `chain` over the column [c0, c1]; returns their number (≤ kMaxPieces).
-inline int chain_spans(const outline_chain &chain, double h, double c0, double c1, piece_span *out) {
-    int n = 0;
-    for (int k = 0; k < chain.n; ++k) {
-        const outline_piece &p = chain.piece[k];
-        const double xa = std::max(c0, p.x1), xb = std::min(c1, p.x2);
-        if (!(xb > xa)) continue;
-        piece_span &s = out[n++];
-        s.p = &p;
-        s.xa = xa;
-        s.xb = xb;
-        if (p.arc) {
-            s.ya = xa == p.x1 ? p.y1 : p.cy + p.s * std::sqrt(std::max(0.0, h * h - (xa - p.cx) * (xa - p.cx)));
-            s.yb = xb == p.x2 ? p.y2 : p.cy + p.s * std::sqrt(std::max(0.0, h * h - (xb - p.cx) * (xb - p.cx)));
-            s.sa = arc_primitive(xa - p.cx, h);
-            s.sb = arc_primitive(xb - p.cx, h);
-            s.integral = p.cy * (xb - xa) + p.s * (s.sb - s.sa);
-        } else {
-            const double slope = (p.y2 - p.y1) / (p.x2 - p.x1);
-            s.ya = p.y1 + slope * (xa - p.x1);
-            s.yb = p.y1 + slope * (xb - p.x1);
-            s.integral = 0.5 * (s.ya + s.yb) * (xb - xa);
+    // Every row the outline reaches in column [c0, c0 + 1] gets its exact area, times
+    // `intensity`, combined "over". `column` points at the column's pixel in row 0; rows
+    // are `stride` apart, `rows` of them; row j spans Y = j − ay relative to A.
+    void draw(double c0, double ay, float *column, std::ptrdiff_t stride, int rows, float intensity) {
+        const double c1 = c0 + 1.0;
+        // Column-line primitives: reuse the previous column's right line as this left one.
+        for (int d = 0; d < 2; ++d) {
+            left_[d] = c0 == right_line_ ? right_[d] : kUnset;
+            right_[d] = kUnset;
+        }
+        right_line_ = c1;
+        span up[outline_chain::kMaxPieces], low[outline_chain::kMaxPieces];
+        const int n_up = spans(o_.upper, c0, c1, up), n_low = spans(o_.lower, c0, c1, low);
+        if (n_up == 0 || n_low == 0) return;
+        double y_lo = low[0].ya, y_hi = up[0].ya;
+        for (int k = 0; k < n_low; ++k) y_lo = std::min({y_lo, low[k].ya, low[k].yb});
+        for (int k = 0; k < n_up; ++k) y_hi = std::max({y_hi, up[k].ya, up[k].yb});
+        const int j_first = int(std::clamp(std::floor(ay + y_lo), 0.0, double(rows)));
+        const int j_last = int(std::clamp(std::ceil(ay + y_hi), 0.0, double(rows))) - 1;
+        // D(t) = E_up(t) − E_low(t) at the row lines of a block of rows; the area of row j
+        // is D(j) − D(j + 1).
+        for (int j0 = j_first; j0 <= j_last; j0 += kRowBlock) {
+            const int count = std::min(kRowBlock, j_last - j0 + 1);
+            double d[kRowBlock + 1] = {};
+            const double t0 = j0 - ay;
+            for (int k = 0; k < n_up; ++k) add_excess(up[k], t0, count, 1.0, d);
+            for (int k = 0; k < n_low; ++k) add_excess(low[k], t0, count, -1.0, d);
+            for (int r = 0; r < count; ++r) {
+                const double area = d[r] - d[r + 1];
+                if (area > 0.0) combine_over(column[(j0 + r) * stride], intensity * float(std::min(area, 1.0)));
+            }
         }
     }
-    return n;
-}
 
-// E(t) = ∫ max(y(X) − t, 0) dX over one span (closed form; see the file comment).
-inline double span_excess(const piece_span &s, double t, double h) {
-    const double hi = std::max(s.ya, s.yb), lo = std::min(s.ya, s.yb);
-    if (t >= hi) return 0.0;
-    const double width = s.xb - s.xa;
-    if (t <= lo) return s.integral - t * width;
-    const outline_piece &p = *s.p;
-    if (!p.arc) return width * (hi - t) * (hi - t) / (2.0 * (hi - lo));  // the triangle above t
-    // The arc crosses t once, at w = ±√(h² − (t − cy)²) on the piece's side of cx.
-    const double q = t - p.cy;
-    const double side = p.x1 + p.x2 < 2.0 * p.cx ? -1.0 : 1.0;
-    const double wc = side * std::sqrt(std::max(0.0, h * h - q * q));
-    const double xc = std::clamp(p.cx + wc, s.xa, s.xb);
-    const double sc = arc_primitive(xc - p.cx, h);
-    // The part above t: left of the crossing if the piece falls, right of it if it rises.
-    if (s.ya > s.yb) return -q * (xc - s.xa) + p.s * (sc - s.sa);
-    return -q * (s.xb - xc) + p.s * (s.sb - sc);
-}
+private:
+    static constexpr int kRowBlock = 16;
+    static constexpr double kUnset = -1e300;
 
-inline double chain_excess(const piece_span *spans, int n, double t, double h) {
-    double sum = 0.0;
-    for (int k = 0; k < n; ++k) sum += span_excess(spans[k], t, h);
-    return sum;
-}
+    // A piece restricted to one column: [xa, xb], its ends' heights, ∫ y dX over it and
+    // (arcs) S at its ends.
+    struct span {
+        const outline_piece *p;
+        double xa, xb, ya, yb, integral, sa, sb;
+    };
 
-// Draws one major column [c0, c0 + 1] (X relative to A) of the stroke: every row the
-// outline reaches gets its exact area, times `intensity`, combined "over". `column` points
-// at the column's pixel in row 0; rows are `stride` apart, `rows` of them; the row j
-// spans Y = j − ay relative to A.
-inline void draw_outline_column(const stroke_outline &outline, double c0, double ay, float *column,
-                                std::ptrdiff_t stride, int rows, float intensity) {
-    piece_span up[outline_chain::kMaxPieces], low[outline_chain::kMaxPieces];
-    const int n_up = chain_spans(outline.upper, outline.h, c0, c0 + 1.0, up);
-    const int n_low = chain_spans(outline.lower, outline.h, c0, c0 + 1.0, low);
-    if (n_up == 0 || n_low == 0) return;
-    double y_lo = low[0].ya, y_hi = up[0].ya;
-    for (int k = 0; k < n_low; ++k) y_lo = std::min({y_lo, low[k].ya, low[k].yb});
-    for (int k = 0; k < n_up; ++k) y_hi = std::max({y_hi, up[k].ya, up[k].yb});
-    const int j_first = int(std::clamp(std::floor(ay + y_lo), 0.0, double(rows)));
-    const int j_last = int(std::clamp(std::ceil(ay + y_hi), 0.0, double(rows))) - 1;
-    if (j_first > j_last) return;
-    const double h = outline.h;
-    double t = j_first - ay;
-    double e_up = chain_excess(up, n_up, t, h), e_low = chain_excess(low, n_low, t, h);
-    for (int j = j_first; j <= j_last; ++j) {
-        t = (j + 1) - ay;
-        const double next_up = chain_excess(up, n_up, t, h), next_low = chain_excess(low, n_low, t, h);
-        const double area = (e_up - next_up) - (e_low - next_low);
-        if (area > 0.0) combine_over(column[j * stride], intensity * float(std::min(area, 1.0)));
-        e_up = next_up;
-        e_low = next_low;
+    double arc_y(const outline_piece &p, double x) const {
+        return p.cy + p.s * std::sqrt(std::max(0.0, o_.h * o_.h - (x - p.cx) * (x - p.cx)));
     }
-}
+    // S(x − cx) of disc d at this column's left (side 0) or right (side 1) line.
+    double line_primitive(int d, int side, double x) {
+        double &cached = side == 0 ? left_[d] : right_[d];
+        if (cached == kUnset) cached = arc_primitive(x - o_.cx[d], o_.h);
+        return cached;
+    }
+
+    int spans(const outline_chain &chain, double c0, double c1, span *out) {
+        int n = 0;
+        for (int k = 0; k < chain.n; ++k) {
+            const outline_piece &p = chain.piece[k];
+            const bool clip_a = c0 > p.x1, clip_b = c1 < p.x2;
+            const double xa = clip_a ? c0 : p.x1, xb = clip_b ? c1 : p.x2;
+            if (!(xb > xa)) continue;
+            span &s = out[n++];
+            s.p = &p;
+            s.xa = xa;
+            s.xb = xb;
+            if (p.arc) {
+                s.ya = clip_a ? arc_y(p, xa) : p.y1;
+                s.yb = clip_b ? arc_y(p, xb) : p.y2;
+                s.sa = clip_a ? line_primitive(p.disc, 0, xa) : p.s1;
+                s.sb = clip_b ? line_primitive(p.disc, 1, xb) : p.s2;
+                s.integral = p.cy * (xb - xa) + p.s * (s.sb - s.sa);
+            } else {
+                const double slope = (p.y2 - p.y1) / (p.x2 - p.x1);
+                s.ya = clip_a ? p.y1 + slope * (xa - p.x1) : p.y1;
+                s.yb = clip_b ? p.y1 + slope * (xb - p.x1) : p.y2;
+                s.integral = 0.5 * (s.ya + s.yb) * (xb - xa);
+            }
+        }
+        return n;
+    }
+
+    // d[k] += sign · E(t0 + k), k = 0..count, for one span, E(t) = ∫ max(y(X) − t, 0) dX
+    // in closed form (see the file comment); t grows with k.
+    void add_excess(const span &s, double t0, int count, double sign, double *d) const {
+        const double hi = std::max(s.ya, s.yb), lo = std::min(s.ya, s.yb), width = s.xb - s.xa;
+        const outline_piece &p = *s.p;
+        int k = 0;
+        for (; k <= count && t0 + k <= lo; ++k) d[k] += sign * (s.integral - (t0 + k) * width);  // all above t
+        for (; k <= count && t0 + k < hi; ++k) {
+            const double t = t0 + k;
+            double e;
+            if (!p.arc) {
+                e = width * (hi - t) * (hi - t) / (2.0 * (hi - lo));  // the triangle above t
+            } else {
+                // The arc crosses t once, at w = ±√(h² − (t − cy)²) on the piece's side of cx.
+                const double q = t - p.cy, h = o_.h;
+                const double side = p.x1 + p.x2 < 2.0 * p.cx ? -1.0 : 1.0;
+                const double xc = std::clamp(p.cx + side * std::sqrt(std::max(0.0, h * h - q * q)), s.xa, s.xb);
+                const double sc = arc_primitive(xc - p.cx, h);
+                // The part above t: left of the crossing if the piece falls, right if it rises.
+                e = s.ya > s.yb ? -q * (xc - s.xa) + p.s * (sc - s.sa) : -q * (s.xb - xc) + p.s * (s.sb - sc);
+            }
+            d[k] += sign * e;
+        }
+    }
+
+    const stroke_outline &o_;
+    double left_[2] = {kUnset, kUnset}, right_[2] = {kUnset, kUnset}, right_line_ = kUnset;
+};
 
 }  // namespace tiny3d::detail
 
