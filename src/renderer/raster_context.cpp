@@ -4,10 +4,15 @@
 #include <algorithm>
 #include <cmath>
 #include <condition_variable>
+#include <limits>
 #include <mutex>
 #include <thread>
 
 #include "raster_internal.h"
+
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
 
 namespace tiny3d {
 
@@ -150,6 +155,53 @@ bool sphere_outside(const mat4_t &m, vec3_t c, float radius) {
     return false;
 }
 
+bool directional_only(const light_rig &rig) {
+    for (int k = 0; k < rig.count; ++k)
+        if (rig.lights[k].kind != light_kind::directional) return false;
+    return true;
+}
+
+#ifdef __SSE2__
+// unit_or_zero (lighting.h) of four vectors in SoA form, lane by lane with the same float
+// operations, hence the same bits: v·(1/√|v|²), or 0 when |v|² ≤ 1e-30 or not finite.
+inline void unit_or_zero_x4(__m128 &x, __m128 &y, __m128 &z) {
+    const __m128 len2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(x, x), _mm_mul_ps(y, y)), _mm_mul_ps(z, z));
+    constexpr float MIN_LENGTH_SQUARED = 1e-30f;  // as lighting_detail::unit_or_zero
+    const __m128 usable = _mm_and_ps(_mm_cmpgt_ps(len2, _mm_set1_ps(MIN_LENGTH_SQUARED)),
+                                     _mm_cmplt_ps(len2, _mm_set1_ps(std::numeric_limits<float>::infinity())));
+    const __m128 scale = _mm_and_ps(usable, _mm_div_ps(_mm_set1_ps(1.0f), _mm_sqrt_ps(len2)));
+    x = _mm_and_ps(usable, _mm_mul_ps(x, scale));
+    y = _mm_and_ps(usable, _mm_mul_ps(y, scale));
+    z = _mm_and_ps(usable, _mm_mul_ps(z, scale));
+}
+
+// shade_gouraud_vertex(rig, ·, apply_normal_transform(nt, normals[l])) for l = 0..3 with
+// directional lights only (no position needed): the scalar code's operations in the same
+// order on four lanes, so each result has the same bits as the scalar one.
+void shade_gouraud_x4(const light_rig &rig, const normal_transform &nt, const vec3_t *normals, float out[4]) {
+    const __m128 nx = _mm_setr_ps(normals[0].x, normals[1].x, normals[2].x, normals[3].x);
+    const __m128 ny = _mm_setr_ps(normals[0].y, normals[1].y, normals[2].y, normals[3].y);
+    const __m128 nz = _mm_setr_ps(normals[0].z, normals[1].z, normals[2].z, normals[3].z);
+    auto row = [&](int r) {  // nt.m[3r]·n.x + nt.m[3r+1]·n.y + nt.m[3r+2]·n.z
+        return _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_set1_ps(nt.m[3 * r]), nx), _mm_mul_ps(_mm_set1_ps(nt.m[3 * r + 1]), ny)),
+                          _mm_mul_ps(_mm_set1_ps(nt.m[3 * r + 2]), nz));
+    };
+    __m128 x = row(0), y = row(1), z = row(2);
+    unit_or_zero_x4(x, y, z);  // apply_normal_transform
+    unit_or_zero_x4(x, y, z);  // shade_gouraud_vertex → shade_point's unit normal
+    __m128 sum = _mm_set1_ps(rig.ambient);
+    for (int k = 0; k < rig.count; ++k) {
+        const light_t &l = rig.lights[k];
+        const __m128 cosine = _mm_add_ps(_mm_add_ps(_mm_mul_ps(x, _mm_set1_ps(l.direction.x)), _mm_mul_ps(y, _mm_set1_ps(l.direction.y))),
+                                         _mm_mul_ps(z, _mm_set1_ps(l.direction.z)));
+        const __m128 lit = _mm_cmpgt_ps(cosine, _mm_setzero_ps());
+        sum = _mm_add_ps(sum, _mm_and_ps(lit, _mm_mul_ps(_mm_set1_ps(l.intensity), cosine)));
+    }
+    // clamp01 (NaN → 0: maxps returns its second operand when one is NaN).
+    _mm_store_ps(out, _mm_min_ps(_mm_max_ps(sum, _mm_setzero_ps()), _mm_set1_ps(1.0f)));
+}
+#endif
+
 }  // namespace
 
 struct render_context::impl {
@@ -222,6 +274,21 @@ void render_context::impl::transform(const raster_mesh &m, const draw_params &p,
             x.screen = to_screen(x.clip, half_w, half_h);
             x.snapped = detail::snap_vertex(x.screen, x.snapped_x, x.snapped_y);
         }
+    }
+#ifdef __SSE2__
+    if (gouraud && !generic && directional_only(p.lights)) {
+        std::size_t i = v0;
+        for (; i + 4 <= v1; i += 4) {
+            alignas(16) float shade[4];
+            shade_gouraud_x4(p.lights, nt, &m.normals[i], shade);
+            for (int l = 0; l < 4; ++l) vertices[i + l].shade = shade[l];
+        }
+        for (; i < v1; ++i) vertices[i].shade = shade_gouraud_vertex(p.lights, {0, 0, 0}, apply_normal_transform(nt, m.normals[i]));
+        return;
+    }
+#endif
+    for (std::size_t i = v0; i < v1; ++i) {
+        xvertex &x = vertices[i];
         vec3_t world{0, 0, 0}, normal{0, 0, 0};
         if (gouraud || generic) {
             world = mul3(p.model, m.positions[i]);
