@@ -481,3 +481,31 @@ TEST(coverage_on_tiny_canvases) {
         for (int i = 0; i < size * size; ++i) CHECK(c->data[i] >= 0.0f && c->data[i] <= 1.0f);
     }
 }
+
+TEST(coverage_of_very_thick_strokes) {
+    // Strokes wider than any per-column window (and than the canvas): the general column
+    // path. Every pixel of a 24×20 canvas lies deep inside, so each gets exactly 1; a stroke
+    // of 1e30 px neither overflows nor leaves a pixel untouched.
+    const float widths[] = {200.0f, 1e6f, 1e30f};
+    const float ends[][4] = {{2.0f, 3.0f, 21.0f, 9.0f}, {4.0f, 1.0f, 9.0f, 18.0f}, {12.0f, 10.0f, 12.5f, 10.2f}};
+    for (float w : widths)
+        for (const auto &e : ends) {
+            canvas_ptr c = blank(24, 20);
+            tiny3d::draw_line_coverage(c.get(), e[0], e[1], e[2], e[3], w);
+            double low = 1.0, high = 0.0;
+            for (int i = 0; i < 24 * 20; ++i) {
+                low = std::min(low, double(c->data[i]));
+                high = std::max(high, double(c->data[i]));
+            }
+            CHECK_NEAR(low, 1.0, 1e-6);
+            CHECK_NEAR(high, 1.0, 1e-6);
+        }
+    // A 40 px wide stroke on a larger canvas against the reference (window of 11 groups).
+    canvas_ptr c = blank(120, 90);
+    tiny3d::draw_line_coverage(c.get(), 10.3f, 12.7f, 101.9f, 71.2f, 40.0f);
+    std::vector<double> ref;
+    tiny3d::line_coverage_reference(ref, 120, 90, 10.3, 12.7, 101.9, 71.2, 40.0);
+    error_stats e;
+    compare(*c, ref, e);
+    CHECK_NEAR(e.max, 0.0, 1e-4);
+}

@@ -38,6 +38,8 @@ constexpr double kHalfDiagonal = 0.70710678118654752;
 constexpr double kNarrowCorner = 1e-12;
 // Margin (px) beyond the stroke's reach when clipping, so clipped ends stay off the canvas.
 constexpr double kClipSlack = 2.0;
+// Strokes spanning more rows than this per column draw each column by the general path.
+constexpr double kMaxWindowRows = 64.0;
 
 // Area of a unit square (centre at offset 0) on the side {s' ≤ s} of a line with unit
 // normal (a, b), as the CDF of U = a·X + b·Y, X, Y ~ U(−½, ½): a trapezoidal density.
@@ -220,6 +222,23 @@ int clamp_cell(double cell, int size) { return int(std::clamp(cell, -1.0, double
 constexpr double kFloorOffset = 1 << 24;
 int floor_small(double x) { return int(x + kFloorOffset) - int(kFloorOffset); }
 
+// Distance from (px, py) to the stroke's centre segment, in the frame of `axes` from (x0, y0).
+double distance_to_segment(double px, double py, double x0, double y0, const segment_axes &axes) {
+    const double rx = px - x0, ry = py - y0;
+    const double v = std::clamp(rx * axes.dx + ry * axes.dy, 0.0, axes.length);
+    return std::hypot(rx - v * axes.dx, ry - v * axes.dy);
+}
+
+// Is the offset (rx, ry) from the first endpoint inside the stroke?
+bool inside_stroke(double rx, double ry, const segment_axes &axes, double h, line_cap cap) {
+    const double v = rx * axes.dx + ry * axes.dy;
+    const double u = ry * axes.dx - rx * axes.dy;
+    if (cap == line_cap::butt) return std::fabs(u) <= h && v >= 0.0 && v <= axes.length;
+    const double vc = std::clamp(v, 0.0, axes.length);
+    const double ex = rx - vc * axes.dx, ey = ry - vc * axes.dy;
+    return ex * ex + ey * ey <= h * h;
+}
+
 }  // namespace
 
 void draw_line_coverage(canvas_t *canvas, float x0, float y0, float x1, float y1, float thickness,
@@ -256,6 +275,20 @@ void draw_line_coverage(canvas_t *canvas, float x0, float y0, float x1, float y1
     const double length = (clip.start_clipped || clip.end_clipped)
                               ? std::max(0.0, (clip.x1 - cax) * axes.dx + (clip.y1 - cay) * axes.dy)
                               : axes.length;
+    // A stroke wider than the canvas may contain it whole (convex: if it holds the four
+    // corners): every pixel is then covered exactly once. (Also where huge half-widths would
+    // cost the outline's double precision: its integrals grow like h.)
+    if (2.0 * h >= std::min(major_size, minor_size)) {
+        bool all_inside = true;
+        for (int corner = 0; corner < 4 && all_inside; ++corner)
+            all_inside = inside_stroke((corner & 1 ? major_size : 0) - ax, (corner & 2 ? minor_size : 0) - ay, axes, h,
+                                       style.cap);
+        if (all_inside) {
+            for (std::size_t k = 0; k < std::size_t(major_size) * std::size_t(minor_size); ++k)
+                detail::combine_over(canvas->data[k], intensity);
+            return;
+        }
+    }
     const bool round_a = round && !clip.start_clipped, round_b = round && !clip.end_clipped;
     const detail::stroke_outline outline(axes.dx, axes.dy, length, h, round_a, round_b);
 
@@ -293,23 +326,25 @@ void draw_line_coverage(canvas_t *canvas, float x0, float y0, float x1, float y1
         // Steep on the canvas: each major column is a canvas row holding a short run.
         const double span_lo = std::min(0.0, slope) - band_half, span_hi = std::max(0.0, slope) + band_half;
         const band_writer writer(cdf, hf, intensity, ny);
-        // Rows a column can touch: at most ⌈span⌉ + 1, covered by a window of 4-groups.
-        const int groups = (int(std::ceil(span_hi - span_lo)) + 1 + 3) / 4;
+        // Rows a column can touch: at most ⌈span⌉ + 1, covered by a window of 4-groups
+        // (0: a stroke too wide for a window; every column then takes the general path).
+        const double span = span_hi - span_lo;
+        const int groups = span < kMaxWindowRows ? (int(std::ceil(span)) + 1 + 3) / 4 : 0;
         // Step from column to column (a DDA): `first` = the window's first row, `frac` the
         // window's lower bound above it, u the signed distance of pixel (i, first).
         const double lower = cay + (body_first - cax) * slope + span_lo;
-        int first = floor_small(lower);  // |lower| ≤ canvas + margin
+        int first = groups > 0 ? floor_small(lower) : -1;  // then |lower| ≤ canvas + 2·margin
         double frac = lower - first;
         double u = (body_first + 0.5 - cax) * nx + (first + 0.5 - cay) * ny;
         for (int i = body_first; i <= body_last; ++i) {
             float *row = data + i * major_stride;
-            if (first >= 0 && first + 4 * groups <= minor_size) {
+            if (groups > 0 && first >= 0 && first + 4 * groups <= minor_size) {
                 writer.window(row + first, float(u), groups);
             } else {
                 const double y_left = cay + (i - cax) * slope;
                 const auto [row_first, row_last] = touched_cells(y_left + span_lo, y_left + span_hi, minor_size);
                 if (row_first <= row_last)
-                    writer.run(row, minor_size, row_first, row_last, u + (row_first - first) * ny);
+                    writer.run(row, minor_size, row_first, row_last, (i + 0.5 - cax) * nx + (row_first + 0.5 - cay) * ny);
             }
             // |slope| ≤ 1: the window moves by at most one row per column.
             frac += slope;
@@ -357,23 +392,6 @@ void draw_line_coverage(canvas_t *canvas, float x0, float y0, float x1, float y1
 }
 
 namespace {
-
-// Distance from (px, py) to the stroke's centre segment, in the frame of `axes` from (x0, y0).
-double distance_to_segment(double px, double py, double x0, double y0, const segment_axes &axes) {
-    const double rx = px - x0, ry = py - y0;
-    const double v = std::clamp(rx * axes.dx + ry * axes.dy, 0.0, axes.length);
-    return std::hypot(rx - v * axes.dx, ry - v * axes.dy);
-}
-
-// Is the offset (rx, ry) from the first endpoint inside the stroke?
-bool inside_stroke(double rx, double ry, const segment_axes &axes, double h, line_cap cap) {
-    const double v = rx * axes.dx + ry * axes.dy;
-    const double u = ry * axes.dx - rx * axes.dy;
-    if (cap == line_cap::butt) return std::fabs(u) <= h && v >= 0.0 && v <= axes.length;
-    const double vc = std::clamp(v, 0.0, axes.length);
-    const double ex = rx - vc * axes.dx, ey = ry - vc * axes.dy;
-    return ex * ex + ey * ey <= h * h;
-}
 
 // Calls visit(x, y) for the canvas pixels whose centre is within h + half a diagonal of
 // the segment: a superset of the pixels the stroke touches (round or butt caps).

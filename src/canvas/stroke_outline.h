@@ -52,15 +52,15 @@ struct outline_chain {
     void add_line(double xa, double ya, double xb, double yb) {
         if (xb > xa) piece[n++] = {xa, xb, ya, yb, false, 0, 0, 0, 0, 0, 0};
     }
-    // The arc of disc `disc` (centre cx, cy, radius h) on side s over [xa, xb], split at
-    // cx (where S = 0); sa, sb: S at xa − cx and xb − cx.
-    void add_arc(double xa, double xb, double sa, double sb, int disc, double cx, double cy, double s, double h) {
-        auto y = [&](double x) { return cy + s * std::sqrt(std::max(0.0, h * h - (x - cx) * (x - cx))); };
+    // The arc of disc `disc` (centre cx, cy, radius h) on side s from (xa, ya) to (xb, yb),
+    // split at cx (height cy + s·h, S = 0); sa, sb: S at xa − cx and xb − cx.
+    void add_arc(double xa, double ya, double sa, double xb, double yb, double sb, int disc, double cx, double cy,
+                 double s, double h) {
         if (xa < cx && cx < xb) {
-            piece[n++] = {xa, cx, y(xa), cy + s * h, true, disc, cx, cy, s, sa, 0.0};
-            piece[n++] = {cx, xb, cy + s * h, y(xb), true, disc, cx, cy, s, 0.0, sb};
+            piece[n++] = {xa, cx, ya, cy + s * h, true, disc, cx, cy, s, sa, 0.0};
+            piece[n++] = {cx, xb, cy + s * h, yb, true, disc, cx, cy, s, 0.0, sb};
         } else if (xb > xa) {
-            piece[n++] = {xa, xb, y(xa), y(xb), true, disc, cx, cy, s, sa, sb};
+            piece[n++] = {xa, xb, ya, yb, true, disc, cx, cy, s, sa, sb};
         }
     }
 };
@@ -89,8 +89,8 @@ struct stroke_outline {
         // End A: the round cap's arcs run from the leftmost point (−h, 0) to A+ and A−; a
         // butt end is the segment A+A−, on the lower chain when it falls left to right.
         if (round_a) {
-            upper.add_arc(-h, apx, -quarter, -tangent, 0, 0.0, 0.0, 1.0, h);
-            lower.add_arc(-h, amx, -quarter, tangent, 0, 0.0, 0.0, -1.0, h);
+            upper.add_arc(-h, 0.0, -quarter, apx, apy, -tangent, 0, 0.0, 0.0, 1.0, h);
+            lower.add_arc(-h, 0.0, -quarter, amx, amy, tangent, 0, 0.0, 0.0, -1.0, h);
         } else if (dy < 0) {
             upper.add_line(amx, amy, apx, apy);
         } else {
@@ -99,8 +99,8 @@ struct stroke_outline {
         upper.add_line(apx, apy, bpx, bpy);
         lower.add_line(amx, amy, bmx, bmy);
         if (round_b) {
-            upper.add_arc(bpx, bx + h, -tangent, quarter, 1, bx, by, 1.0, h);
-            lower.add_arc(bmx, bx + h, tangent, quarter, 1, bx, by, -1.0, h);
+            upper.add_arc(bpx, bpy, -tangent, bx + h, by, quarter, 1, bx, by, 1.0, h);
+            lower.add_arc(bmx, bmy, tangent, bx + h, by, quarter, 1, bx, by, -1.0, h);
         } else if (dy > 0) {
             upper.add_line(bpx, bpy, bmx, bmy);
         } else {
@@ -126,8 +126,8 @@ public:
         const double c1 = c0 + 1.0;
         // Column-line primitives: reuse the previous column's right line as this left one.
         for (int d = 0; d < 2; ++d) {
-            left_[d] = c0 == right_line_ ? right_[d] : kUnset;
-            right_[d] = kUnset;
+            left_[d] = c0 == right_line_ ? right_[d] : line_point{};
+            right_[d] = line_point{};
         }
         right_line_ = c1;
         span up[outline_chain::kMaxPieces], low[outline_chain::kMaxPieces];
@@ -136,8 +136,11 @@ public:
         double y_lo = low[0].ya, y_hi = up[0].ya;
         for (int k = 0; k < n_low; ++k) y_lo = std::min({y_lo, low[k].ya, low[k].yb});
         for (int k = 0; k < n_up; ++k) y_hi = std::max({y_hi, up[k].ya, up[k].yb});
-        const int j_first = int(std::clamp(std::floor(ay + y_lo), 0.0, double(rows)));
-        const int j_last = int(std::clamp(std::ceil(ay + y_hi), 0.0, double(rows))) - 1;
+        // Rows whose span meets (y_lo, y_hi); clamped before converting (truncation of a
+        // non-negative value is floor; ceil(v) = −floor(−v)).
+        const double lo_row = std::clamp(ay + y_lo, 0.0, double(rows)), hi_row = std::clamp(ay + y_hi, 0.0, double(rows));
+        const int j_first = int(lo_row);
+        const int j_last = rows - int(double(rows) - hi_row) - 1;
         // D(t) = E_up(t) − E_low(t) at the row lines of a block of rows; the area of row j
         // is D(j) − D(j + 1).
         for (int j0 = j_first; j0 <= j_last; j0 += kRowBlock) {
@@ -155,7 +158,7 @@ public:
 
 private:
     static constexpr int kRowBlock = 16;
-    static constexpr double kUnset = -1e300;
+    static constexpr double kUnset = -1.0;  // no square root is negative
 
     // A piece restricted to one column: [xa, xb], its ends' heights, ∫ y dX over it and
     // (arcs) S at its ends.
@@ -164,20 +167,26 @@ private:
         double xa, xb, ya, yb, integral, sa, sb;
     };
 
-    double arc_y(const outline_piece &p, double x) const {
-        return p.cy + p.s * std::sqrt(std::max(0.0, o_.h * o_.h - (x - p.cx) * (x - p.cx)));
-    }
-    // S(x − cx) of disc d at this column's left (side 0) or right (side 1) line.
-    double line_primitive(int d, int side, double x) {
-        double &cached = side == 0 ? left_[d] : right_[d];
-        if (cached == kUnset) cached = arc_primitive(x - o_.cx[d], o_.h);
-        return cached;
+    // The arc of disc d at this column's left (side 0) or right (side 1) line x:
+    // √(h² − w²) and S(w), w = x − cx.
+    struct line_point {
+        double root = kUnset, primitive = 0.0;
+    };
+    const line_point &at_line(int d, int side, double x) {
+        line_point &pt = side == 0 ? left_[d] : right_[d];
+        if (pt.root == kUnset) {
+            const double w = x - o_.cx[d], h = o_.h;
+            pt.root = std::sqrt(std::max(0.0, h * h - w * w));
+            pt.primitive = 0.5 * (w * pt.root + h * h * fast_atan2(w, pt.root));
+        }
+        return pt;
     }
 
     int spans(const outline_chain &chain, double c0, double c1, span *out) {
         int n = 0;
         for (int k = 0; k < chain.n; ++k) {
             const outline_piece &p = chain.piece[k];
+            if (p.x1 >= c1) break;  // pieces run left to right
             const bool clip_a = c0 > p.x1, clip_b = c1 < p.x2;
             const double xa = clip_a ? c0 : p.x1, xb = clip_b ? c1 : p.x2;
             if (!(xb > xa)) continue;
@@ -186,10 +195,22 @@ private:
             s.xa = xa;
             s.xb = xb;
             if (p.arc) {
-                s.ya = clip_a ? arc_y(p, xa) : p.y1;
-                s.yb = clip_b ? arc_y(p, xb) : p.y2;
-                s.sa = clip_a ? line_primitive(p.disc, 0, xa) : p.s1;
-                s.sb = clip_b ? line_primitive(p.disc, 1, xb) : p.s2;
+                if (clip_a) {
+                    const line_point &pt = at_line(p.disc, 0, xa);
+                    s.ya = p.cy + p.s * pt.root;
+                    s.sa = pt.primitive;
+                } else {
+                    s.ya = p.y1;
+                    s.sa = p.s1;
+                }
+                if (clip_b) {
+                    const line_point &pt = at_line(p.disc, 1, xb);
+                    s.yb = p.cy + p.s * pt.root;
+                    s.sb = pt.primitive;
+                } else {
+                    s.yb = p.y2;
+                    s.sb = p.s2;
+                }
                 s.integral = p.cy * (xb - xa) + p.s * (s.sb - s.sa);
             } else {
                 const double slope = (p.y2 - p.y1) / (p.x2 - p.x1);
@@ -227,7 +248,8 @@ private:
     }
 
     const stroke_outline &o_;
-    double left_[2] = {kUnset, kUnset}, right_[2] = {kUnset, kUnset}, right_line_ = kUnset;
+    line_point left_[2], right_[2];
+    double right_line_ = kUnset;
 };
 
 }  // namespace tiny3d::detail
