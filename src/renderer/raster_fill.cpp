@@ -146,18 +146,20 @@ bool make_fast_triangle(const triangle_edges &t, const screen_vertex v[3], const
     const bool fits = t.span_x < FAST_SPAN_LIMIT && t.span_y < FAST_SPAN_LIMIT;
     out.wide = fits ? -1 : wide_index;
     // Edge crossings: E(min_x + x, min_y + dy) = e0 + a·x + b·dy = 0 at x = −e0/a − (b/a)·dy.
-    constexpr double NO_EDGE = 1e30;
-    int left = 0, right = 2;
-    out.cross[0] = out.cross[1] = -NO_EDGE;
-    out.cross[2] = out.cross[3] = NO_EDGE;
-    out.cross_step[0] = out.cross_step[1] = out.cross_step[2] = out.cross_step[3] = 0.0;
+    // Left edges go to slots 0, 2, right edges (negated) to slots 1, 3.
+    constexpr double NO_EDGE = -1e30;
+    int left = 0, right = 1;
+    for (int j = 0; j < 4; ++j) out.cross[j] = NO_EDGE, out.cross_step[j] = 0.0;
     for (int k = 0; k < 3 && fits; ++k) {
         if (t.a[k] == 0) continue;
         const std::int64_t e0 = t.c[k] + t.a[k] * out.min_x + t.b[k] * out.min_y;
         const double inv_a = 1.0 / static_cast<double>(t.a[k]);
-        const int slot = t.a[k] > 0 ? left++ : right++;
-        out.cross[slot] = -static_cast<double>(e0) * inv_a;
-        out.cross_step[slot] = -static_cast<double>(t.b[k]) * inv_a;
+        const bool is_left = t.a[k] > 0;
+        const int slot = is_left ? left : right;
+        (is_left ? left : right) += 2;
+        const double sign = is_left ? 1.0 : -1.0;
+        out.cross[slot] = sign * (-static_cast<double>(e0) * inv_a);
+        out.cross_step[slot] = sign * (-static_cast<double>(t.b[k]) * inv_a);
     }
     const float depth[3] = {v[0].z, v[1].z, v[2].z};
     const plane_geometry g = make_plane_geometry(t, out.min_x, out.min_y);
@@ -238,10 +240,11 @@ void fill_rows_sse2(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bo
     const __m128 zoff = _mm_mul_ps(_mm_set1_ps(f.zdx), lane_f), ioff = _mm_mul_ps(_mm_set1_ps(f.idx), lane_f);
     const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f);
     const int width = canvas.width;
+    const row_spans spans(f);
     for (int y = y0; y < y1; ++y) {
         const int dy = y - f.min_y;
         int lo, hi;
-        row_span(f, dy, lo, hi);
+        spans.at(dy, lo, hi);
         if (lo > hi) continue;
         const float lo_f = static_cast<float>(lo), dy_f = static_cast<float>(dy);
         __m128 z = _mm_add_ps(_mm_set1_ps(f.z + f.zdy * dy_f + f.zdx * lo_f), zoff);
@@ -337,10 +340,11 @@ void fill_fast_rows(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, co
     else if (wide_rows) fill_rows_dispatch<false, true>(canvas, depth, f, depth_func::always, false, y0, y1);
     else fill_rows_dispatch<false, false>(canvas, depth, f, depth_func::always, false, y0, y1);
 #else
+    const row_spans spans(f);
     for (int y = y0; y < y1; ++y) {
         const int dy = y - f.min_y;
         int lo, hi;
-        row_span(f, dy, lo, hi);
+        spans.at(dy, lo, hi);
         const float zr = f.z + f.zdy * static_cast<float>(dy), ir = f.i + f.idy * static_cast<float>(dy);
         float *zrow = depth ? depth->row(y) : nullptr;
         for (int x = lo; x <= hi; ++x)

@@ -54,19 +54,20 @@ triangle_edges triangle_setup_snapped(const std::int32_t X[3], const std::int32_
 inline constexpr std::int64_t FAST_SPAN_LIMIT = (1 << 15) - 8 * RASTER_SUBPIXEL_ONE;
 
 // One triangle ready for the span fill. Row min_y + dy covers exactly the columns
-// min_x + [ceil(max(L0, L1)), floor(min(R0, R1))], where Lj = cross[j] + cross_step[j]·dy
-// is where a left edge (E growing with x) crosses zero, relative to min_x, and Rj the same
-// for a right edge (absent edges are ±∞ dummies); rows cut by a horizontal edge are
-// already removed from [min_y, max_y]. Why this equals the integer test E ≥ 0 exactly:
-// the true crossing −E/a is a fraction with |a| < 2^19, so a non-integer one is at least
-// 2^-19 from any integer, while the double evaluation errs by < 2^-24 (|values| < 2^28);
-// rounding with a bias CROSS_EPS between the two decides every pixel as the integers do.
+// min_x + [ceil(max(L0, L1)), floor(min(R0, R1))], where Lj = cross + step·dy is where a
+// left edge (E growing with x) crosses zero, relative to min_x, and Rj the same for a right
+// edge; they are stored as the pairs (L0, −R0) and (L1, −R1), so that one max gives both
+// ends (an absent edge is −∞). Rows cut by a horizontal edge are already removed from
+// [min_y, max_y]. Why this equals the integer test E ≥ 0 exactly: the true crossing −E/a is
+// a fraction with |a| < 2^19, so a non-integer one is at least 2^-19 from any integer,
+// while the double evaluation errs by < 2^-24 (|values| < 2^28); rounding with a bias
+// CROSS_EPS between the two decides every pixel as the integers do.
 // Attribute values at the centre of pixel (min_x, min_y) with per-pixel steps.
 // Band-independent: a band only chooses which rows to draw, so any thread count gives the
 // same pixels.
 struct fast_triangle {
     int min_x, max_x, min_y, max_y;  // inclusive pixel bounds, clamped to the target
-    double cross[4], cross_step[4];  // [0], [1]: left edges; [2], [3]: right edges
+    double cross[4], cross_step[4];  // (L0, −R0, L1, −R1) at dy = 0 and per row
     float z, zdx, zdy;               // window depth plane
     float i, idx, idy;               // intensity plane
     std::int32_t wide;               // ≥ 0: index of the 64-bit edges in the wide list
@@ -74,20 +75,37 @@ struct fast_triangle {
 
 inline constexpr double CROSS_EPS = 1.0 / (1 << 21);
 
-// The covered columns [lo, hi] of row min_y + dy, relative to min_x (empty when lo > hi).
-// Fast-path triangles only (wide < 0).
-inline void row_span(const fast_triangle &f, int dy, int &lo, int &hi) {
-    const double d = dy, w = f.max_x - f.min_x;
-    const double left = std::max(f.cross[0] + f.cross_step[0] * d, f.cross[1] + f.cross_step[1] * d);
-    const double right = std::min(f.cross[2] + f.cross_step[2] * d, f.cross[3] + f.cross_step[3] * d);
-    // Clamped to [−0.5, w + 0.5] (ceil/floor commute with the clamp), then ceil and floor
-    // by truncating a positive value: ceil(v) = K − trunc(K − v), floor(v) = trunc(v + K) − K.
-    constexpr double K = 1 << 20;
-    const double l = std::min(std::max(left - CROSS_EPS, -0.5), w + 0.5);
-    const double r = std::min(std::max(right + CROSS_EPS, -0.5), w + 0.5);
-    lo = static_cast<int>(K) - static_cast<int>(K - l);
-    hi = static_cast<int>(r + K) - static_cast<int>(K);
-}
+// The covered columns [lo, hi] of each row of a fast-path triangle (wide < 0), relative to
+// min_x (empty when lo > hi): u = max((L0, −R0), (L1, −R1)) − CROSS_EPS gives
+// lo = ceil(u0) and hi = −ceil(u1); u is first clamped to lo ∈ [0, w + 1], hi ∈ [−1, w]
+// (ceil commutes with the clamp), then ceil(v) = K − trunc(K − v) on a positive K − v.
+class row_spans {
+public:
+    explicit row_spans(const fast_triangle &f) : f_(f), w_(f.max_x - f.min_x) {}
+    void at(int dy, int &lo, int &hi) const {
+#ifdef __SSE2__
+        const __m128d d = _mm_set1_pd(dy);
+        const __m128d a = _mm_add_pd(_mm_loadu_pd(f_.cross), _mm_mul_pd(_mm_loadu_pd(f_.cross_step), d));
+        const __m128d b = _mm_add_pd(_mm_loadu_pd(f_.cross + 2), _mm_mul_pd(_mm_loadu_pd(f_.cross_step + 2), d));
+        __m128d u = _mm_sub_pd(_mm_max_pd(a, b), _mm_set1_pd(CROSS_EPS));
+        u = _mm_min_pd(_mm_max_pd(u, _mm_setr_pd(-0.5, -w_ - 0.5)), _mm_setr_pd(w_ + 0.5, 0.5));
+        const __m128i t = _mm_cvttpd_epi32(_mm_sub_pd(_mm_set1_pd(K), u));
+        lo = static_cast<int>(K) - _mm_cvtsi128_si32(t);
+        hi = _mm_cvtsi128_si32(_mm_srli_si128(t, 4)) - static_cast<int>(K);
+#else
+        const double d = dy;
+        const double u0 = std::max(f_.cross[0] + f_.cross_step[0] * d, f_.cross[2] + f_.cross_step[2] * d) - CROSS_EPS;
+        const double u1 = std::max(f_.cross[1] + f_.cross_step[1] * d, f_.cross[3] + f_.cross_step[3] * d) - CROSS_EPS;
+        lo = static_cast<int>(K) - static_cast<int>(K - std::min(std::max(u0, -0.5), w_ + 0.5));
+        hi = static_cast<int>(K - std::min(std::max(u1, -w_ - 0.5), 0.5)) - static_cast<int>(K);
+#endif
+    }
+
+private:
+    static constexpr double K = 1 << 20;
+    const fast_triangle &f_;
+    double w_;
+};
 
 // Builds a fast_triangle from already computed edges (t.valid) and per-vertex depth and
 // intensity. Returns false when the bounds are empty. When the triangle is too large for
