@@ -121,7 +121,13 @@ private:
     // Band coverage of four pixels with signed distances u (square_cdf::band).
     // Four pixels at p with coverages cov: "over" with c = min(intensity · coverage, 1)
     // (the two band terms can sum to 1 + 1 ulp; unclamped, overlapping strokes reach 1.0000001).
-    __m128 band4(__m128 u) const { return _mm_add_ps(centred4(_mm_sub_ps(hw_, u)), centred4(_mm_add_ps(hw_, u))); }
+    // band(u) = c(h − u) + c(h + u), c odd, so band depends on |u| only; when h ≥ w_hi
+    // (T ≥ √2 at any angle) c(h + |u|) is the saturated constant H(w_hi).
+    __m128 band4(__m128 u) const {
+        const __m128 a = _mm_andnot_ps(sign_bit_, u);
+        if (wide_) return _mm_add_ps(centred4(_mm_sub_ps(hw_, a)), saturated_);
+        return _mm_add_ps(centred4(_mm_sub_ps(hw_, a)), centred4(_mm_add_ps(hw_, a)));
+    }
     void blend4(float *p, __m128 cov) const {
         const __m128 c = _mm_min_ps(_mm_mul_ps(ink4_, cov), one_);
         const __m128 old = _mm_loadu_ps(p);
@@ -142,6 +148,8 @@ private:
     const __m128 sign_bit_ = _mm_set1_ps(-0.0f), w_lo_ = _mm_set1_ps(cdf_.w_lo), w_hi_ = _mm_set1_ps(cdf_.w_hi);
     const __m128 inv_amax_ = _mm_set1_ps(cdf_.inv_amax);
     const __m128 inv_2ab_ = _mm_set1_ps(cdf_.inv_2ab), hw_ = _mm_set1_ps(half_), ink4_ = _mm_set1_ps(ink_);
+    const bool wide_ = half_ >= cdf_.w_hi;
+    const __m128 saturated_ = centred4(_mm_set1_ps(cdf_.w_hi));
     const __m128 one_ = _mm_set1_ps(1.0f), lanes_ = _mm_set_ps(3.0f, 2.0f, 1.0f, 0.0f);
     const __m128 lane_du_ = _mm_mul_ps(_mm_set1_ps(float(du_)), lanes_), du4_ = _mm_set1_ps(4.0f * float(du_));
 #endif
