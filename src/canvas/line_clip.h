@@ -68,6 +68,11 @@ struct clipped_segment {
 
 inline bool clip_segment(double x0, double y0, double x1, double y1, double xmin, double ymin, double xmax,
                          double ymax, clipped_segment &out) {
+    auto inside = [&](double x, double y) { return x >= xmin && x <= xmax && y >= ymin && y <= ymax; };
+    if (inside(x0, y0) && inside(x1, y1)) {  // the common case: nothing to clip
+        out = {x0, y0, x1, y1, false, false};
+        return true;
+    }
     const double dx = x1 - x0, dy = y1 - y0;
     const double side[4] = {xmin, xmax, ymin, ymax};
     double t0, t1;
