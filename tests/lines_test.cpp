@@ -509,3 +509,25 @@ TEST(coverage_of_very_thick_strokes) {
     compare(*c, ref, e);
     CHECK_NEAR(e.max, 0.0, 1e-4);
 }
+
+TEST(coverage_of_segments_crossing_the_canvas_edges) {
+    // Ends anywhere in and around a small odd-sized canvas: clipped ends, end columns and
+    // body rows cut by the canvas border, windows that do not fit, every angle.
+    std::mt19937 rng(4242u);
+    std::uniform_real_distribution<double> x_of(-20.0, 57.0), y_of(-20.0, 49.0);
+    const double thicknesses[] = {0.5, 1.5, 3.0, 8.0, 25.0};
+    std::vector<double> ref;
+    for (double thickness : thicknesses)
+        for (auto cap : {tiny3d::line_cap::round, tiny3d::line_cap::butt}) {
+            error_stats e;
+            for (int k = 0; k < kSegmentsPerThickness / 5; ++k) {
+                const segment s{float(x_of(rng)), float(y_of(rng)), float(x_of(rng)), float(y_of(rng))};
+                canvas_ptr c = blank(37, 29);
+                tiny3d::draw_line_coverage(c.get(), s.x0, s.y0, s.x1, s.y1, float(thickness), {cap, 1.0f});
+                tiny3d::line_coverage_reference(ref, 37, 29, s.x0, s.y0, s.x1, s.y1, thickness, cap);
+                compare(*c, ref, e);
+            }
+            CHECK_MSG(e.max <= 1e-4, "T=" + std::to_string(thickness) + " max " + std::to_string(e.max));
+            CHECK(e.pixels > 100);
+        }
+}

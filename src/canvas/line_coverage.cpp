@@ -3,9 +3,11 @@
 //
 // The stroke of segment A→B with half-width h is  rectangle ∪ (round caps: two half-discs).
 // In the line's frame (u across, v along, origin A) the rectangle is |u| ≤ h, 0 ≤ v ≤ L.
-// A pixel whose square lies inside 0 ≤ v ≤ L sees only the band |u| ≤ h, and the area of
-// a unit square inside a band depends only on the angle and the centre's u (closed form
-// below). The few pixels whose square crosses v = 0 or v = L are clipped exactly.
+// A major column lying between the end regions sees only the band |u| ≤ h, and the area
+// of a unit square inside a band depends only on the angle and the centre's u (closed
+// form below). The two or three columns at each end are integrated exactly from the
+// stroke's outline (stroke_outline.h). The reference clips each pixel's square instead
+// (polygon clipping + circle-segment areas): an independent method.
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
