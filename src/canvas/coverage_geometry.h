@@ -1,6 +1,6 @@
 // coverage_geometry.h — (internal) exact areas of small convex polygons, alone and inside
-// a disc. Used by the exact coverage reference (double) and by the few cap pixels of the
-// fast coverage line (float). Templated on the scalar type.
+// a disc, for the exact coverage reference (double; templated on the scalar type), and
+// the fast arctangent the fast line's outline integration uses.
 #ifndef TINY3D_COVERAGE_GEOMETRY_H
 #define TINY3D_COVERAGE_GEOMETRY_H
 
@@ -37,28 +37,6 @@ small_polygon<T> clip_half_plane(const small_polygon<T> &in, T a, T b, T c) {
         }
     }
     return out;
-}
-
-// One pass of clip_half_plane for both sides: `inside` gets the part where a·x + b·y ≥ c,
-// `outside` the part where a·x + b·y ≤ c (the shared cut edge in both). `in` may alias
-// `inside` or `outside` (both are built aside and stored last).
-template <class T>
-void split_half_plane(const small_polygon<T> &in, T a, T b, T c, small_polygon<T> &inside, small_polygon<T> &outside) {
-    small_polygon<T> keep, cut;
-    for (int i = 0; i < in.n; ++i) {
-        const point2<T> p = in.v[i], q = in.v[i + 1 == in.n ? 0 : i + 1];
-        const T fp = a * p.x + b * p.y - c, fq = a * q.x + b * q.y - c;
-        if (fp >= 0) keep.v[keep.n++] = p;
-        if (fp <= 0) cut.v[cut.n++] = p;
-        if ((fp < 0 && fq > 0) || (fp > 0 && fq < 0)) {
-            const T t = fp / (fp - fq);
-            const point2<T> x{p.x + t * (q.x - p.x), p.y + t * (q.y - p.y)};
-            keep.v[keep.n++] = x;
-            cut.v[cut.n++] = x;
-        }
-    }
-    inside = keep;
-    outside = cut;
 }
 
 // Shoelace formula: signed area, positive for counter-clockwise (in x-right, y-up terms).
@@ -104,62 +82,18 @@ T fast_atan2(T y, T x) {
     return y < 0 ? -angle : angle;
 }
 
-// Sum of the signed angles (each in (−π, π]) from direction p to direction q over many
-// sectors. kLibm: one std::atan2 per sector (the reference). Otherwise the angles are
-// summed as a product of complex numbers conj(p)·q and fast_atan2 is taken once per run:
-// while the running product has a positive real part its true angle lies in (−π/2, π/2),
-// so after one more factor (angle in (−π, π]) the sum lies in (−3π/2, 3π/2) and a positive
-// real part again pins it to (−π/2, π/2); otherwise the run is flushed first.
-template <class T, bool kLibm>
-class angle_sum {
-public:
-    void add(point2<T> p, point2<T> q) {
-        const T cross = p.x * q.y - p.y * q.x, dot = p.x * q.x + p.y * q.y;
-        if constexpr (kLibm) {
-            total_ += std::atan2(cross, dot);
-        } else {
-            const T re = re_ * dot - im_ * cross, im = re_ * cross + im_ * dot;
-            if (re > 0) {
-                re_ = re;
-                im_ = im;
-                // Keep the product's magnitude in range (factors are ~r², r may be tiny or huge).
-                const T size = std::fabs(re_) + std::fabs(im_);
-                if (size > kRescaleAbove || size < kRescaleBelow) {
-                    re_ /= size;
-                    im_ /= size;
-                }
-                return;
-            }
-            flush();
-            if (dot > 0) {
-                re_ = dot;
-                im_ = cross;
-            } else {
-                total_ += fast_atan2(cross, dot);
-            }
-        }
-    }
-    T total() {
-        if constexpr (!kLibm) flush();
-        return total_;
-    }
-
-private:
-    static constexpr T kRescaleAbove = T(1e30), kRescaleBelow = T(1e-30);
-    void flush() {
-        if (im_ != 0) total_ += fast_atan2(im_, re_);
-        re_ = 1;
-        im_ = 0;
-    }
-    T total_ = 0, re_ = 1, im_ = 0;
-};
+// Signed angle (in (−π, π]) from direction p to direction q.
+template <class T>
+T angle_between(point2<T> p, point2<T> q) {
+    return std::atan2(p.x * q.y - p.y * q.x, p.x * q.x + p.y * q.y);
+}
 
 // Signed area of (triangle O, p, q) ∩ disc(O, r), O = origin, less the sectors' part: the
 // edge p→q is split where it crosses the circle; inside pieces count as triangles (the
-// returned area), outside pieces as sectors (their angles go to `angles`, area r²/2 per
-// radian). Summed over a polygon's edges this is the exact area of polygon ∩ disc.
-template <class T, bool kLibm>
-T edge_disc_area(point2<T> p, point2<T> q, T r2, angle_sum<T, kLibm> &angles) {
+// returned area), outside pieces as sectors (their angles are added to `angles`, area r²/2
+// per radian). Summed over a polygon's edges this is the exact area of polygon ∩ disc.
+template <class T>
+T edge_disc_area(point2<T> p, point2<T> q, T r2, T &angles) {
     const point2<T> d{q.x - p.x, q.y - p.y};
     const T a = d.x * d.x + d.y * d.y;
     if (a == 0) return 0;
@@ -168,7 +102,7 @@ T edge_disc_area(point2<T> p, point2<T> q, T r2, angle_sum<T, kLibm> &angles) {
     if (c <= 0 && q.x * q.x + q.y * q.y <= r2) return (p.x * q.y - p.y * q.x) / 2;  // inside: a triangle
     const T disc = b * b - a * c;
     if (disc <= 0) {  // the edge's line misses the circle
-        angles.add(p, q);
+        angles += angle_between(p, q);
         return 0;
     }
     const T s = std::sqrt(disc);
@@ -176,22 +110,22 @@ T edge_disc_area(point2<T> p, point2<T> q, T r2, angle_sum<T, kLibm> &angles) {
     const T t_out = std::clamp((-b + s) / a, T(0), T(1));
     const point2<T> A{p.x + t_in * d.x, p.y + t_in * d.y};
     const point2<T> B{p.x + t_out * d.x, p.y + t_out * d.y};
-    if (t_in > 0) angles.add(p, A);
-    if (t_out < 1) angles.add(B, q);
+    if (t_in > 0) angles += angle_between(p, A);
+    if (t_out < 1) angles += angle_between(B, q);
     return (A.x * B.y - A.y * B.x) / 2;
 }
 
 // Unsigned area of the convex polygon ∩ the disc of radius r centred at (cx, cy).
-template <class T, bool kLibm = true>
+template <class T>
 T polygon_disc_area(const small_polygon<T> &poly, T cx, T cy, T r) {
     const T r2 = r * r;
-    angle_sum<T, kLibm> angles;
+    T angles = 0;
     T sum = 0;
     for (int i = 0; i < poly.n; ++i) {
         const point2<T> p = poly.v[i], q = poly.v[i + 1 == poly.n ? 0 : i + 1];
-        sum += edge_disc_area<T, kLibm>({p.x - cx, p.y - cy}, {q.x - cx, q.y - cy}, r2, angles);
+        sum += edge_disc_area<T>({p.x - cx, p.y - cy}, {q.x - cx, q.y - cy}, r2, angles);
     }
-    return std::fabs(sum + r2 / 2 * angles.total());
+    return std::fabs(sum + r2 / 2 * angles);
 }
 
 }  // namespace tiny3d::detail
