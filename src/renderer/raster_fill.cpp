@@ -225,16 +225,17 @@ inline __m128 select(__m128 mask, __m128 a, __m128 b) {  // mask ? a : b
     return _mm_or_ps(_mm_and_ps(mask, a), _mm_andnot_ps(mask, b));
 }
 
-// The 4-wide span loop: each row runs from its exact first covered pixel (row_span) in
-// groups of four; a lane is covered when its column is below the row's end, so only the
-// last group of a row is partial and no edge function is evaluated per pixel. A group that
-// would pass the canvas' right edge is finished lane by lane. WideRows (wide triangles:
+// The 4-wide span loop: each row runs from its exact first covered pixel (row_spans) in
+// groups of four; only the last group of a row is partial (its lanes below the row's end
+// are covered), and no edge function is evaluated per pixel. A last group that would pass
+// the canvas' right edge is finished lane by lane. WideRows (wide triangles:
 // many groups whose four pixels all pass) adds a plain-store branch for such groups that
 // skips the colour read; small triangles go without that branch.
 template <depth_func Test, bool HasDepth, bool WideRows>
 void fill_rows_sse2(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bool depth_write, int y0,
                     int y1) {
-    const __m128i lane = _mm_set_epi32(3, 2, 1, 0), four = _mm_set1_epi32(4);
+    const __m128i lane = _mm_set_epi32(3, 2, 1, 0);
+    const __m128 all_lanes = _mm_castsi128_ps(_mm_set1_epi32(-1));
     const __m128 lane_f = _mm_set_ps(3.0f, 2.0f, 1.0f, 0.0f);
     const __m128 zstep = _mm_set1_ps(4.0f * f.zdx), istep = _mm_set1_ps(4.0f * f.idx);
     const __m128 zoff = _mm_mul_ps(_mm_set1_ps(f.zdx), lane_f), ioff = _mm_mul_ps(_mm_set1_ps(f.idx), lane_f);
@@ -252,19 +253,10 @@ void fill_rows_sse2(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bo
         float *color = canvas.pixels[y];
         float *zrow = HasDepth ? depth->row(y) : nullptr;
         const int x_end = f.min_x + hi + 1;
-        const __m128i end = _mm_set1_epi32(x_end);
         int x = f.min_x + lo;
-        __m128i column = _mm_add_epi32(_mm_set1_epi32(x), lane);
-        for (; x < x_end; x += 4) {
-            if (x + 4 > width) {
-                alignas(16) float zl[4], il[4];
-                _mm_store_ps(zl, z);
-                _mm_store_ps(il, in);
-                for (int l = 0; x + l < x_end; ++l) shade_pixel(color, zrow, x + l, zl[l], il[l], Test, depth_write);
-                break;
-            }
-            __m128 mask = _mm_castsi128_ps(_mm_cmpgt_epi32(end, column));
-            __m128 stored = z;
+        // One group of four pixels from x; `cover` marks the lanes inside the span.
+        auto group = [&](__m128 cover) {
+            __m128 mask = cover, stored = z;
             if constexpr (HasDepth) {
                 stored = _mm_loadu_ps(zrow + x);
                 mask = _mm_and_ps(mask, depth_mask<Test>(z, stored));
@@ -280,9 +272,20 @@ void fill_rows_sse2(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bo
                     _mm_storeu_ps(color + x, select(mask, shade, _mm_loadu_ps(color + x)));
                 }
             }
-            column = _mm_add_epi32(column, four);
+        };
+        for (; x + 4 <= x_end; x += 4) {  // whole groups (x_end ≤ width: never past the row)
+            group(all_lanes);
             z = _mm_add_ps(z, zstep);
             in = _mm_add_ps(in, istep);
+        }
+        if (x == x_end) continue;
+        if (x + 4 <= width) {
+            group(_mm_castsi128_ps(_mm_cmpgt_epi32(_mm_set1_epi32(x_end - x), lane)));
+        } else {  // the last group would pass the canvas' right edge: lane by lane
+            alignas(16) float zl[4], il[4];
+            _mm_store_ps(zl, z);
+            _mm_store_ps(il, in);
+            for (int l = 0; x + l < x_end; ++l) shade_pixel(color, zrow, x + l, zl[l], il[l], Test, depth_write);
         }
     }
 }
