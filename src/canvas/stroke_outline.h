@@ -195,22 +195,19 @@ private:
             s.xa = xa;
             s.xb = xb;
             if (p.arc) {
-                if (clip_a) {
-                    const line_point &pt = at_line(p.disc, 0, xa);
-                    s.ya = p.cy + p.s * pt.root;
-                    s.sa = pt.primitive;
-                } else {
-                    s.ya = p.y1;
-                    s.sa = p.s1;
-                }
-                if (clip_b) {
-                    const line_point &pt = at_line(p.disc, 1, xb);
-                    s.yb = p.cy + p.s * pt.root;
-                    s.sb = pt.primitive;
-                } else {
-                    s.yb = p.y2;
-                    s.sb = p.s2;
-                }
+                // A clipped end lies on a column line (shared values); otherwise the piece's own.
+                auto end_at = [&](bool clipped, int side, double x, double y_own, double s_own, double &y, double &prim) {
+                    if (!clipped) {
+                        y = y_own;
+                        prim = s_own;
+                        return;
+                    }
+                    const line_point &pt = at_line(p.disc, side, x);
+                    y = p.cy + p.s * pt.root;
+                    prim = pt.primitive;
+                };
+                end_at(clip_a, 0, xa, p.y1, p.s1, s.ya, s.sa);
+                end_at(clip_b, 1, xb, p.y2, p.s2, s.yb, s.sb);
                 s.integral = p.cy * (xb - xa) + p.s * (s.sb - s.sa);
             } else {
                 const double slope = (p.y2 - p.y1) / (p.x2 - p.x1);
