@@ -242,18 +242,21 @@ void fill_rows_sse2(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bo
     const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f);
     const int width = canvas.width;
     const row_spans spans(f);
+    // Local copies: the colour and depth stores are floats and could alias f's floats.
+    const float z0 = f.z, zdx = f.zdx, zdy = f.zdy, i0 = f.i, idx = f.idx, idy = f.idy;
+    const int min_x = f.min_x, min_y = f.min_y;
     for (int y = y0; y < y1; ++y) {
-        const int dy = y - f.min_y;
+        const int dy = y - min_y;
         int lo, hi;
         spans.at(dy, lo, hi);
         if (lo > hi) continue;
         const float lo_f = static_cast<float>(lo), dy_f = static_cast<float>(dy);
-        __m128 z = _mm_add_ps(_mm_set1_ps(f.z + f.zdy * dy_f + f.zdx * lo_f), zoff);
-        __m128 in = _mm_add_ps(_mm_set1_ps(f.i + f.idy * dy_f + f.idx * lo_f), ioff);
+        __m128 z = _mm_add_ps(_mm_set1_ps(z0 + zdy * dy_f + zdx * lo_f), zoff);
+        __m128 in = _mm_add_ps(_mm_set1_ps(i0 + idy * dy_f + idx * lo_f), ioff);
         float *color = canvas.pixels[y];
         float *zrow = HasDepth ? depth->row(y) : nullptr;
-        const int x_end = f.min_x + hi + 1;
-        int x = f.min_x + lo;
+        const int x_end = min_x + hi + 1;
+        int x = min_x + lo;
         // One group of four pixels from x; `cover` marks the lanes inside the span.
         auto group = [&](__m128 cover) {
             __m128 mask = cover, stored = z;

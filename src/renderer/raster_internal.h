@@ -81,30 +81,37 @@ inline constexpr double CROSS_EPS = 1.0 / (1 << 21);
 // (ceil commutes with the clamp), then ceil(v) = K − trunc(K − v) on a positive K − v.
 class row_spans {
 public:
-    explicit row_spans(const fast_triangle &f) : f_(f), w_(f.max_x - f.min_x) {}
-    void at(int dy, int &lo, int &hi) const {
 #ifdef __SSE2__
+    explicit row_spans(const fast_triangle &f)
+        : a_(_mm_loadu_pd(f.cross)), a_step_(_mm_loadu_pd(f.cross_step)), b_(_mm_loadu_pd(f.cross + 2)),
+          b_step_(_mm_loadu_pd(f.cross_step + 2)),
+          low_(_mm_setr_pd(-0.5, -(f.max_x - f.min_x) - 0.5)), high_(_mm_setr_pd(f.max_x - f.min_x + 0.5, 0.5)) {}
+    void at(int dy, int &lo, int &hi) const {
         const __m128d d = _mm_set1_pd(dy);
-        const __m128d a = _mm_add_pd(_mm_loadu_pd(f_.cross), _mm_mul_pd(_mm_loadu_pd(f_.cross_step), d));
-        const __m128d b = _mm_add_pd(_mm_loadu_pd(f_.cross + 2), _mm_mul_pd(_mm_loadu_pd(f_.cross_step + 2), d));
-        __m128d u = _mm_sub_pd(_mm_max_pd(a, b), _mm_set1_pd(CROSS_EPS));
-        u = _mm_min_pd(_mm_max_pd(u, _mm_setr_pd(-0.5, -w_ - 0.5)), _mm_setr_pd(w_ + 0.5, 0.5));
+        const __m128d a = _mm_add_pd(a_, _mm_mul_pd(a_step_, d)), b = _mm_add_pd(b_, _mm_mul_pd(b_step_, d));
+        const __m128d u = _mm_min_pd(_mm_max_pd(_mm_sub_pd(_mm_max_pd(a, b), _mm_set1_pd(CROSS_EPS)), low_), high_);
         const __m128i t = _mm_cvttpd_epi32(_mm_sub_pd(_mm_set1_pd(K), u));
         lo = static_cast<int>(K) - _mm_cvtsi128_si32(t);
         hi = _mm_cvtsi128_si32(_mm_srli_si128(t, 4)) - static_cast<int>(K);
+    }
+
+private:
+    __m128d a_, a_step_, b_, b_step_, low_, high_;
 #else
+    explicit row_spans(const fast_triangle &f) : f_(f), w_(f.max_x - f.min_x) {}
+    void at(int dy, int &lo, int &hi) const {
         const double d = dy;
         const double u0 = std::max(f_.cross[0] + f_.cross_step[0] * d, f_.cross[2] + f_.cross_step[2] * d) - CROSS_EPS;
         const double u1 = std::max(f_.cross[1] + f_.cross_step[1] * d, f_.cross[3] + f_.cross_step[3] * d) - CROSS_EPS;
         lo = static_cast<int>(K) - static_cast<int>(K - std::min(std::max(u0, -0.5), w_ + 0.5));
         hi = static_cast<int>(K - std::min(std::max(u1, -w_ - 0.5), 0.5)) - static_cast<int>(K);
-#endif
     }
 
 private:
-    static constexpr double K = 1 << 20;
     const fast_triangle &f_;
     double w_;
+#endif
+    static constexpr double K = 1 << 20;
 };
 
 // Builds a fast_triangle from already computed edges (t.valid) and per-vertex depth and
