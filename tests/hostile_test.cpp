@@ -12,7 +12,9 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <iterator>
 #include <limits>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -250,6 +252,45 @@ TEST(lines_with_coordinates_of_1e30_match_the_clipped_line) {
     CHECK(all_in_range(*faithful));
     CHECK(faithful->pixels[10][SIDE / 2] > 0.5f);
     CHECK_EQ(faithful->pixels[0][SIDE / 2], 0.0f);
+}
+
+TEST(lines_mixing_extreme_and_tiny_coordinates_stay_in_range) {
+    // Found by a stress run: from (−1.97e30, −3.4e38) to (−1e-30, 1e20) the line passes
+    // ~5.8e11 px beside the canvas, but the clip parameters round to 1 and Liang–Barsky
+    // accepted it; the clipped end then fed a float→int conversion out of range. It must
+    // draw nothing, like the reference.
+    {
+        tiny3d::canvas_ptr c = tiny3d::make_canvas(42, 37).value();
+        const float x0 = -0x1.93e594p+99f, y0 = -0x1.ff933cp+127f, x1 = -0x1.4484cp-100f, y1 = 0x1.5af1d8p+66f;
+        tiny3d::draw_line_coverage(c.get(), x0, y0, x1, y1, 6.0f);
+        std::vector<double> ref;
+        tiny3d::line_coverage_reference(ref, 42, 37, x0, y0, x1, y1, 6.0);
+        double ink = 0.0, ref_ink = 0.0;
+        for (int i = 0; i < 42 * 37; ++i) {
+            ink += c->data[i];
+            ref_ink += ref[std::size_t(i)];
+        }
+        CHECK_EQ(ink, 0.0);
+        CHECK_EQ(ref_ink, 0.0);
+    }
+    // Seeded mixes of ±3.4e38, 1e30, 2^31, 2^24, denormals, zeros and ordinary values for
+    // the ends and the thickness, both caps: every pixel stays finite and in 0..1.
+    const float specials[] = {0.0f,  1e-40f, 1e-30f, 0.5f, 3.0f,  1e3f,   1e6f,        1e9f,
+                              1e20f, 1e30f,  3.4e38f, 16777216.0f, 16777217.0f, 2147483648.0f};
+    std::mt19937 rng(77u);
+    std::uniform_real_distribution<float> ordinary(-40.0f, 80.0f);
+    bool in_range = true;
+    for (int k = 0; k < 20000 && in_range; ++k) {
+        float v[5];
+        for (float &x : v)
+            x = rng() % 3 == 0 ? specials[rng() % std::size(specials)] * (rng() % 2 ? 1.0f : -1.0f) : ordinary(rng);
+        const float thickness = rng() % 2 ? std::fabs(v[4]) : float(rng() % 1000) / 100.0f;
+        tiny3d::canvas_ptr c = tiny3d::make_canvas(1 + int(rng() % 40), 1 + int(rng() % 40)).value();
+        const tiny3d::line_style style{rng() % 3 ? tiny3d::line_cap::round : tiny3d::line_cap::butt, 1.0f};
+        tiny3d::draw_line_coverage(c.get(), v[0], v[1], v[2], v[3], thickness, style);
+        in_range = all_in_range(*c);
+    }
+    CHECK(in_range);
 }
 
 TEST(zero_length_lines_are_a_dot_or_nothing) {

@@ -66,6 +66,9 @@ struct clipped_segment {
     bool start_clipped, end_clipped;
 };
 
+// How far (px) outside the box a clipped end may lie and still count as on it.
+inline constexpr double kClipTolerance = 0.5;
+
 inline bool clip_segment(double x0, double y0, double x1, double y1, double xmin, double ymin, double xmax,
                          double ymax, clipped_segment &out) {
     auto inside = [&](double x, double y) { return x >= xmin && x <= xmax && y >= ymin && y <= ymax; };
@@ -91,12 +94,23 @@ inline bool clip_segment(double x0, double y0, double x1, double y1, double xmin
     out = {x0, y0, x1, y1, side0 >= 0, side1 >= 0};
     if (side0 >= 0) on_side(side0, out.x0, out.y0);
     if (side1 >= 0) on_side(side1, out.x1, out.y1);
-    return true;
+    // With ends near ±1e38 the parameters t round, and Liang–Barsky may accept a segment
+    // that misses the box; its exact side point then lies far outside the box (a crossing
+    // segment's lies on the box to ~1e-4 px at worst). Reject those.
+    auto near_box = [&](double x, double y) {
+        return x >= xmin - kClipTolerance && x <= xmax + kClipTolerance && y >= ymin - kClipTolerance &&
+               y <= ymax + kClipTolerance;
+    };
+    return near_box(out.x0, out.y0) && near_box(out.x1, out.y1);
 }
 
 // The "over" combine used by the anti-aliased lines: v ← v + c·(1 − v), for c, v in 0..1.
-// c is clamped to ≤ 1 so float rounding of a coverage (1 + 1 ulp) never lifts a pixel above 1.
-inline void combine_over(float &pixel, float c) { pixel += (c < 1.0f ? c : 1.0f) * (1.0f - pixel); }
+// c is clamped to 0..1 so float rounding of a coverage (1 + 1 ulp, or −1 ulp where a
+// band's two CDF terms nearly cancel) never lifts a pixel above 1 or below 0.
+inline void combine_over(float &pixel, float c) {
+    c = c < 1.0f ? c : 1.0f;
+    pixel += (c > 0.0f ? c : 0.0f) * (1.0f - pixel);
+}
 
 }  // namespace tiny3d::detail
 

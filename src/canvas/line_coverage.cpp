@@ -121,8 +121,9 @@ public:
 private:
 #ifdef __SSE2__
     // Band coverage of four pixels with signed distances u (square_cdf::band).
-    // Four pixels at p with coverages cov: "over" with c = min(intensity · coverage, 1)
-    // (the two band terms can sum to 1 + 1 ulp; unclamped, overlapping strokes reach 1.0000001).
+    // Four pixels at p with coverages cov: "over" with c = intensity · coverage clamped to
+    // 0..1 (the two band terms can sum to 1 + 1 ulp, or −1 ulp where they nearly cancel;
+    // unclamped, overlapping strokes reach 1.0000001 and an empty canvas −3e-8).
     // band(u) = c(h − u) + c(h + u), c odd, so band depends on |u| only; when h ≥ w_hi
     // (T ≥ √2 at any angle) c(h + |u|) is the saturated constant H(w_hi).
     __m128 band4(__m128 u) const {
@@ -131,7 +132,7 @@ private:
         return _mm_add_ps(centred4(_mm_sub_ps(hw_, a)), centred4(_mm_add_ps(hw_, a)));
     }
     void blend4(float *p, __m128 cov) const {
-        const __m128 c = _mm_min_ps(_mm_mul_ps(ink4_, cov), one_);
+        const __m128 c = _mm_max_ps(_mm_min_ps(_mm_mul_ps(ink4_, cov), one_), _mm_setzero_ps());
         const __m128 old = _mm_loadu_ps(p);
         _mm_storeu_ps(p, _mm_add_ps(old, _mm_mul_ps(c, _mm_sub_ps(one_, old))));
     }
