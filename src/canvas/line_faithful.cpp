@@ -25,7 +25,6 @@ void draw_line_f(canvas_t *c, float x0, float y0, float x1, float y1, float thic
     }
     const float step = 0.5f;  // sampling every 0.5 px
     const double steps_d = std::ceil(double(len) / step);
-    const std::int64_t steps = static_cast<std::int64_t>(steps_d);
 
     // Only samples whose disc can touch the canvas matter. Keep the report's sample
     // lattice t = n/steps and visit just the n inside the canvas grown by the disc radius
@@ -46,6 +45,7 @@ void draw_line_f(canvas_t *c, float x0, float y0, float x1, float y1, float thic
             draw_line_f(c, float(s.x0), float(s.y0), float(s.x1), float(s.y1), thickness);
         return;
     }
+    const std::int64_t steps = static_cast<std::int64_t>(steps_d);  // ≤ 2^52: exact, in range
     std::int64_t n_first = static_cast<std::int64_t>(std::floor(t0 * steps_d)) - 1;
     std::int64_t n_last = static_cast<std::int64_t>(std::ceil(t1 * steps_d)) + 1;
     if (n_first < 0) n_first = 0;
