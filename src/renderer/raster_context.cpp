@@ -250,6 +250,10 @@ struct render_context::impl {
         detail::fast_triangle f;
         if (!detail::make_fast_triangle(t, v, shade, static_cast<std::int32_t>(out.wide.size()), f)) return;
         if (f.wide >= 0) out.wide.push_back(t);
+        bin_fast(f, out);
+    }
+    // Appends a set-up fast triangle and its band bins.
+    void bin_fast(const detail::fast_triangle &f, segment &out) {
         const std::uint32_t index = static_cast<std::uint32_t>(out.fast.size());
         out.fast.push_back(f);
         for (int b = band_of(f.min_y); b <= band_of(f.max_y); ++b) out.bins[b].push_back(index);
@@ -365,15 +369,19 @@ void render_context::impl::setup(const raster_mesh &m, const draw_params &p, std
                 ++out.stats.culled_backface;
                 continue;
             }
-            const triangle_edges t = detail::triangle_setup_snapped(X, Y, full, p.cull);
-            if (!t.valid) {
-                out.stats.culled_backface += t.culled;
-                continue;
-            }
-            ++out.stats.rasterized;
             const screen_vertex v[3] = {a.screen, b.screen, c.screen};
             const float shade[3] = {flat ? flat_shade : a.shade, flat ? flat_shade : b.shade, flat ? flat_shade : c.shade};
-            add_fast(t, v, shade, out);
+            detail::fast_triangle f;
+            const detail::fast_setup verdict = detail::setup_fast_triangle(X, Y, area2, full, v, shade, f);
+            if (verdict == detail::fast_setup::ready) {
+                ++out.stats.rasterized;
+                bin_fast(f, out);
+            } else if (verdict == detail::fast_setup::wide) {
+                const triangle_edges t = detail::triangle_setup_snapped(X, Y, full, p.cull);
+                if (!t.valid) continue;
+                ++out.stats.rasterized;
+                add_fast(t, v, shade, out);
+            }
             continue;
         }
         clip_vertex in[3];

@@ -33,6 +33,17 @@ triangle_edges triangle_setup(const screen_vertex &v0, const screen_vertex &v1, 
 
 namespace detail {
 
+namespace {
+
+// Pixels p whose centre 16·p + 8 lies in [lo, hi] (sub-pixel units), within [clip0, clip1)
+// (>> is floor division: arithmetic shift, defined in C++20).
+inline void pixel_bounds(std::int64_t lo, std::int64_t hi, int clip0, int clip1, int &first, int &last) {
+    first = static_cast<int>(std::max<std::int64_t>(-((HALF_SUBPIXEL - lo) >> RASTER_SUBPIXEL_BITS), clip0));
+    last = static_cast<int>(std::min<std::int64_t>((hi - HALF_SUBPIXEL) >> RASTER_SUBPIXEL_BITS, clip1 - 1));
+}
+
+}  // namespace
+
 bool snap_vertex(const screen_vertex &v, std::int32_t &x, std::int32_t &y) {
     if (!usable(v)) return false;
     x = snap_coord(v.x);
@@ -65,12 +76,8 @@ triangle_edges triangle_setup_snapped(const std::int32_t Xs[3], const std::int32
     }
     const std::int64_t min_X = std::min({X[0], X[1], X[2]}), max_X = std::max({X[0], X[1], X[2]});
     const std::int64_t min_Y = std::min({Y[0], Y[1], Y[2]}), max_Y = std::max({Y[0], Y[1], Y[2]});
-    // Pixel px is a candidate when its centre 16·px + 8 lies in [min_X, max_X]
-    // (>> is floor division: arithmetic shift, defined in C++20).
-    t.min_x = static_cast<int>(std::max<std::int64_t>(-((HALF_SUBPIXEL - min_X) >> RASTER_SUBPIXEL_BITS), clip.x0));
-    t.max_x = static_cast<int>(std::min<std::int64_t>((max_X - HALF_SUBPIXEL) >> RASTER_SUBPIXEL_BITS, clip.x1 - 1));
-    t.min_y = static_cast<int>(std::max<std::int64_t>(-((HALF_SUBPIXEL - min_Y) >> RASTER_SUBPIXEL_BITS), clip.y0));
-    t.max_y = static_cast<int>(std::min<std::int64_t>((max_Y - HALF_SUBPIXEL) >> RASTER_SUBPIXEL_BITS, clip.y1 - 1));
+    pixel_bounds(min_X, max_X, clip.x0, clip.x1, t.min_x, t.max_x);
+    pixel_bounds(min_Y, max_Y, clip.y0, clip.y1, t.min_y, t.max_y);
     t.span_x = max_X - min_X;
     t.span_y = max_Y - min_Y;
     for (int k = 0; k < 3; ++k) {
@@ -95,16 +102,17 @@ struct plane_geometry {
     double d1x, d1y, d2x, d2y, inv_det, ref_dx, ref_dy;
 };
 
-inline plane_geometry make_plane_geometry(const triangle_edges &t, int px, int py) {
+// x, y: the snapped vertices in px.
+inline plane_geometry make_plane_geometry(const double x[3], const double y[3], int px, int py) {
     plane_geometry g;
-    g.d1x = t.x[1] - t.x[0];
-    g.d1y = t.y[1] - t.y[0];
-    g.d2x = t.x[2] - t.x[0];
-    g.d2y = t.y[2] - t.y[0];
+    g.d1x = x[1] - x[0];
+    g.d1y = y[1] - y[0];
+    g.d2x = x[2] - x[0];
+    g.d2y = y[2] - y[0];
     // det = twice the signed area in px² (the snapped area2 carries the orientation sign).
     g.inv_det = 1.0 / (g.d1x * g.d2y - g.d2x * g.d1y);
-    g.ref_dx = px + 0.5 - t.x[0];
-    g.ref_dy = py + 0.5 - t.y[0];
+    g.ref_dx = px + 0.5 - x[0];
+    g.ref_dy = py + 0.5 - y[0];
     return g;
 }
 
@@ -132,6 +140,44 @@ inline void clip_rows_by_horizontal_edge(std::int64_t e0, std::int64_t b, int &f
 
 }  // namespace
 
+namespace {
+
+// Resets the crossings to "no edge" (set_crossing fills them).
+inline void clear_crossings(fast_triangle &out) {
+    constexpr double NO_EDGE = -1e30;
+    for (int j = 0; j < 4; ++j) out.cross[j] = NO_EDGE, out.cross_step[j] = 0.0;
+}
+
+// Edge E(min_x + x, min_y + dy) = e0 + a·x + b·dy with a ≠ 0 crosses zero at
+// x = −e0/a − (b/a)·dy. Left edges (a > 0) go to slots 0, 2, right edges (negated) to 1, 3.
+inline void set_crossing(std::int64_t e0, std::int64_t a, std::int64_t b, int &left, int &right, fast_triangle &out) {
+    const double inv_a = 1.0 / static_cast<double>(a);
+    const bool is_left = a > 0;
+    const int slot = is_left ? left : right;
+    (is_left ? left : right) += 2;
+    const double sign = is_left ? 1.0 : -1.0;
+    out.cross[slot] = sign * (-static_cast<double>(e0) * inv_a);
+    out.cross_step[slot] = sign * (-static_cast<double>(b) * inv_a);
+}
+
+// The depth and intensity planes at pixel (out.min_x, out.min_y) through the snapped
+// vertices (x, y in px).
+inline void set_planes(const double x[3], const double y[3], const screen_vertex v[3], const float intensity[3],
+                       fast_triangle &out) {
+    const float depth[3] = {v[0].z, v[1].z, v[2].z};
+    const plane_geometry g = make_plane_geometry(x, y, out.min_x, out.min_y);
+    const plane zp = attribute_plane(g, depth);
+    const plane ip = attribute_plane(g, intensity);
+    out.z = zp.at_ref;
+    out.zdx = zp.dx;
+    out.zdy = zp.dy;
+    out.i = ip.at_ref;
+    out.idx = ip.dx;
+    out.idy = ip.dy;
+}
+
+}  // namespace
+
 bool make_fast_triangle(const triangle_edges &t, const screen_vertex v[3], const float intensity[3],
                         std::int32_t wide_index, fast_triangle &out) {
     if (!t.valid) return false;
@@ -145,33 +191,56 @@ bool make_fast_triangle(const triangle_edges &t, const screen_vertex v[3], const
     out.max_y = t.min_y + last;
     const bool fits = t.span_x < FAST_SPAN_LIMIT && t.span_y < FAST_SPAN_LIMIT;
     out.wide = fits ? -1 : wide_index;
-    // Edge crossings: E(min_x + x, min_y + dy) = e0 + a·x + b·dy = 0 at x = −e0/a − (b/a)·dy.
-    // Left edges go to slots 0, 2, right edges (negated) to slots 1, 3.
-    constexpr double NO_EDGE = -1e30;
+    clear_crossings(out);
     int left = 0, right = 1;
-    for (int j = 0; j < 4; ++j) out.cross[j] = NO_EDGE, out.cross_step[j] = 0.0;
-    for (int k = 0; k < 3 && fits; ++k) {
-        if (t.a[k] == 0) continue;
-        const std::int64_t e0 = t.c[k] + t.a[k] * out.min_x + t.b[k] * out.min_y;
-        const double inv_a = 1.0 / static_cast<double>(t.a[k]);
-        const bool is_left = t.a[k] > 0;
-        const int slot = is_left ? left : right;
-        (is_left ? left : right) += 2;
-        const double sign = is_left ? 1.0 : -1.0;
-        out.cross[slot] = sign * (-static_cast<double>(e0) * inv_a);
-        out.cross_step[slot] = sign * (-static_cast<double>(t.b[k]) * inv_a);
-    }
-    const float depth[3] = {v[0].z, v[1].z, v[2].z};
-    const plane_geometry g = make_plane_geometry(t, out.min_x, out.min_y);
-    const plane zp = attribute_plane(g, depth);
-    const plane ip = attribute_plane(g, intensity);
-    out.z = zp.at_ref;
-    out.zdx = zp.dx;
-    out.zdy = zp.dy;
-    out.i = ip.at_ref;
-    out.idx = ip.dx;
-    out.idy = ip.dy;
+    for (int k = 0; k < 3 && fits; ++k)
+        if (t.a[k] != 0) set_crossing(t.c[k] + t.a[k] * out.min_x + t.b[k] * out.min_y, t.a[k], t.b[k], left, right, out);
+    set_planes(t.x, t.y, v, intensity, out);
     return true;
+}
+
+fast_setup setup_fast_triangle(const std::int32_t X[3], const std::int32_t Y[3], std::int64_t area2, pixel_rect clip,
+                               const screen_vertex v[3], const float intensity[3], fast_triangle &out) {
+    const std::int32_t min_X = std::min(std::min(X[0], X[1]), X[2]), max_X = std::max(std::max(X[0], X[1]), X[2]);
+    const std::int32_t min_Y = std::min(std::min(Y[0], Y[1]), Y[2]), max_Y = std::max(std::max(Y[0], Y[1]), Y[2]);
+    if (max_X - min_X >= FAST_SPAN_LIMIT || max_Y - min_Y >= FAST_SPAN_LIMIT) return fast_setup::wide;
+    int min_y, max_y;
+    pixel_bounds(min_X, max_X, clip.x0, clip.x1, out.min_x, out.max_x);
+    pixel_bounds(min_Y, max_Y, clip.y0, clip.y1, min_y, max_y);
+    if (out.min_x > out.max_x || min_y > max_y) return fast_setup::empty;
+    // triangle_setup_snapped's edges (oriented by s, top-left bias), evaluated at the centre
+    // (cx, cy) of pixel (min_x, min_y): within the box, so |e| < 2^31 and the products fit.
+    const std::int32_t s = area2 > 0 ? 1 : -1;
+    const std::int64_t cx = RASTER_SUBPIXEL_ONE * static_cast<std::int64_t>(out.min_x) + HALF_SUBPIXEL;
+    const std::int64_t cy = RASTER_SUBPIXEL_ONE * static_cast<std::int64_t>(min_y) + HALF_SUBPIXEL;
+    std::int64_t e[3], dx[3], dy[3];
+    for (int k = 0; k < 3; ++k) {
+        const int ia = k == 2 ? 0 : k + 1, ib = k == 0 ? 2 : k - 1;  // edge opposite vertex k
+        dx[k] = s * (X[ib] - X[ia]);
+        dy[k] = s * (Y[ib] - Y[ia]);
+        const bool top_left = dy[k] < 0 || (dy[k] == 0 && dx[k] > 0);
+        e[k] = dx[k] * (cy - Y[ia]) - dy[k] * (cx - X[ia]) - (top_left ? 0 : 1);
+    }
+    int first = 0, last = max_y - min_y;
+    for (int k = 0; k < 3; ++k)
+        if (dy[k] == 0) clip_rows_by_horizontal_edge(e[k], dx[k] * RASTER_SUBPIXEL_ONE, first, last);
+    if (first > last) return fast_setup::empty;
+    out.min_y = min_y + first;
+    out.max_y = min_y + last;
+    out.wide = -1;
+    clear_crossings(out);
+    int left = 0, right = 1;
+    for (int k = 0; k < 3; ++k) {
+        const std::int64_t a = -dy[k] * RASTER_SUBPIXEL_ONE, b = dx[k] * RASTER_SUBPIXEL_ONE;
+        if (a != 0) set_crossing(e[k] + b * first, a, b, left, right, out);
+    }
+    double x[3], y[3];
+    for (int k = 0; k < 3; ++k) {
+        x[k] = static_cast<double>(X[k]) / RASTER_SUBPIXEL_ONE;
+        y[k] = static_cast<double>(Y[k]) / RASTER_SUBPIXEL_ONE;
+    }
+    set_planes(x, y, v, intensity, out);
+    return fast_setup::ready;
 }
 
 namespace {

@@ -120,6 +120,19 @@ private:
 bool make_fast_triangle(const triangle_edges &t, const screen_vertex v[3], const float intensity[3],
                         std::int32_t wide_index, fast_triangle &out);
 
+// setup_fast_triangle's verdict on one snapped triangle.
+enum class fast_setup {
+    ready,  // `out` is set
+    empty,  // no pixel centre inside (within the clip rectangle)
+    wide,   // too big for the fast path: use triangle_setup_snapped + make_fast_triangle
+};
+
+// The fast path's setup straight from snapped, usable vertices (sub-pixel units) of
+// nonzero signed area area2 (snapped_area2), without building the 64-bit triangle_edges:
+// the same fast_triangle as make_fast_triangle(triangle_setup_snapped(X, Y, clip, ·), …).
+fast_setup setup_fast_triangle(const std::int32_t X[3], const std::int32_t Y[3], std::int64_t area2, pixel_rect clip,
+                               const screen_vertex v[3], const float intensity[3], fast_triangle &out);
+
 // Draws rows [y0, y1) ∩ [min_y, max_y] of the triangle. `wide_edges` is the triangle's
 // 64-bit edges when f.wide ≥ 0 (ignored otherwise).
 void fill_fast_rows(canvas_t &canvas, zbuffer *depth, const fast_triangle &f,
