@@ -2,6 +2,8 @@
 // culling, clipping, binning into horizontal bands, band-parallel rasterization, the
 // translucent queue. Every buffer is owned here and reused from frame to frame.
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <condition_variable>
 #include <limits>
@@ -19,6 +21,7 @@ namespace tiny3d {
 namespace {
 
 constexpr int MAX_THREADS = 16;
+constexpr std::size_t CACHE_LINE = 64;  // bytes
 // The frame is cut into horizontal bands of BAND_ROWS rows (at most MAX_BANDS), so that one
 // band's colour and depth rows stay in cache while all its triangles are drawn; thread t
 // draws bands t, t + n, t + 2n, …
@@ -30,19 +33,42 @@ static_assert(MAX_BANDS <= 256, "row_band stores band numbers in 8 bits");
 constexpr float GUARD_SPAN_PIXELS = 2000.0f;
 constexpr float MAX_GUARD = 4.0f;
 
+// Waits until done() holds by spinning (with a pause hint) for at most SPIN_LIMIT; returns
+// whether it did. Phases of a frame follow each other within microseconds, far less than a
+// sleep/wake-up through the kernel costs, so the pool spins first and sleeps only after.
+constexpr std::chrono::microseconds SPIN_LIMIT{50};
+constexpr int SPINS_PER_CLOCK_READ = 64;
+
+template <class Done>
+bool spin_until(Done &&done) {
+    const auto give_up = std::chrono::steady_clock::now() + SPIN_LIMIT;
+    for (;;) {
+        for (int k = 0; k < SPINS_PER_CLOCK_READ; ++k) {
+            if (done()) return true;
+#ifdef __SSE2__
+            _mm_pause();
+#endif
+        }
+        if (std::chrono::steady_clock::now() > give_up) return false;
+    }
+}
+
 // A fixed set of worker threads; run(job) calls job(i) for i = 0..n−1, i = 0 on the caller,
-// and returns when all are done. No allocation per run.
+// and returns when all are done. No allocation per run. A new job is announced by bumping
+// `generation_` (the job pointer is published by that release store); workers and the
+// caller spin briefly on the atomics, then sleep on the condition variables. Every state
+// change is followed by locking and unlocking the mutex before notifying, so a thread that
+// checked the state under the mutex just before the change is already waiting: no lost
+// wake-up.
 class worker_pool {
 public:
     explicit worker_pool(int threads) {
         for (int i = 1; i < threads; ++i) workers_.emplace_back([this, i] { loop(i); });
     }
     ~worker_pool() {
-        {
-            std::lock_guard<std::mutex> lock(mutex_);
-            stop_ = true;
-        }
-        wake_.notify_all();
+        stop_.store(true);
+        generation_.fetch_add(1);
+        notify(wake_, true);
         for (std::thread &t : workers_) t.join();
     }
     int size() const { return static_cast<int>(workers_.size()) + 1; }
@@ -53,36 +79,37 @@ public:
             job(0);
             return;
         }
-        {
-            std::lock_guard<std::mutex> lock(mutex_);
-            call_ = [](void *j, int i) { (*static_cast<Job *>(j))(i); };
-            job_ = &job;
-            pending_ = static_cast<int>(workers_.size());
-            ++generation_;
-        }
-        wake_.notify_all();
+        call_ = [](void *j, int i) { (*static_cast<Job *>(j))(i); };
+        job_ = &job;
+        pending_.store(static_cast<int>(workers_.size()));
+        generation_.fetch_add(1);
+        notify(wake_, true);
         job(0);
+        auto finished = [this] { return pending_.load() == 0; };
+        if (spin_until(finished)) return;
         std::unique_lock<std::mutex> lock(mutex_);
-        done_.wait(lock, [this] { return pending_ == 0; });
+        done_.wait(lock, finished);
     }
 
 private:
+    void notify(std::condition_variable &cv, bool all) {
+        { std::lock_guard<std::mutex> lock(mutex_); }
+        if (all) cv.notify_all();
+        else cv.notify_one();
+    }
+
     void loop(int index) {
         unsigned long long seen = 0;
         for (;;) {
-            void (*call)(void *, int);
-            void *job;
-            {
+            auto announced = [&] { return generation_.load() != seen; };
+            if (!spin_until(announced)) {
                 std::unique_lock<std::mutex> lock(mutex_);
-                wake_.wait(lock, [&] { return stop_ || generation_ != seen; });
-                if (stop_) return;
-                seen = generation_;
-                call = call_;
-                job = job_;
+                wake_.wait(lock, announced);
             }
-            call(job, index);
-            std::lock_guard<std::mutex> lock(mutex_);
-            if (--pending_ == 0) done_.notify_one();
+            if (stop_.load()) return;
+            seen = generation_.load();
+            call_(job_, index);
+            if (pending_.fetch_sub(1) == 1) notify(done_, false);
         }
     }
 
@@ -91,9 +118,9 @@ private:
     std::condition_variable wake_, done_;
     void (*call_)(void *, int) = nullptr;
     void *job_ = nullptr;
-    unsigned long long generation_ = 0;
-    int pending_ = 0;
-    bool stop_ = false;
+    std::atomic<unsigned long long> generation_{0};
+    std::atomic<int> pending_{0};
+    std::atomic<bool> stop_{false};
 };
 
 // A transformed vertex.
@@ -217,7 +244,10 @@ struct render_context::impl {
 
     std::vector<xvertex> vertices;
     std::vector<float> vertex_attr;  // ATTR_COUNT per vertex (generic path only)
-    struct segment {                 // what one phase-1 worker produced
+    // What one phase-1 worker produced. Aligned to a cache line of its own: the vector
+    // headers and stats are written per triangle, and two threads writing one line
+    // (false sharing) made the two-thread setup slower than one thread's.
+    struct alignas(CACHE_LINE) segment {
         std::vector<detail::fast_triangle> fast;
         std::vector<triangle_edges> wide;
         std::vector<generic_triangle> generic;
@@ -539,6 +569,10 @@ void render_context::end_frame() {
         return a.mean_depth != b.mean_depth ? a.mean_depth > b.mean_depth : a.sequence < b.sequence;
     });
     const int n = s.pool.size();
+    if (s.translucent.empty() && !s.pending_clear) {
+        s.target = nullptr;
+        return;
+    }
     auto phase = [&](int thread) {
         for (int band = thread; band < s.bands(); band += n) {
             const int y0 = s.band_y0(band), y1 = s.band_y0(band + 1);
