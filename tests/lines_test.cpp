@@ -531,3 +531,27 @@ TEST(coverage_of_segments_crossing_the_canvas_edges) {
             CHECK(e.pixels > 100);
         }
 }
+
+TEST(coverage_of_axis_aligned_and_diagonal_segments) {
+    // Exact ties of the major-axis choice (|dx| = |dy|) and of the end regions (dy = 0: the
+    // end line is vertical, zero-width butt pieces), every direction, against the reference.
+    const double thicknesses[] = {0.5, 1.0, 1.5, 3.0};
+    const double dirs[][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}, {1, 1}, {-1, 1}, {1, -1}, {-1, -1}};
+    std::vector<double> ref;
+    error_stats e;
+    for (double thickness : thicknesses)
+        for (const auto &d : dirs)
+            for (double length : {0.0, 0.3, 2.0, 9.25})
+                for (auto cap : {tiny3d::line_cap::round, tiny3d::line_cap::butt}) {
+                    const double x0 = 12.37, y0 = 11.61;
+                    const double x1 = x0 + d[0] * length, y1 = y0 + d[1] * length;
+                    canvas_ptr c = blank(26, 25);
+                    tiny3d::draw_line_coverage(c.get(), float(x0), float(y0), float(x1), float(y1), float(thickness),
+                                               {cap, 1.0f});
+                    tiny3d::line_coverage_reference(ref, 26, 25, float(x0), float(y0), float(x1), float(y1), thickness,
+                                                    cap);
+                    compare(*c, ref, e);
+                }
+    CHECK_NEAR(e.max, 0.0, 1e-5);
+    CHECK(e.pixels > 1000);
+}
