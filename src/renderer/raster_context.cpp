@@ -27,6 +27,7 @@ constexpr std::size_t CACHE_LINE = 64;  // bytes
 // draws bands t, t + n, t + 2n, …
 constexpr int BAND_ROWS = 32;
 constexpr int MAX_BANDS = 128;
+constexpr int BLOCKS_PER_THREAD = 4;
 static_assert(MAX_BANDS <= 256, "row_band stores band numbers in 8 bits");
 // Guard band: the x/y clip planes sit at |x|, |y| ≤ guard·w, chosen so that the whole band
 // spans fewer pixels than the 32-bit fill allows; never tighter than the frustum itself.
@@ -260,8 +261,15 @@ struct render_context::impl {
 
     int band_count = 1;  // set per frame
     std::vector<std::uint8_t> row_band;  // the band holding each row (inverse of band_y0)
+    std::uint8_t band_owner[MAX_BANDS];  // the thread that draws each band
     int bands() const { return band_count; }
     int band_of(int y) const { return row_band[static_cast<std::size_t>(y)]; }
+    // Whether thread t draws a band among rows [y0, y1] (inclusive, inside the target).
+    bool draws_rows(int t, int y0, int y1) const {
+        for (int b = band_of(y0); b <= band_of(y1); ++b)
+            if (band_owner[b] == t) return true;
+        return false;
+    }
     int band_y0(int b) const { return static_cast<int>(static_cast<long long>(target->height) * b / bands()); }
 
     void clear_band(int b) {
@@ -273,8 +281,8 @@ struct render_context::impl {
 
     void transform(const raster_mesh &m, const draw_params &p, const mat4_t &mvp, bool generic, std::size_t v0,
                    std::size_t v1);
-    void setup(const raster_mesh &m, const draw_params &p, std::uint32_t state, bool generic, std::size_t t0,
-               std::size_t t1, segment &out);
+    void setup(const raster_mesh &m, const draw_params &p, std::uint32_t state, bool generic, int thread,
+               segment &out);
     // Appends a fast triangle and its band bins (skips empty ones).
     void add_fast(const triangle_edges &t, const screen_vertex v[3], const float shade[3], segment &out) {
         detail::fast_triangle f;
@@ -288,7 +296,8 @@ struct render_context::impl {
         out.fast.push_back(f);
         for (int b = band_of(f.min_y); b <= band_of(f.max_y); ++b) out.bins[b].push_back(index);
     }
-    void emit(const clip_vertex *poly, int n, const draw_params &p, std::uint32_t state, bool generic, segment &out);
+    void emit(const clip_vertex *poly, int n, const draw_params &p, std::uint32_t state, bool generic, bool count,
+              segment &out);
     void draw_generic(const generic_triangle &g, int y0, int y1);
 };
 
@@ -341,9 +350,10 @@ void render_context::impl::transform(const raster_mesh &m, const draw_params &p,
 
 // ---- phase 1b: triangles -------------------------------------------------------------------
 
-// One convex polygon (already inside the near/far planes and the guard band) as a fan.
+// One convex polygon (already inside the near/far planes and the guard band) as a fan;
+// `count`: add its triangles to the stats.
 void render_context::impl::emit(const clip_vertex *poly, int n, const draw_params &p, std::uint32_t state,
-                                bool generic, segment &out) {
+                                bool generic, bool count, segment &out) {
     const float half_w = 0.5f * static_cast<float>(target->width), half_h = 0.5f * static_cast<float>(target->height);
     const pixel_rect full{0, 0, target->width, target->height};
     for (int k = 1; k + 1 < n; ++k) {
@@ -352,10 +362,10 @@ void render_context::impl::emit(const clip_vertex *poly, int n, const draw_param
                                     to_screen(c[2]->position, half_w, half_h)};
         const triangle_edges t = triangle_setup(v[0], v[1], v[2], full, p.cull);
         if (!t.valid) {
-            out.stats.culled_backface += t.culled;
+            out.stats.culled_backface += count && t.culled;
             continue;
         }
-        ++out.stats.rasterized;
+        out.stats.rasterized += count;
         if (generic) {
             generic_triangle g;
             for (int j = 0; j < 3; ++j) {
@@ -373,11 +383,17 @@ void render_context::impl::emit(const clip_vertex *poly, int n, const draw_param
     }
 }
 
+// Thread `thread` walks every triangle but sets up only the fast ones that reach its bands
+// (and every clipped or per-pixel-path one: rare, and cheap to repeat); each triangle is
+// counted in the stats by one thread only (thread 0, or for fast triangles the owner of the
+// first row's band).
 void render_context::impl::setup(const raster_mesh &m, const draw_params &p, std::uint32_t state, bool generic,
-                                 std::size_t t0, std::size_t t1, segment &out) {
+                                 int thread, segment &out) {
     const bool flat = p.shade == shading::flat;
+    const bool counts_all = thread == 0;
     const pixel_rect full{0, 0, target->width, target->height};
-    for (std::size_t i = t0; i < t1; ++i) {
+    const std::int64_t last_row = target->height - 1;
+    for (std::size_t i = 0; i < m.triangles.size(); ++i) {
         const std::array<std::uint32_t, 3> &tri = m.triangles[i];
         const xvertex &a = vertices[tri[0]], &b = vertices[tri[1]], &c = vertices[tri[2]];
         if (a.outcode & b.outcode & c.outcode) continue;  // all outside one plane
@@ -396,20 +412,28 @@ void render_context::impl::setup(const raster_mesh &m, const draw_params &p, std
             const std::int64_t area2 = detail::snapped_area2(X, Y);
             if (area2 == 0) continue;
             if (detail::facing_culled(area2, p.cull)) {
-                ++out.stats.culled_backface;
+                out.stats.culled_backface += counts_all;
                 continue;
             }
+            // Candidate rows (pixel centres 16·row + 8 within the snapped y range): skip the
+            // triangle when this thread draws none of their bands.
+            const std::int64_t row0 = std::max<std::int64_t>(
+                -((RASTER_SUBPIXEL_ONE / 2 - std::min({Y[0], Y[1], Y[2]})) >> RASTER_SUBPIXEL_BITS), 0);
+            const std::int64_t row1 = std::min<std::int64_t>(
+                (std::max({Y[0], Y[1], Y[2]}) - RASTER_SUBPIXEL_ONE / 2) >> RASTER_SUBPIXEL_BITS, last_row);
+            if (row0 > row1 || !draws_rows(thread, static_cast<int>(row0), static_cast<int>(row1))) continue;
+            const bool counts = band_owner[band_of(static_cast<int>(row0))] == thread;
             const screen_vertex v[3] = {a.screen, b.screen, c.screen};
             const float shade[3] = {flat ? flat_shade : a.shade, flat ? flat_shade : b.shade, flat ? flat_shade : c.shade};
             detail::fast_triangle f;
             const detail::fast_setup verdict = detail::setup_fast_triangle(X, Y, area2, full, v, shade, f);
             if (verdict == detail::fast_setup::ready) {
-                ++out.stats.rasterized;
+                out.stats.rasterized += counts;
                 bin_fast(f, out);
             } else if (verdict == detail::fast_setup::wide) {
                 const triangle_edges t = detail::triangle_setup_snapped(X, Y, full, p.cull);
                 if (!t.valid) continue;
-                ++out.stats.rasterized;
+                out.stats.rasterized += counts;
                 add_fast(t, v, shade, out);
             }
             continue;
@@ -424,10 +448,10 @@ void render_context::impl::setup(const raster_mesh &m, const draw_params &p, std
             in[j].attr[ATTR_SHADE] = flat ? flat_shade : x.shade;
         }
         const unsigned planes = a.outcode | b.outcode | c.outcode;
-        if (planes) ++out.stats.clipped;
+        if (planes) out.stats.clipped += counts_all;
         clip_vertex poly[CLIP_MAX_VERTICES];
         const int n = planes ? clip_polygon(in, 3, planes, guard, ATTR_COUNT, poly) : 3;
-        emit(planes ? poly : in, n, p, state, generic, out);
+        emit(planes ? poly : in, n, p, state, generic, counts_all, out);
     }
 }
 
@@ -490,6 +514,12 @@ status render_context::begin_frame(canvas_t &target, float clear_intensity) {
     if (s.row_band.size() < static_cast<std::size_t>(target.height)) s.row_band.resize(target.height);
     for (int b = 0; b < s.band_count; ++b)
         for (int y = s.band_y0(b); y < s.band_y0(b + 1); ++y) s.row_band[static_cast<std::size_t>(y)] = static_cast<std::uint8_t>(b);
+    // Threads own blocks of neighbouring bands, dealt in turn (BLOCKS_PER_THREAD each when
+    // there are enough bands): few triangles straddle two owners, and the load stays even
+    // when the scene is not.
+    const int n = s.pool.size();
+    const int block = std::max(1, s.band_count / (BLOCKS_PER_THREAD * n));
+    for (int b = 0; b < s.band_count; ++b) s.band_owner[b] = static_cast<std::uint8_t>(b / block % n);
     s.guard = std::clamp(GUARD_SPAN_PIXELS / static_cast<float>(std::max(target.width, target.height)), 1.0f, MAX_GUARD);
     return {};
 }
@@ -513,11 +543,12 @@ void render_context::draw(const raster_mesh &mesh, const draw_params &params) {
     if (s.vertices.size() < nv) s.vertices.resize(nv);
     if (generic && s.vertex_attr.size() < nv * ATTR_COUNT) s.vertex_attr.resize(nv * ATTR_COUNT);
     const int n = s.pool.size();
-    const std::size_t nt = mesh.triangles.size();
     auto phase_vertices = [&](int t) {
         s.transform(mesh, params, mvp, generic, nv * t / n, nv * (t + 1) / n);
     };
     s.pool.run(phase_vertices);
+    // Each thread sets up the triangles that reach its bands and draws its bands from its own
+    // segment (no barrier between, and no triangle data crosses to another core).
     auto phase_triangles = [&](int t) {
         impl::segment &seg = s.segments[t];
         seg.fast.clear();
@@ -525,22 +556,11 @@ void render_context::draw(const raster_mesh &mesh, const draw_params &params) {
         seg.generic.clear();
         seg.stats = {};
         for (int b = 0; b < s.bands(); ++b) seg.bins[b].clear();
-        s.setup(mesh, params, state, generic, nt * t / n, nt * (t + 1) / n, seg);
-    };
-    s.pool.run(phase_triangles);
-    if (params.alpha < 1.0f) {
-        for (int t = 0; t < n; ++t)
-            for (generic_triangle g : s.segments[t].generic) {
-                g.sequence = static_cast<std::uint32_t>(s.translucent.size());
-                s.translucent.push_back(g);
-            }
-    }
-    auto phase_raster = [&](int thread) {
-      for (int band = thread; band < s.bands(); band += n) {
-        const int y0 = s.band_y0(band), y1 = s.band_y0(band + 1);
-        if (s.pending_clear) s.clear_band(band);
-        for (int t = 0; t < n; ++t) {
-            const impl::segment &seg = s.segments[t];
+        s.setup(mesh, params, state, generic, t, seg);
+        for (int band = 0; band < s.bands(); ++band) {
+            if (s.band_owner[band] != t) continue;
+            const int y0 = s.band_y0(band), y1 = s.band_y0(band + 1);
+            if (s.pending_clear) s.clear_band(band);
             for (std::uint32_t index : seg.bins[band]) {
                 const detail::fast_triangle &f = seg.fast[index];
                 detail::fill_fast_rows(*s.target, &s.depth, f, f.wide >= 0 ? &seg.wide[f.wide] : nullptr, params.depth,
@@ -549,9 +569,13 @@ void render_context::draw(const raster_mesh &mesh, const draw_params &params) {
             if (params.alpha >= 1.0f)
                 for (const generic_triangle &g : seg.generic) s.draw_generic(g, y0, y1);
         }
-      }
     };
-    s.pool.run(phase_raster);
+    s.pool.run(phase_triangles);
+    if (params.alpha < 1.0f)  // every segment holds all per-pixel-path triangles: take segment 0's
+        for (generic_triangle g : s.segments[0].generic) {
+            g.sequence = static_cast<std::uint32_t>(s.translucent.size());
+            s.translucent.push_back(g);
+        }
     s.pending_clear = false;
     for (int t = 0; t < n; ++t) {
         const frame_stats &st = s.segments[t].stats;
@@ -568,13 +592,13 @@ void render_context::end_frame() {
     std::sort(s.translucent.begin(), s.translucent.end(), [](const generic_triangle &a, const generic_triangle &b) {
         return a.mean_depth != b.mean_depth ? a.mean_depth > b.mean_depth : a.sequence < b.sequence;
     });
-    const int n = s.pool.size();
     if (s.translucent.empty() && !s.pending_clear) {
         s.target = nullptr;
         return;
     }
     auto phase = [&](int thread) {
-        for (int band = thread; band < s.bands(); band += n) {
+        for (int band = 0; band < s.bands(); ++band) {
+            if (s.band_owner[band] != thread) continue;
             const int y0 = s.band_y0(band), y1 = s.band_y0(band + 1);
             if (s.pending_clear) s.clear_band(band);
             for (const generic_triangle &g : s.translucent) s.draw_generic(g, y0, y1);
