@@ -427,6 +427,7 @@ TEST(two_threads_give_the_same_image_as_one) {
     light_t lights[2] = {{{1, 1, 1}, 0.8f}, {{-1, 0, 0.5f}, 0.3f}};
     const light_rig rig = make_light_rig(lights, 0.1f).value();
     std::vector<float> images[3];
+    frame_stats stats[3];
     for (int threads = 1; threads <= 3; ++threads) {
         canvas_ptr c = make_canvas(257, 193).value();
         render_context ctx(threads);
@@ -449,12 +450,25 @@ TEST(two_threads_give_the_same_image_as_one) {
             p.alpha = 0.5f;
             p.model = mat4_multiply(mat4_translate(0.3f, -0.4f, 1.2f), mat4_rotate_xyz(0.2f, 0.5f, 0));
             ctx.draw(cornered, p);
+            // Through the near plane and beyond the guard band: clipped triangles.
+            p.tex = nullptr;
+            p.alpha = 1.0f;
+            p.model = mat4_multiply(mat4_translate(0.2f, 0, 2.6f), mat4_rotate_xyz(1.4f, 0.2f * frame, 0));
+            ctx.draw(shared, p);
             ctx.end_frame();
         }
         images[threads - 1].assign(c->data, c->data + 257 * 193);
+        stats[threads - 1] = ctx.stats();
     }
     CHECK(images[0] == images[1]);
     CHECK(images[0] == images[2]);
+    CHECK(stats[0].clipped > 0);
+    for (int k = 1; k < 3; ++k) {  // every triangle counted once, whatever thread handled it
+        CHECK_EQ(stats[k].triangles_in, stats[0].triangles_in);
+        CHECK_EQ(stats[k].culled_backface, stats[0].culled_backface);
+        CHECK_EQ(stats[k].clipped, stats[0].clipped);
+        CHECK_EQ(stats[k].rasterized, stats[0].rasterized);
+    }
     double sum = 0;
     for (float v : images[0]) sum += v;
     CHECK(sum > 257 * 193 * 0.1);  // something was drawn
