@@ -203,6 +203,65 @@ inline void unit_or_zero_x4(__m128 &x, __m128 &y, __m128 &z) {
     z = _mm_and_ps(usable, _mm_mul_ps(z, scale));
 }
 
+// The position part of transform() for four vertices: clip = M·p, outcode, screen position
+// and snap, lane by lane with the scalar code's float operations in the same order (mul,
+// clip_outcode, to_screen, detail::snap_vertex), so every field gets the same bits.
+void project_x4(const mat4_t &m, const vec3_t *positions, float guard, float half_w, float half_h, xvertex *out) {
+    const __m128 px = _mm_setr_ps(positions[0].x, positions[1].x, positions[2].x, positions[3].x);
+    const __m128 py = _mm_setr_ps(positions[0].y, positions[1].y, positions[2].y, positions[3].y);
+    const __m128 pz = _mm_setr_ps(positions[0].z, positions[1].z, positions[2].z, positions[3].z);
+    auto row = [&](int r) {  // m[r]·x + m[4+r]·y + m[8+r]·z + m[12+r]
+        return _mm_add_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_set1_ps(m.m[r]), px), _mm_mul_ps(_mm_set1_ps(m.m[4 + r]), py)),
+                                     _mm_mul_ps(_mm_set1_ps(m.m[8 + r]), pz)),
+                          _mm_set1_ps(m.m[12 + r]));
+    };
+    __m128 x = row(0), y = row(1), z = row(2), w = row(3);
+    // Outcode: a plane's bit is set unless its distance is ≥ 0 (NaN is outside).
+    const __m128 zero = _mm_setzero_ps(), gw = _mm_mul_ps(_mm_set1_ps(guard), w);
+    const __m128 distance[6] = {_mm_add_ps(z, w), _mm_sub_ps(w, z), _mm_add_ps(x, gw),
+                                _mm_sub_ps(gw, x), _mm_add_ps(y, gw), _mm_sub_ps(gw, y)};
+    static_assert(CLIP_NEAR == 1 && CLIP_FAR == 2 && CLIP_LEFT == 4 && CLIP_RIGHT == 8 && CLIP_BOTTOM == 16 &&
+                  CLIP_TOP == 32);
+    __m128i code = _mm_setzero_si128();
+    for (int k = 0; k < 6; ++k)
+        code = _mm_or_si128(code, _mm_andnot_si128(_mm_castps_si128(_mm_cmpge_ps(distance[k], zero)), _mm_set1_epi32(1 << k)));
+    alignas(16) std::uint32_t outcode[4];
+    _mm_store_si128(reinterpret_cast<__m128i *>(outcode), code);
+    // to_screen, computed for every lane (used only where w > 0, i.e. outside no near plane).
+    const __m128 inv_w = _mm_div_ps(_mm_set1_ps(1.0f), w);
+    const __m128 one = _mm_set1_ps(1.0f), half = _mm_set1_ps(0.5f);
+    __m128 sx = _mm_mul_ps(_mm_add_ps(_mm_mul_ps(x, inv_w), one), _mm_set1_ps(half_w));
+    __m128 sy = _mm_mul_ps(_mm_sub_ps(one, _mm_mul_ps(y, inv_w)), _mm_set1_ps(half_h));
+    __m128 sz = _mm_add_ps(_mm_mul_ps(_mm_mul_ps(half, z), inv_w), half);
+    __m128 sw = inv_w;
+    // snap_vertex: usable when |x|, |y| ≤ RASTER_MAX_COORD (false for NaN and ±∞ too).
+    const __m128 abs_mask = _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff)), limit = _mm_set1_ps(RASTER_MAX_COORD);
+    const int usable = _mm_movemask_ps(_mm_and_ps(_mm_cmple_ps(_mm_and_ps(sx, abs_mask), limit),
+                                                  _mm_cmple_ps(_mm_and_ps(sy, abs_mask), limit)));
+    const __m128 sub = _mm_set1_ps(static_cast<float>(RASTER_SUBPIXEL_ONE));
+    alignas(16) std::int32_t snap_x[4], snap_y[4];
+    _mm_store_si128(reinterpret_cast<__m128i *>(snap_x), _mm_cvtps_epi32(_mm_mul_ps(sx, sub)));
+    _mm_store_si128(reinterpret_cast<__m128i *>(snap_y), _mm_cvtps_epi32(_mm_mul_ps(sy, sub)));
+    _MM_TRANSPOSE4_PS(x, y, z, w);
+    _MM_TRANSPOSE4_PS(sx, sy, sz, sw);
+    const __m128 clip[4] = {x, y, z, w}, screen[4] = {sx, sy, sz, sw};
+    for (int l = 0; l < 4; ++l) {
+        xvertex &v = out[l];
+        alignas(16) float c[4];
+        _mm_store_ps(c, clip[l]);
+        v.clip = {c[0], c[1], c[2], c[3]};
+        v.outcode = outcode[l];
+        v.snapped = false;
+        if (v.outcode & CLIP_NEAR) continue;
+        _mm_store_ps(c, screen[l]);
+        v.screen = {c[0], c[1], c[2], c[3]};
+        if (!((usable >> l) & 1)) continue;
+        v.snapped = true;
+        v.snapped_x = snap_x[l];
+        v.snapped_y = snap_y[l];
+    }
+}
+
 // shade_gouraud_vertex(rig, ·, apply_normal_transform(nt, normals[l])) for l = 0..3 with
 // directional lights only (no position needed): the scalar code's operations in the same
 // order on four lanes, so each result has the same bits as the scalar one.
@@ -308,7 +367,11 @@ void render_context::impl::transform(const raster_mesh &m, const draw_params &p,
     const float half_w = 0.5f * static_cast<float>(target->width), half_h = 0.5f * static_cast<float>(target->height);
     const normal_transform nt = make_normal_transform(p.model);
     const bool gouraud = p.shade == shading::gouraud;
-    for (std::size_t i = v0; i < v1; ++i) {
+    std::size_t first = v0;
+#ifdef __SSE2__
+    for (; first + 4 <= v1; first += 4) project_x4(mvp, &m.positions[first], guard, half_w, half_h, &vertices[first]);
+#endif
+    for (std::size_t i = first; i < v1; ++i) {
         xvertex &x = vertices[i];
         x.clip = mul(mvp, m.positions[i]);
         x.outcode = clip_outcode(x.clip, guard);
