@@ -275,9 +275,6 @@ void fill_rows_scalar64(canvas_t &canvas, zbuffer *depth, const fast_triangle &f
 }
 
 #ifdef __SSE2__
-// Bounding-box width (px) from which the 4-wide loop takes the WideRows variant.
-constexpr int PLAIN_STORE_MIN_WIDTH = 32;
-
 template <depth_func Test>
 inline __m128 depth_mask(__m128 z, __m128 stored) {
     if constexpr (Test == depth_func::less) return _mm_cmplt_ps(z, stored);
@@ -297,10 +294,11 @@ inline __m128 select(__m128 mask, __m128 a, __m128 b) {  // mask ? a : b
 // The 4-wide span loop: each row runs from its exact first covered pixel (row_spans) in
 // groups of four; only the last group of a row is partial (its lanes below the row's end
 // are covered), and no edge function is evaluated per pixel. A last group that would pass
-// the canvas' right edge is finished lane by lane. WideRows (wide triangles:
-// many groups whose four pixels all pass) adds a plain-store branch for such groups that
-// skips the colour read; small triangles go without that branch.
-template <depth_func Test, bool HasDepth, bool WideRows>
+// the canvas' right edge is finished lane by lane. A whole group whose four pixels all pass
+// the depth test is written with plain stores, without reading the colour (with spans,
+// whole groups are fully covered, so this branch is well predicted even on small
+// triangles).
+template <depth_func Test, bool HasDepth>
 void fill_rows_sse2(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bool depth_write, int y0,
                     int y1) {
     const __m128i lane = _mm_set_epi32(3, 2, 1, 0);
@@ -326,15 +324,16 @@ void fill_rows_sse2(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bo
         float *zrow = HasDepth ? depth->row(y) : nullptr;
         const int x_end = min_x + hi + 1;
         int x = min_x + lo;
-        // One group of four pixels from x; `cover` marks the lanes inside the span.
-        auto group = [&](__m128 cover) {
+        // One group of four pixels from x; `cover` marks the lanes inside the span (all of
+        // them when `whole`, a std::bool_constant).
+        auto group = [&](auto whole, __m128 cover) {
             __m128 mask = cover, stored = z;
             if constexpr (HasDepth) {
                 stored = _mm_loadu_ps(zrow + x);
                 mask = _mm_and_ps(mask, depth_mask<Test>(z, stored));
             }
             const int pass = _mm_movemask_ps(mask);
-            if (WideRows && pass == 0xF) {  // all four pass: plain stores, no colour read
+            if (decltype(whole)::value && pass == 0xF) {  // all four pass: plain stores, no colour read
                 if (HasDepth && depth_write) _mm_storeu_ps(zrow + x, z);
                 _mm_storeu_ps(color + x, _mm_min_ps(_mm_max_ps(in, zero), one));
             } else {
@@ -346,13 +345,13 @@ void fill_rows_sse2(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bo
             }
         };
         for (; x + 4 <= x_end; x += 4) {  // whole groups (x_end ≤ width: never past the row)
-            group(all_lanes);
+            group(std::true_type{}, all_lanes);
             z = _mm_add_ps(z, zstep);
             in = _mm_add_ps(in, istep);
         }
         if (x == x_end) continue;
         if (x + 4 <= width) {
-            group(_mm_castsi128_ps(_mm_cmpgt_epi32(_mm_set1_epi32(x_end - x), lane)));
+            group(std::false_type{}, _mm_castsi128_ps(_mm_cmpgt_epi32(_mm_set1_epi32(x_end - x), lane)));
         } else {  // the last group would pass the canvas' right edge: lane by lane
             alignas(16) float zl[4], il[4];
             _mm_store_ps(zl, z);
@@ -362,22 +361,22 @@ void fill_rows_sse2(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bo
     }
 }
 
-template <bool HasDepth, bool WideRows>
+template <bool HasDepth>
 void fill_rows_dispatch(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, depth_func test,
                         bool depth_write, int y0, int y1) {
     switch (test) {
         case depth_func::never: return;
-        case depth_func::less: return fill_rows_sse2<depth_func::less, HasDepth, WideRows>(canvas, depth, f, depth_write, y0, y1);
+        case depth_func::less: return fill_rows_sse2<depth_func::less, HasDepth>(canvas, depth, f, depth_write, y0, y1);
         case depth_func::less_equal:
-            return fill_rows_sse2<depth_func::less_equal, HasDepth, WideRows>(canvas, depth, f, depth_write, y0, y1);
-        case depth_func::equal: return fill_rows_sse2<depth_func::equal, HasDepth, WideRows>(canvas, depth, f, depth_write, y0, y1);
+            return fill_rows_sse2<depth_func::less_equal, HasDepth>(canvas, depth, f, depth_write, y0, y1);
+        case depth_func::equal: return fill_rows_sse2<depth_func::equal, HasDepth>(canvas, depth, f, depth_write, y0, y1);
         case depth_func::greater:
-            return fill_rows_sse2<depth_func::greater, HasDepth, WideRows>(canvas, depth, f, depth_write, y0, y1);
+            return fill_rows_sse2<depth_func::greater, HasDepth>(canvas, depth, f, depth_write, y0, y1);
         case depth_func::greater_equal:
-            return fill_rows_sse2<depth_func::greater_equal, HasDepth, WideRows>(canvas, depth, f, depth_write, y0, y1);
+            return fill_rows_sse2<depth_func::greater_equal, HasDepth>(canvas, depth, f, depth_write, y0, y1);
         case depth_func::not_equal:
-            return fill_rows_sse2<depth_func::not_equal, HasDepth, WideRows>(canvas, depth, f, depth_write, y0, y1);
-        case depth_func::always: return fill_rows_sse2<depth_func::always, HasDepth, WideRows>(canvas, depth, f, depth_write, y0, y1);
+            return fill_rows_sse2<depth_func::not_equal, HasDepth>(canvas, depth, f, depth_write, y0, y1);
+        case depth_func::always: return fill_rows_sse2<depth_func::always, HasDepth>(canvas, depth, f, depth_write, y0, y1);
     }
 }
 #endif
@@ -409,11 +408,8 @@ void fill_fast_rows(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, co
         return;
     }
 #ifdef __SSE2__
-    const bool wide_rows = f.max_x - f.min_x >= PLAIN_STORE_MIN_WIDTH;
-    if (depth && wide_rows) fill_rows_dispatch<true, true>(canvas, depth, f, test, depth_write, y0, y1);
-    else if (depth) fill_rows_dispatch<true, false>(canvas, depth, f, test, depth_write, y0, y1);
-    else if (wide_rows) fill_rows_dispatch<false, true>(canvas, depth, f, depth_func::always, false, y0, y1);
-    else fill_rows_dispatch<false, false>(canvas, depth, f, depth_func::always, false, y0, y1);
+    if (depth) fill_rows_dispatch<true>(canvas, depth, f, test, depth_write, y0, y1);
+    else fill_rows_dispatch<false>(canvas, depth, f, depth_func::always, false, y0, y1);
 #else
     const row_spans spans(f);
     for (int y = y0; y < y1; ++y) {
