@@ -302,12 +302,12 @@ struct render_context::impl {
     float guard = 1.0f;
     frame_stats stats;
 
-    std::vector<xvertex> vertices;
-    std::vector<float> vertex_attr;  // ATTR_COUNT per vertex (generic path only)
     // What one phase-1 worker produced. Aligned to a cache line of its own: the vector
     // headers and stats are written per triangle, and two threads writing one line
     // (false sharing) made the two-thread setup slower than one thread's.
     struct alignas(CACHE_LINE) segment {
+        std::vector<xvertex> vertices;   // every vertex of the draw, transformed by this thread
+        std::vector<float> vertex_attr;  // ATTR_COUNT per vertex (generic path only)
         std::vector<detail::fast_triangle> fast;
         std::vector<triangle_edges> wide;
         std::vector<generic_triangle> generic;
@@ -338,8 +338,7 @@ struct render_context::impl {
         depth.clear_rows(y0, y1, 1.0f);
     }
 
-    void transform(const raster_mesh &m, const draw_params &p, const mat4_t &mvp, bool generic, std::size_t v0,
-                   std::size_t v1);
+    void transform(const raster_mesh &m, const draw_params &p, const mat4_t &mvp, bool generic, segment &out);
     void setup(const raster_mesh &m, const draw_params &p, std::uint32_t state, bool generic, int thread,
                segment &out);
     // Appends a fast triangle and its band bins (skips empty ones).
@@ -363,7 +362,10 @@ struct render_context::impl {
 // ---- phase 1a: vertices -------------------------------------------------------------------
 
 void render_context::impl::transform(const raster_mesh &m, const draw_params &p, const mat4_t &mvp, bool generic,
-                                     std::size_t v0, std::size_t v1) {
+                                     segment &out) {
+    const std::size_t v0 = 0, v1 = m.positions.size();
+    std::vector<xvertex> &vertices = out.vertices;
+    std::vector<float> &vertex_attr = out.vertex_attr;
     const float half_w = 0.5f * static_cast<float>(target->width), half_h = 0.5f * static_cast<float>(target->height);
     const normal_transform nt = make_normal_transform(p.model);
     const bool gouraud = p.shade == shading::gouraud;
@@ -454,6 +456,8 @@ void render_context::impl::setup(const raster_mesh &m, const draw_params &p, std
                                  int thread, segment &out) {
     const bool flat = p.shade == shading::flat;
     const bool counts_all = thread == 0;
+    const std::vector<xvertex> &vertices = out.vertices;
+    const std::vector<float> &vertex_attr = out.vertex_attr;
     const pixel_rect full{0, 0, target->width, target->height};
     const std::int64_t last_row = target->height - 1;
     for (std::size_t i = 0; i < m.triangles.size(); ++i) {
@@ -603,17 +607,18 @@ void render_context::draw(const raster_mesh &mesh, const draw_params &params) {
     const std::uint32_t state = static_cast<std::uint32_t>(s.states.size());
     s.states.push_back({params});
     const std::size_t nv = mesh.positions.size();
-    if (s.vertices.size() < nv) s.vertices.resize(nv);
-    if (generic && s.vertex_attr.size() < nv * ATTR_COUNT) s.vertex_attr.resize(nv * ATTR_COUNT);
     const int n = s.pool.size();
-    auto phase_vertices = [&](int t) {
-        s.transform(mesh, params, mvp, generic, nv * t / n, nv * (t + 1) / n);
-    };
-    s.pool.run(phase_vertices);
-    // Each thread sets up the triangles that reach its bands and draws its bands from its own
-    // segment (no barrier between, and no triangle data crosses to another core).
+    for (int t = 0; t < n; ++t) {
+        impl::segment &seg = s.segments[t];
+        if (seg.vertices.size() < nv) seg.vertices.resize(nv);
+        if (generic && seg.vertex_attr.size() < nv * ATTR_COUNT) seg.vertex_attr.resize(nv * ATTR_COUNT);
+    }
+    // One phase: each thread transforms every vertex into its own segment (repeating that
+    // cheap pass costs less than sharing vertex lines between cores), sets up the triangles
+    // that reach its bands and draws its bands from its own segment.
     auto phase_triangles = [&](int t) {
         impl::segment &seg = s.segments[t];
+        s.transform(mesh, params, mvp, generic, seg);
         seg.fast.clear();
         seg.wide.clear();
         seg.generic.clear();
