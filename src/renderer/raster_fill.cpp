@@ -361,22 +361,72 @@ void fill_rows_sse2(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bo
     }
 }
 
+// Triangles at most NARROW_WIDTH px wide: every row is drawn as the same `groups` groups
+// of four from min_x, the lanes outside the row's span masked off, so the branches are the
+// row loop and a group loop of constant trip count (the span loop's per-row trip counts
+// mispredict on small triangles). Needs min_x + 4·groups ≤ canvas width.
+constexpr int NARROW_WIDTH = 16;
+
+template <depth_func Test, bool HasDepth>
+void fill_rows_narrow(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, int groups, bool depth_write, int y0,
+                      int y1) {
+    const __m128i lane = _mm_set_epi32(3, 2, 1, 0), four = _mm_set1_epi32(4);
+    const __m128 lane_f = _mm_set_ps(3.0f, 2.0f, 1.0f, 0.0f);
+    const __m128 zoff = _mm_mul_ps(_mm_set1_ps(f.zdx), lane_f), ioff = _mm_mul_ps(_mm_set1_ps(f.idx), lane_f);
+    const __m128 zstep = _mm_set1_ps(4.0f * f.zdx), istep = _mm_set1_ps(4.0f * f.idx);
+    const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f);
+    const row_spans spans(f);
+    const float z0 = f.z, zdy = f.zdy, i0 = f.i, idy = f.idy;  // locals: the stores could alias f
+    const int min_x = f.min_x, min_y = f.min_y;
+    for (int y = y0; y < y1; ++y) {
+        const int dy = y - min_y;
+        int lo, hi;
+        spans.at(dy, lo, hi);
+        const __m128i before = _mm_set1_epi32(lo - 1), after = _mm_set1_epi32(hi + 1);
+        const float dy_f = static_cast<float>(dy);
+        __m128 z = _mm_add_ps(_mm_set1_ps(z0 + zdy * dy_f), zoff);
+        __m128 in = _mm_add_ps(_mm_set1_ps(i0 + idy * dy_f), ioff);
+        float *color = canvas.pixels[y] + min_x;
+        float *zrow = HasDepth ? depth->row(y) + min_x : nullptr;
+        __m128i column = lane;
+        for (int g = 0; g < groups; ++g, column = _mm_add_epi32(column, four), z = _mm_add_ps(z, zstep),
+                 in = _mm_add_ps(in, istep)) {
+            __m128 mask = _mm_castsi128_ps(_mm_and_si128(_mm_cmpgt_epi32(column, before), _mm_cmplt_epi32(column, after)));
+            if constexpr (HasDepth) {
+                const __m128 stored = _mm_loadu_ps(zrow + 4 * g);
+                mask = _mm_and_ps(mask, depth_mask<Test>(z, stored));
+                if (depth_write) _mm_storeu_ps(zrow + 4 * g, select(mask, z, stored));
+            }
+            const __m128 shade = _mm_min_ps(_mm_max_ps(in, zero), one);
+            _mm_storeu_ps(color + 4 * g, select(mask, shade, _mm_loadu_ps(color + 4 * g)));
+        }
+    }
+}
+
+template <depth_func Test, bool HasDepth>
+void fill_rows_sse2_any(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bool depth_write, int y0, int y1) {
+    const int groups = (f.max_x - f.min_x + 4) / 4;  // ⌈bounding-box width / 4⌉
+    if (f.max_x - f.min_x < NARROW_WIDTH && f.min_x + 4 * groups <= canvas.width)
+        fill_rows_narrow<Test, HasDepth>(canvas, depth, f, groups, depth_write, y0, y1);
+    else fill_rows_sse2<Test, HasDepth>(canvas, depth, f, depth_write, y0, y1);
+}
+
 template <bool HasDepth>
 void fill_rows_dispatch(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, depth_func test,
                         bool depth_write, int y0, int y1) {
     switch (test) {
         case depth_func::never: return;
-        case depth_func::less: return fill_rows_sse2<depth_func::less, HasDepth>(canvas, depth, f, depth_write, y0, y1);
+        case depth_func::less: return fill_rows_sse2_any<depth_func::less, HasDepth>(canvas, depth, f, depth_write, y0, y1);
         case depth_func::less_equal:
-            return fill_rows_sse2<depth_func::less_equal, HasDepth>(canvas, depth, f, depth_write, y0, y1);
-        case depth_func::equal: return fill_rows_sse2<depth_func::equal, HasDepth>(canvas, depth, f, depth_write, y0, y1);
+            return fill_rows_sse2_any<depth_func::less_equal, HasDepth>(canvas, depth, f, depth_write, y0, y1);
+        case depth_func::equal: return fill_rows_sse2_any<depth_func::equal, HasDepth>(canvas, depth, f, depth_write, y0, y1);
         case depth_func::greater:
-            return fill_rows_sse2<depth_func::greater, HasDepth>(canvas, depth, f, depth_write, y0, y1);
+            return fill_rows_sse2_any<depth_func::greater, HasDepth>(canvas, depth, f, depth_write, y0, y1);
         case depth_func::greater_equal:
-            return fill_rows_sse2<depth_func::greater_equal, HasDepth>(canvas, depth, f, depth_write, y0, y1);
+            return fill_rows_sse2_any<depth_func::greater_equal, HasDepth>(canvas, depth, f, depth_write, y0, y1);
         case depth_func::not_equal:
-            return fill_rows_sse2<depth_func::not_equal, HasDepth>(canvas, depth, f, depth_write, y0, y1);
-        case depth_func::always: return fill_rows_sse2<depth_func::always, HasDepth>(canvas, depth, f, depth_write, y0, y1);
+            return fill_rows_sse2_any<depth_func::not_equal, HasDepth>(canvas, depth, f, depth_write, y0, y1);
+        case depth_func::always: return fill_rows_sse2_any<depth_func::always, HasDepth>(canvas, depth, f, depth_write, y0, y1);
     }
 }
 #endif
