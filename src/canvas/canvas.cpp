@@ -1,5 +1,6 @@
 // canvas.cpp — canvas allocation, the report's splat and DDA line.
 #include "canvas.h"
+#include "splat.h"
 
 #include <algorithm>
 #include <cmath>
@@ -24,8 +25,6 @@ layout canvas_layout(int width, int height) {
     l.total = l.data_offset + sizeof(float) * std::size_t(width) * std::size_t(height);
     return l;
 }
-
-inline float clamp01(float v) { return v < 0.0f ? 0.0f : (v > 1.0f ? 1.0f : v); }
 
 }  // namespace
 
@@ -83,7 +82,7 @@ void remove_canvas(canvas_t *canvas) { destroy_canvas(canvas); }
 
 void canvas_clear(canvas_t *canvas, float value) {
     if (!canvas) return;
-    const float v = std::isnan(value) ? 0.0f : clamp01(value);
+    const float v = std::isnan(value) ? 0.0f : tiny3d::detail::clamp01(value);
     std::fill(canvas->data, canvas->data + std::size_t(canvas->width) * std::size_t(canvas->height), v);
 }
 
@@ -92,22 +91,4 @@ float get_pixel(const canvas_t *canvas, int x, int y) {
     return canvas->pixels[y][x];
 }
 
-void set_pixel_f(canvas_t *c, float x, float y, float intensity) {
-    if (!c || !std::isfinite(x) || !std::isfinite(y) || !std::isfinite(intensity)) return;
-    // Shift so that pixel centres (i + 0.5) sit on the integer lattice of the report's splat.
-    const float sx = x - 0.5f, sy = y - 0.5f;
-    // Far off the canvas: nothing to do (also keeps the int conversion in range).
-    if (sx <= -2.0f || sy <= -2.0f || sx >= float(c->width) + 1.0f || sy >= float(c->height) + 1.0f) return;
-    const int x0 = static_cast<int>(std::floor(sx));
-    const int y0 = static_cast<int>(std::floor(sy));
-    const float dx = sx - float(x0);
-    const float dy = sy - float(y0);
-    for (int j = 0; j <= 1; ++j)
-        for (int i = 0; i <= 1; ++i) {
-            const int xi = x0 + i, yj = y0 + j;
-            if (xi < 0 || xi >= c->width || yj < 0 || yj >= c->height) continue;
-            const float w = (1.0f - std::fabs(float(i) - dx)) * (1.0f - std::fabs(float(j) - dy));
-            float v = c->pixels[yj][xi] + intensity * w;
-            c->pixels[yj][xi] = clamp01(v);
-        }
-}
+void set_pixel_f(canvas_t *c, float x, float y, float intensity) { tiny3d::detail::splat(c, x, y, intensity); }

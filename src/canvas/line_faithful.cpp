@@ -4,6 +4,7 @@
 
 #include "canvas.h"
 #include "line_clip.h"
+#include "splat.h"
 
 using tiny3d::detail::clip_parameter_range;
 
@@ -71,6 +72,6 @@ void draw_line_f(canvas_t *c, float x0, float y0, float x1, float y1, float thic
         // Draw a filled disc at each step for thickness (the report's 0.5 px grid).
         for (float ky = -half; ky < half; ky += 0.5f)
             for (float kx = -half; kx < half; kx += 0.5f)
-                if ((kx * kx + ky * ky) <= r2) set_pixel_f(c, px + kx, py + ky, 1.0f);
+                if ((kx * kx + ky * ky) <= r2) tiny3d::detail::splat(c, px + kx, py + ky, 1.0f);
     }
 }

@@ -1,0 +1,46 @@
+// splat.h — (internal) the report's bilinear splat, inline so the faithful line's inner
+// loop (a disc of splats every 0.5 px) does not pay a call and libm floorf per splat.
+// set_pixel_f (canvas.cpp) is this function; the pixels are bit-identical either way.
+#ifndef TINY3D_SPLAT_H
+#define TINY3D_SPLAT_H
+
+#include <cmath>
+
+#include "canvas.h"
+
+namespace tiny3d::detail {
+
+inline float clamp01(float v) { return v < 0.0f ? 0.0f : (v > 1.0f ? 1.0f : v); }
+
+// floor(v) for a float whose truncation fits an int: truncate, then step down for
+// negative non-integers (exact, unlike adding an offset, which can round).
+inline int floor_to_int(float v) {
+    const int t = static_cast<int>(v);
+    return t - (v < float(t) ? 1 : 0);
+}
+
+// Adds intensity·w to the 2×2 pixels around (x, y) with bilinear weights w (pixel centres
+// at i + 0.5), each clamped to 0..1; off-canvas parts and non-finite input are ignored.
+inline void splat(canvas_t *c, float x, float y, float intensity) {
+    if (!c || !std::isfinite(x) || !std::isfinite(y) || !std::isfinite(intensity)) return;
+    // Shift so that pixel centres (i + 0.5) sit on the integer lattice of the report's splat.
+    const float sx = x - 0.5f, sy = y - 0.5f;
+    // Far off the canvas: nothing to do (also keeps the int conversion in range).
+    if (sx <= -2.0f || sy <= -2.0f || sx >= float(c->width) + 1.0f || sy >= float(c->height) + 1.0f) return;
+    const int x0 = floor_to_int(sx);
+    const int y0 = floor_to_int(sy);
+    const float dx = sx - float(x0);
+    const float dy = sy - float(y0);
+    for (int j = 0; j <= 1; ++j)
+        for (int i = 0; i <= 1; ++i) {
+            const int xi = x0 + i, yj = y0 + j;
+            if (xi < 0 || xi >= c->width || yj < 0 || yj >= c->height) continue;
+            const float w = (1.0f - std::fabs(float(i) - dx)) * (1.0f - std::fabs(float(j) - dy));
+            const float v = c->pixels[yj][xi] + intensity * w;
+            c->pixels[yj][xi] = clamp01(v);
+        }
+}
+
+}  // namespace tiny3d::detail
+
+#endif
