@@ -130,8 +130,10 @@ void rasterize_triangle(const screen_vertex &v0, const screen_vertex &v1, const 
 
 // Half-space fill with depth test and an affine (screen-linear) intensity: writes
 // intensity (clamped to 0..1) and depth where the test passes (depth written when
-// depth_write). SSE2 4-wide with 32-bit edge functions when the triangle spans < 2040 px,
-// 64-bit scalar otherwise (same coverage). `depth` may be null (no test, no write).
+// depth_write). When the triangle spans < 2040 px: each row's pixel span from the edge
+// crossings (double precision, exactly the integer edge test — documentation/raster.md),
+// filled 4 pixels per SSE2 register; otherwise an exact 64-bit scalar loop (same
+// coverage). `depth` may be null (no test, no write).
 void fill_triangle(canvas_t &canvas, zbuffer *depth, const screen_vertex v[3],
                    const float intensity[3], depth_func test, bool depth_write, pixel_rect clip);
 
@@ -244,8 +246,9 @@ struct frame_stats {
 // Owns every reusable buffer (depth, transformed vertices, triangle setups, the
 // translucent queue) and a worker pool of threads − 1 threads created once. A frame:
 //   begin_frame(canvas) → draw(...)* → end_frame().
-// The canvas is split into horizontal bands, one per thread; each band sees the triangles
-// in submission order, so the image is bit-identical for any thread count.
+// The canvas is split into horizontal 32-row bands; each thread owns blocks of bands, sets up
+// the triangles that reach them and draws them in submission order, so the image (and the
+// stats) are identical for any thread count.
 // No allocation per frame once buffers have grown to the scene's size.
 class render_context {
 public:
