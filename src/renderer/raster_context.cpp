@@ -124,14 +124,15 @@ private:
     std::atomic<bool> stop_{false};
 };
 
-// A transformed vertex.
+// A transformed vertex: what the triangle walk reads, 20 bytes (the clip-space position,
+// which only clipping needs, is kept in an array of its own, so that the walk's vertex
+// reads and the transform's writes are 2.6× smaller).
 struct xvertex {
-    vec4_t clip;
-    screen_vertex screen;  // valid when outcode has no CLIP_NEAR bit (w > 0)
-    float shade;           // Gouraud intensity (or 0)
-    unsigned outcode;
-    bool snapped;          // screen position usable; snapped_x/y hold it in 1/16 px
-    std::int32_t snapped_x, snapped_y;
+    std::int32_t snapped_x, snapped_y;  // screen position in 1/16 px, valid when `snapped`
+    float depth;                        // window depth 0.5·z/w + 0.5, valid when outcode has no CLIP_NEAR bit
+    float shade;                        // Gouraud intensity (or 0)
+    std::uint8_t outcode;
+    bool snapped;                       // screen position usable (snap_vertex succeeded)
 };
 
 // Per-vertex attributes of the generic (per-pixel) path, in clip_vertex::attr order.
@@ -206,7 +207,8 @@ inline void unit_or_zero_x4(__m128 &x, __m128 &y, __m128 &z) {
 // The position part of transform() for four vertices: clip = M·p, outcode, screen position
 // and snap, lane by lane with the scalar code's float operations in the same order (mul,
 // clip_outcode, to_screen, detail::snap_vertex), so every field gets the same bits.
-void project_x4(const mat4_t &m, const vec3_t *positions, float guard, float half_w, float half_h, xvertex *out) {
+void project_x4(const mat4_t &m, const vec3_t *positions, float guard, float half_w, float half_h, xvertex *out,
+                vec4_t *out_clip) {
     const __m128 px = _mm_setr_ps(positions[0].x, positions[1].x, positions[2].x, positions[3].x);
     const __m128 py = _mm_setr_ps(positions[0].y, positions[1].y, positions[2].y, positions[3].y);
     const __m128 pz = _mm_setr_ps(positions[0].z, positions[1].z, positions[2].z, positions[3].z);
@@ -232,8 +234,8 @@ void project_x4(const mat4_t &m, const vec3_t *positions, float guard, float hal
     const __m128 one = _mm_set1_ps(1.0f), half = _mm_set1_ps(0.5f);
     __m128 sx = _mm_mul_ps(_mm_add_ps(_mm_mul_ps(x, inv_w), one), _mm_set1_ps(half_w));
     __m128 sy = _mm_mul_ps(_mm_sub_ps(one, _mm_mul_ps(y, inv_w)), _mm_set1_ps(half_h));
-    __m128 sz = _mm_add_ps(_mm_mul_ps(_mm_mul_ps(half, z), inv_w), half);
-    __m128 sw = inv_w;
+    alignas(16) float depth[4];
+    _mm_store_ps(depth, _mm_add_ps(_mm_mul_ps(_mm_mul_ps(half, z), inv_w), half));
     // snap_vertex: usable when |x|, |y| ≤ RASTER_MAX_COORD (false for NaN and ±∞ too).
     const __m128 abs_mask = _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff)), limit = _mm_set1_ps(RASTER_MAX_COORD);
     const int usable = _mm_movemask_ps(_mm_and_ps(_mm_cmple_ps(_mm_and_ps(sx, abs_mask), limit),
@@ -243,20 +245,15 @@ void project_x4(const mat4_t &m, const vec3_t *positions, float guard, float hal
     _mm_store_si128(reinterpret_cast<__m128i *>(snap_x), _mm_cvtps_epi32(_mm_mul_ps(sx, sub)));
     _mm_store_si128(reinterpret_cast<__m128i *>(snap_y), _mm_cvtps_epi32(_mm_mul_ps(sy, sub)));
     _MM_TRANSPOSE4_PS(x, y, z, w);
-    _MM_TRANSPOSE4_PS(sx, sy, sz, sw);
-    const __m128 clip[4] = {x, y, z, w}, screen[4] = {sx, sy, sz, sw};
+    const __m128 clip[4] = {x, y, z, w};
     for (int l = 0; l < 4; ++l) {
         xvertex &v = out[l];
         alignas(16) float c[4];
         _mm_store_ps(c, clip[l]);
-        v.clip = {c[0], c[1], c[2], c[3]};
-        v.outcode = outcode[l];
-        v.snapped = false;
-        if (v.outcode & CLIP_NEAR) continue;
-        _mm_store_ps(c, screen[l]);
-        v.screen = {c[0], c[1], c[2], c[3]};
-        if (!((usable >> l) & 1)) continue;
-        v.snapped = true;
+        out_clip[l] = {c[0], c[1], c[2], c[3]};
+        v.outcode = static_cast<std::uint8_t>(outcode[l]);
+        v.depth = depth[l];
+        v.snapped = !(v.outcode & CLIP_NEAR) && ((usable >> l) & 1);
         v.snapped_x = snap_x[l];
         v.snapped_y = snap_y[l];
     }
@@ -307,6 +304,7 @@ struct render_context::impl {
     // (false sharing) made the two-thread setup slower than one thread's.
     struct alignas(CACHE_LINE) segment {
         std::vector<xvertex> vertices;   // every vertex of the draw, transformed by this thread
+        std::vector<vec4_t> clip;        // their clip-space positions
         std::vector<float> vertex_attr;  // ATTR_COUNT per vertex (generic path only)
         std::vector<detail::fast_triangle> fast;
         std::vector<triangle_edges> wide;
@@ -342,9 +340,9 @@ struct render_context::impl {
     void setup(const raster_mesh &m, const draw_params &p, std::uint32_t state, bool generic, int thread,
                segment &out);
     // Appends a fast triangle and its band bins (skips empty ones).
-    void add_fast(const triangle_edges &t, const screen_vertex v[3], const float shade[3], segment &out) {
+    void add_fast(const triangle_edges &t, const float depth[3], const float shade[3], segment &out) {
         detail::fast_triangle f;
-        if (!detail::make_fast_triangle(t, v, shade, static_cast<std::int32_t>(out.wide.size()), f)) return;
+        if (!detail::make_fast_triangle(t, depth, shade, static_cast<std::int32_t>(out.wide.size()), f)) return;
         if (f.wide >= 0) out.wide.push_back(t);
         bin_fast(f, out);
     }
@@ -365,22 +363,25 @@ void render_context::impl::transform(const raster_mesh &m, const draw_params &p,
                                      segment &out) {
     const std::size_t v0 = 0, v1 = m.positions.size();
     std::vector<xvertex> &vertices = out.vertices;
+    std::vector<vec4_t> &clip = out.clip;
     std::vector<float> &vertex_attr = out.vertex_attr;
     const float half_w = 0.5f * static_cast<float>(target->width), half_h = 0.5f * static_cast<float>(target->height);
     const normal_transform nt = make_normal_transform(p.model);
     const bool gouraud = p.shade == shading::gouraud;
     std::size_t first = v0;
 #ifdef __SSE2__
-    for (; first + 4 <= v1; first += 4) project_x4(mvp, &m.positions[first], guard, half_w, half_h, &vertices[first]);
+    for (; first + 4 <= v1; first += 4)
+        project_x4(mvp, &m.positions[first], guard, half_w, half_h, &vertices[first], &clip[first]);
 #endif
     for (std::size_t i = first; i < v1; ++i) {
         xvertex &x = vertices[i];
-        x.clip = mul(mvp, m.positions[i]);
-        x.outcode = clip_outcode(x.clip, guard);
+        clip[i] = mul(mvp, m.positions[i]);
+        x.outcode = static_cast<std::uint8_t>(clip_outcode(clip[i], guard));
         x.snapped = false;
         if (!(x.outcode & CLIP_NEAR)) {
-            x.screen = to_screen(x.clip, half_w, half_h);
-            x.snapped = detail::snap_vertex(x.screen, x.snapped_x, x.snapped_y);
+            const screen_vertex screen = to_screen(clip[i], half_w, half_h);
+            x.depth = screen.z;
+            x.snapped = detail::snap_vertex(screen, x.snapped_x, x.snapped_y);
         }
     }
 #ifdef __SSE2__
@@ -444,7 +445,8 @@ void render_context::impl::emit(const clip_vertex *poly, int n, const draw_param
             continue;
         }
         const float shade[3] = {c[0]->attr[ATTR_SHADE], c[1]->attr[ATTR_SHADE], c[2]->attr[ATTR_SHADE]};
-        add_fast(t, v, shade, out);
+        const float depth[3] = {v[0].z, v[1].z, v[2].z};
+        add_fast(t, depth, shade, out);
     }
 }
 
@@ -490,10 +492,10 @@ void render_context::impl::setup(const raster_mesh &m, const draw_params &p, std
                 (std::max({Y[0], Y[1], Y[2]}) - RASTER_SUBPIXEL_ONE / 2) >> RASTER_SUBPIXEL_BITS, last_row);
             if (row0 > row1 || !draws_rows(thread, static_cast<int>(row0), static_cast<int>(row1))) continue;
             const bool counts = band_owner[band_of(static_cast<int>(row0))] == thread;
-            const screen_vertex v[3] = {a.screen, b.screen, c.screen};
+            const float depth[3] = {a.depth, b.depth, c.depth};
             const float shade[3] = {flat ? flat_shade : a.shade, flat ? flat_shade : b.shade, flat ? flat_shade : c.shade};
             detail::fast_triangle f;
-            const detail::fast_setup verdict = detail::setup_fast_triangle(X, Y, area2, full, v, shade, f);
+            const detail::fast_setup verdict = detail::setup_fast_triangle(X, Y, area2, full, depth, shade, f);
             if (verdict == detail::fast_setup::ready) {
                 out.stats.rasterized += counts;
                 bin_fast(f, out);
@@ -501,14 +503,14 @@ void render_context::impl::setup(const raster_mesh &m, const draw_params &p, std
                 const triangle_edges t = detail::triangle_setup_snapped(X, Y, full, p.cull);
                 if (!t.valid) continue;
                 out.stats.rasterized += counts;
-                add_fast(t, v, shade, out);
+                add_fast(t, depth, shade, out);
             }
             continue;
         }
         clip_vertex in[3];
         for (int j = 0; j < 3; ++j) {
             const xvertex &x = vertices[tri[j]];
-            in[j].position = x.clip;
+            in[j].position = out.clip[tri[j]];
             in[j].attr.fill(0.0f);
             if (generic)
                 for (int s = 0; s < ATTR_COUNT; ++s) in[j].attr[s] = vertex_attr[tri[j] * ATTR_COUNT + s];
@@ -610,7 +612,7 @@ void render_context::draw(const raster_mesh &mesh, const draw_params &params) {
     const int n = s.pool.size();
     for (int t = 0; t < n; ++t) {
         impl::segment &seg = s.segments[t];
-        if (seg.vertices.size() < nv) seg.vertices.resize(nv);
+        if (seg.vertices.size() < nv) seg.vertices.resize(nv), seg.clip.resize(nv);
         if (generic && seg.vertex_attr.size() < nv * ATTR_COUNT) seg.vertex_attr.resize(nv * ATTR_COUNT);
     }
     // One phase: each thread transforms every vertex into its own segment (repeating that

@@ -162,9 +162,8 @@ inline void set_crossing(std::int64_t e0, std::int64_t a, std::int64_t b, int &l
 
 // The depth and intensity planes at pixel (out.min_x, out.min_y) through the snapped
 // vertices (x, y in px).
-inline void set_planes(const double x[3], const double y[3], const screen_vertex v[3], const float intensity[3],
+inline void set_planes(const double x[3], const double y[3], const float depth[3], const float intensity[3],
                        fast_triangle &out) {
-    const float depth[3] = {v[0].z, v[1].z, v[2].z};
     const plane_geometry g = make_plane_geometry(x, y, out.min_x, out.min_y);
     const plane zp = attribute_plane(g, depth);
     const plane ip = attribute_plane(g, intensity);
@@ -178,7 +177,7 @@ inline void set_planes(const double x[3], const double y[3], const screen_vertex
 
 }  // namespace
 
-bool make_fast_triangle(const triangle_edges &t, const screen_vertex v[3], const float intensity[3],
+bool make_fast_triangle(const triangle_edges &t, const float depth[3], const float intensity[3],
                         std::int32_t wide_index, fast_triangle &out) {
     if (!t.valid) return false;
     out.min_x = t.min_x;
@@ -195,12 +194,12 @@ bool make_fast_triangle(const triangle_edges &t, const screen_vertex v[3], const
     int left = 0, right = 1;
     for (int k = 0; k < 3 && fits; ++k)
         if (t.a[k] != 0) set_crossing(t.c[k] + t.a[k] * out.min_x + t.b[k] * out.min_y, t.a[k], t.b[k], left, right, out);
-    set_planes(t.x, t.y, v, intensity, out);
+    set_planes(t.x, t.y, depth, intensity, out);
     return true;
 }
 
 fast_setup setup_fast_triangle(const std::int32_t X[3], const std::int32_t Y[3], std::int64_t area2, pixel_rect clip,
-                               const screen_vertex v[3], const float intensity[3], fast_triangle &out) {
+                               const float depth[3], const float intensity[3], fast_triangle &out) {
     const std::int32_t min_X = std::min(std::min(X[0], X[1]), X[2]), max_X = std::max(std::max(X[0], X[1]), X[2]);
     const std::int32_t min_Y = std::min(std::min(Y[0], Y[1]), Y[2]), max_Y = std::max(std::max(Y[0], Y[1]), Y[2]);
     if (max_X - min_X >= FAST_SPAN_LIMIT || max_Y - min_Y >= FAST_SPAN_LIMIT) return fast_setup::wide;
@@ -239,7 +238,7 @@ fast_setup setup_fast_triangle(const std::int32_t X[3], const std::int32_t Y[3],
         x[k] = static_cast<double>(X[k]) / RASTER_SUBPIXEL_ONE;
         y[k] = static_cast<double>(Y[k]) / RASTER_SUBPIXEL_ONE;
     }
-    set_planes(x, y, v, intensity, out);
+    set_planes(x, y, depth, intensity, out);
     return fast_setup::ready;
 }
 
@@ -367,9 +366,8 @@ void fill_rows_sse2(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bo
 // mispredict on small triangles). Needs min_x + 4·groups ≤ canvas width.
 constexpr int NARROW_WIDTH = 16;
 
-template <depth_func Test, bool HasDepth>
-void fill_rows_narrow(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, int groups, bool depth_write, int y0,
-                      int y1) {
+template <depth_func Test, bool HasDepth, int Groups>
+void fill_rows_narrow(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bool depth_write, int y0, int y1) {
     const __m128i lane = _mm_set_epi32(3, 2, 1, 0), four = _mm_set1_epi32(4);
     const __m128 lane_f = _mm_set_ps(3.0f, 2.0f, 1.0f, 0.0f);
     const __m128 zoff = _mm_mul_ps(_mm_set1_ps(f.zdx), lane_f), ioff = _mm_mul_ps(_mm_set1_ps(f.idx), lane_f);
@@ -389,7 +387,7 @@ void fill_rows_narrow(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, 
         float *color = canvas.pixels[y] + min_x;
         float *zrow = HasDepth ? depth->row(y) + min_x : nullptr;
         __m128i column = lane;
-        for (int g = 0; g < groups; ++g, column = _mm_add_epi32(column, four), z = _mm_add_ps(z, zstep),
+        for (int g = 0; g < Groups; ++g, column = _mm_add_epi32(column, four), z = _mm_add_ps(z, zstep),
                  in = _mm_add_ps(in, istep)) {
             __m128 mask = _mm_castsi128_ps(_mm_and_si128(_mm_cmpgt_epi32(column, before), _mm_cmplt_epi32(column, after)));
             if constexpr (HasDepth) {
@@ -406,9 +404,18 @@ void fill_rows_narrow(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, 
 template <depth_func Test, bool HasDepth>
 void fill_rows_sse2_any(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bool depth_write, int y0, int y1) {
     const int groups = (f.max_x - f.min_x + 4) / 4;  // ⌈bounding-box width / 4⌉
-    if (f.max_x - f.min_x < NARROW_WIDTH && f.min_x + 4 * groups <= canvas.width)
-        fill_rows_narrow<Test, HasDepth>(canvas, depth, f, groups, depth_write, y0, y1);
-    else fill_rows_sse2<Test, HasDepth>(canvas, depth, f, depth_write, y0, y1);
+    static_assert(NARROW_WIDTH == 16, "one case per group count below");
+    if (f.max_x - f.min_x < NARROW_WIDTH && f.min_x + 4 * groups <= canvas.width) {
+        // The group count as a constant: the group loop is unrolled, so no per-row loop exit
+        // to mispredict when consecutive triangles have different widths.
+        switch (groups) {
+            case 1: return fill_rows_narrow<Test, HasDepth, 1>(canvas, depth, f, depth_write, y0, y1);
+            case 2: return fill_rows_narrow<Test, HasDepth, 2>(canvas, depth, f, depth_write, y0, y1);
+            case 3: return fill_rows_narrow<Test, HasDepth, 3>(canvas, depth, f, depth_write, y0, y1);
+            default: return fill_rows_narrow<Test, HasDepth, 4>(canvas, depth, f, depth_write, y0, y1);
+        }
+    }
+    fill_rows_sse2<Test, HasDepth>(canvas, depth, f, depth_write, y0, y1);
 }
 
 template <bool HasDepth>
@@ -486,7 +493,8 @@ void fill_triangle(canvas_t &canvas, zbuffer *depth, const screen_vertex v[3], c
     clip.y1 = std::min(clip.y1, canvas.height);
     const triangle_edges t = triangle_setup(v[0], v[1], v[2], clip);
     detail::fast_triangle f;
-    if (!detail::make_fast_triangle(t, v, intensity, 0, f)) return;
+    const float depth_z[3] = {v[0].z, v[1].z, v[2].z};
+    if (!detail::make_fast_triangle(t, depth_z, intensity, 0, f)) return;
     detail::fill_fast_rows(canvas, depth, f, &t, test, depth_write, f.min_y, f.max_y + 1);
 }
 

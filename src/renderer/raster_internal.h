@@ -114,10 +114,10 @@ private:
     static constexpr double K = 1 << 20;
 };
 
-// Builds a fast_triangle from already computed edges (t.valid) and per-vertex depth and
+// Builds a fast_triangle from already computed edges (t.valid) and per-vertex window depth and
 // intensity. Returns false when the bounds are empty. When the triangle is too large for
 // 32-bit edges, sets `wide` to wide_index (the caller keeps `t` at that index).
-bool make_fast_triangle(const triangle_edges &t, const screen_vertex v[3], const float intensity[3],
+bool make_fast_triangle(const triangle_edges &t, const float depth[3], const float intensity[3],
                         std::int32_t wide_index, fast_triangle &out);
 
 // setup_fast_triangle's verdict on one snapped triangle.
@@ -131,7 +131,7 @@ enum class fast_setup {
 // nonzero signed area area2 (snapped_area2), without building the 64-bit triangle_edges:
 // the same fast_triangle as make_fast_triangle(triangle_setup_snapped(X, Y, clip, ·), …).
 fast_setup setup_fast_triangle(const std::int32_t X[3], const std::int32_t Y[3], std::int64_t area2, pixel_rect clip,
-                               const screen_vertex v[3], const float intensity[3], fast_triangle &out);
+                               const float depth[3], const float intensity[3], fast_triangle &out);
 
 // Draws rows [y0, y1) ∩ [min_y, max_y] of the triangle. `wide_edges` is the triangle's
 // 64-bit edges when f.wide ≥ 0 (ignored otherwise).
