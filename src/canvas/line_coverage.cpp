@@ -27,7 +27,6 @@ namespace tiny3d {
 namespace {
 
 using detail::clip_half_plane;
-using detail::point2;
 using detail::polygon_disc_area;
 using detail::signed_area;
 using detail::small_polygon;
@@ -158,31 +157,29 @@ private:
 #endif
 };
 
-// The stroke in a local frame: origin A, unit direction (dx, dy), normal (−dy, dx),
-// length L, half-width h; round caps at A and/or B.
-template <class T>
+// The reference's stroke in a local frame: origin A, unit direction (dx, dy), normal
+// (−dy, dx), length L, half-width h; round caps at A and/or B.
 struct stroke_frame {
-    T dx, dy, length, half;
+    double dx, dy, length, half;
     bool cap_a, cap_b;
 
     // Exact area of the convex polygon `sq` (coordinates relative to A) inside the stroke:
-    // the rectangle's four half-planes, then each cap's disc beyond its end. The plain
-    // form, used by the reference.
-    T area(const small_polygon<T> &sq) const {
-        const T nx = -dy, ny = dx;
-        small_polygon<T> body = clip_half_plane(sq, nx, ny, half);
+    // the rectangle's four half-planes, then each cap's disc beyond its end.
+    double area(const small_polygon<double> &sq) const {
+        const double nx = -dy, ny = dx;
+        small_polygon<double> body = clip_half_plane(sq, nx, ny, half);
         body = clip_half_plane(body, -nx, -ny, half);
-        body = clip_half_plane(body, -dx, -dy, T(0));
+        body = clip_half_plane(body, -dx, -dy, 0.0);
         body = clip_half_plane(body, dx, dy, length);
-        T total = std::fabs(signed_area(body));
-        if (cap_a) total += polygon_disc_area(clip_half_plane(sq, dx, dy, T(0)), T(0), T(0), half);
+        double total = std::fabs(signed_area(body));
+        if (cap_a) total += polygon_disc_area(clip_half_plane(sq, dx, dy, 0.0), 0.0, 0.0, half);
         if (cap_b)
             total += polygon_disc_area(clip_half_plane(sq, -dx, -dy, -length), dx * length, dy * length, half);
         return total;
     }
 
-    static small_polygon<T> square(T x, T y) {
-        small_polygon<T> sq;
+    static small_polygon<double> square(double x, double y) {
+        small_polygon<double> sq;
         sq.n = 4;
         sq.v[0] = {x, y};
         sq.v[1] = {x + 1, y};
@@ -190,7 +187,6 @@ struct stroke_frame {
         sq.v[3] = {x, y + 1};
         return sq;
     }
-
 };
 
 // Direction, length and normal of a segment, with a point treated as direction +x.
@@ -448,9 +444,9 @@ double line_coverage_reference_at(int px, int py, double x0, double y0, double x
                               ? std::max(0.0, (clip.x1 - clip.x0) * axes.dx + (clip.y1 - clip.y0) * axes.dy)
                               : axes.length;
     const bool round = cap == line_cap::round;
-    const stroke_frame<double> frame{axes.dx, axes.dy, length, h, round && !clip.start_clipped,
+    const stroke_frame frame{axes.dx, axes.dy, length, h, round && !clip.start_clipped,
                                      round && !clip.end_clipped};
-    return std::min(frame.area(stroke_frame<double>::square(px - clip.x0, py - clip.y0)), 1.0);
+    return std::min(frame.area(stroke_frame::square(px - clip.x0, py - clip.y0)), 1.0);
 }
 
 void line_coverage_reference(std::vector<double> &coverage, int width, int height, double x0, double y0,
