@@ -224,11 +224,6 @@ std::pair<int, int> touched_cells(double lo, double hi, int size) {
 // A cell index (a floor or ceil already taken) clamped to [−1, size]: safe to convert.
 int clamp_cell(double cell, int size) { return int(std::clamp(cell, -1.0, double(size))); }
 
-// floor(x) for −kFloorOffset < x < 2^31 − kFloorOffset, by truncating a positive number
-// (baseline x86-64 has no rounding instruction; std::floor is a libm call there).
-constexpr double kFloorOffset = 1 << 24;
-int floor_small(double x) { return int(x + kFloorOffset) - int(kFloorOffset); }
-
 // Distance from (px, py) to the stroke's centre segment, in the frame of `axes` from (x0, y0).
 double distance_to_segment(double px, double py, double x0, double y0, const segment_axes &axes) {
     const double rx = px - x0, ry = py - y0;
@@ -340,7 +335,7 @@ void draw_line_coverage(canvas_t *canvas, float x0, float y0, float x1, float y1
         // Step from column to column (a DDA): `first` = the window's first row, `frac` the
         // window's lower bound above it, u the signed distance of pixel (i, first).
         const double lower = cay + (body_first - cax) * slope + span_lo;
-        int first = groups > 0 ? floor_small(lower) : -1;  // then |lower| ≤ canvas + 2·margin
+        int first = groups > 0 ? detail::floor_to_int(lower) : -1;  // then |lower| ≤ canvas + 2·margin
         double frac = lower - first;
         double u = (body_first + 0.5 - cax) * nx + (first + 0.5 - cay) * ny;
         for (int i = body_first; i <= body_last; ++i) {

@@ -7,17 +7,11 @@
 #include <cmath>
 
 #include "canvas.h"
+#include "line_clip.h"
 
 namespace tiny3d::detail {
 
 inline float clamp01(float v) { return v < 0.0f ? 0.0f : (v > 1.0f ? 1.0f : v); }
-
-// floor(v) for a float whose truncation fits an int: truncate, then step down for
-// negative non-integers (exact, unlike adding an offset, which can round).
-inline int floor_to_int(float v) {
-    const int t = static_cast<int>(v);
-    return t - (v < float(t) ? 1 : 0);
-}
 
 // Adds intensity·w to the 2×2 pixels around (x, y) with bilinear weights w (pixel centres
 // at i + 0.5), each clamped to 0..1; off-canvas parts and non-finite input are ignored.
