@@ -70,6 +70,21 @@ int main(int argc, char **argv) {
         double small3dlib_ms, llvmpipe_ms;
     };
     std::vector<workload> loads;
+    // Frame time against triangle count: ours (one thread, levels 3–7) and the published
+    // figures, log-log, so equal slopes mean equal growth.
+    tiny3d::chart_spec scaling;
+    scaling.title = "Scene S: frame time vs triangle count";
+    scaling.x_title = "triangles in the mesh";
+    scaling.y_title = "ms per frame (median; bar: min-max)";
+    auto add_point = [&](double triangles, const bench::timing &t, const std::string &label) {
+        tiny3d::chart_point p;
+        p.x = triangles;
+        p.y = t.median;
+        p.y_lo = t.min;
+        p.y_hi = t.max;
+        p.label = label;
+        scaling.points.push_back(std::move(p));
+    };
     loads.push_back({"icosphere L6 (81,920 tris)", tiny3d::make_icosphere(6), 8.65, 10.9});
     loads.push_back({"icosphere L5 (20,480 tris)", tiny3d::make_icosphere(5), 4.35, 6.0});
     loads.push_back({"torus knot (3,696 tris)", tiny3d::make_torus_knot(2, 3, 154, 12), 1.82, 2.2});
@@ -78,6 +93,11 @@ int main(int argc, char **argv) {
         const bench::timing t1 = time_frames(s, 1, *one, frames);
         const bench::timing t2 = time_frames(s, 2, *two, frames);
         const double diff = differing_fraction(*one, *two);
+        const double triangles = static_cast<double>(s.mesh.triangles.size());
+        add_point(triangles, {w.small3dlib_ms, w.small3dlib_ms, w.small3dlib_ms}, w.name + " small3dlib (published)");
+        add_point(triangles, {w.llvmpipe_ms, w.llvmpipe_ms, w.llvmpipe_ms}, w.name + " llvmpipe (published)");
+        // (our icospheres are the levels 3–7 series below)
+        if (w.name.rfind("icosphere", 0) != 0) add_point(triangles, t1, w.name + " libtiny3d 1 thread");
         rows.push_back({"frame", w.name + " small3dlib (published)", "faithful", "ms/frame",
                         {w.small3dlib_ms, w.small3dlib_ms, w.small3dlib_ms}, NAN, NAN, "px fraction",
                         "BENCH_SCENE.md figure, not measured here"});
@@ -94,9 +114,18 @@ int main(int argc, char **argv) {
         scene s = make_scene(tiny3d::make_icosphere(level));
         const bench::timing t = time_frames(s, 1, *one, o.quick ? 3 : (level == 7 ? 20 : TIMED_FRAMES));
         std::printf("  level %d  %7zu tris  %8.3f ms\n", level, s.mesh.triangles.size(), t.median);
+        add_point(static_cast<double>(s.mesh.triangles.size()), t, "icosphere L" + std::to_string(level) + " libtiny3d 1 thread");
         rows.push_back({"frame", "icosphere L" + std::to_string(level) + " 1 thread (" +
                                      std::to_string(s.mesh.triangles.size()) + " tris)",
                         "other", "ms/frame", t, NAN, NAN, "px fraction", "scaling series"});
     }
-    return bench::report(o, "frame", rows, "Scene S: ms per frame (1024^2, Gouraud, depth, culling)");
+    const std::string scaling_path = o.out_dir + "/frame_scaling.pgm";
+    const int result = bench::report(o, "frame", rows, "Scene S: ms per frame (1024^2, Gouraud, depth, culling)");
+    if (result != 0) return result;
+    if (const tiny3d::status st = bench::write_chart(scaling_path, scaling); !st) {
+        std::fprintf(stderr, "bench frame: %s\n", st.message().c_str());
+        return 1;
+    }
+    std::printf("wrote %s\n", scaling_path.c_str());
+    return 0;
 }

@@ -126,12 +126,16 @@ tiny3d::chart_spec chart_of(const std::vector<row> &rows, const std::string &tit
     return spec;
 }
 
-tiny3d::status write_chart(const std::string &path, const std::vector<row> &rows, const std::string &title) {
+tiny3d::status write_chart(const std::string &path, const tiny3d::chart_spec &spec) {
     auto canvas = tiny3d::make_canvas(chart_width, chart_height);
     if (!canvas) return canvas.to_status();
-    const auto layout = tiny3d::draw_chart(**canvas, chart_of(rows, title));
+    const auto layout = tiny3d::draw_chart(**canvas, spec);
     if (!layout) return layout.to_status();
     return tiny3d::save_pgm(**canvas, path);
+}
+
+tiny3d::status write_chart(const std::string &path, const std::vector<row> &rows, const std::string &title) {
+    return write_chart(path, chart_of(rows, title));
 }
 
 // The warm-up and timed runs of one measure_ns call. Kept out of line under its own

@@ -108,6 +108,9 @@ std::string table_text(const std::vector<row> &rows);
 tiny3d::chart_spec chart_of(const std::vector<row> &rows, const std::string &title);
 // Draws chart_of(rows, title) on an 800 × 500 canvas and saves it as PGM at `path`.
 tiny3d::status write_chart(const std::string &path, const std::vector<row> &rows, const std::string &title);
+// Draws any chart on the same 800 × 500 canvas and saves it as PGM at `path` (for a
+// family's extra charts, e.g. frame time against triangle count).
+tiny3d::status write_chart(const std::string &path, const tiny3d::chart_spec &spec);
 // Reads csv_text's format back (the ratio column is recomputed, not read). Errors name
 // `path` and the 1-based line: wrong header, wrong field count, a number that is not one.
 tiny3d::result<std::vector<row>> parse_csv(const std::string &text, const std::string &path);
