@@ -25,6 +25,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <span>
 #include <string>
@@ -210,6 +211,49 @@ struct raster_mesh {
 // range or the normals count is wrong.
 result<raster_mesh> make_raster_mesh(const mesh &m, std::span<const vec3_t> vertex_normals);
 
+// ---- cluster culling (optional, precomputed per mesh) ------------------------------------
+
+// Bounds of one chunk of CONSECUTIVE triangles of a raster_mesh (the order is the mesh's:
+// nothing is reordered), in object space, double precision:
+//  * a bounding sphere of the chunk's vertices;
+//  * a normal cone (Hill's / meshoptimizer's cone culling): every unit face normal n_i has
+//    n_i · axis ≥ cone_cos (cone_cos > 0), and the apex lies on or behind every triangle's
+//    plane: n_i · (p_i − apex) ≥ apex_margin (≈ 0, minus a slack for rounding) for a vertex
+//    p_i of triangle i;
+//  * the triangles' smallest double area and largest edge-to-area ratio, which bound how much
+//    snapping to 1/16 px can change a projected triangle's area relative to the area itself.
+// With those, for an eye e, every triangle's distance n_i · (p_i − e) is at least
+// |v| · cos(α + θ) + apex_margin, v = apex − e, θ = angle(v, axis), α = the cone's half angle.
+struct raster_cluster {
+    std::uint32_t first = 0, count = 0;   // triangles [first, first + count)
+    double center[3] = {0, 0, 0};
+    double radius = 0;                    // +∞ when a vertex is not finite
+    double axis[3] = {0, 0, 1};
+    double cone_cos = 0, cone_sin = 1;    // of the half angle α (cone_cos rounded down, sin up)
+    double apex[3] = {0, 0, 0};
+    double apex_margin = 0;
+    double min_double_area = 0;           // smallest |N| = |(p1 − p0) × (p2 − p0)|, object units²
+    double edge_ratio = std::numeric_limits<double>::infinity();       // largest (|p1 − p0| + |p2 − p0|) / |N|, 1 / object units
+    bool cone_valid = false;              // false: wider than a hemisphere, degenerate or not finite
+};
+
+struct raster_clusters {
+    std::size_t vertex_count = 0, triangle_count = 0;  // of the mesh they were built from
+    std::vector<raster_cluster> clusters;              // in triangle order, covering every triangle
+};
+
+inline constexpr int RASTER_CLUSTER_TRIANGLES = 64;  // default chunk size (triangles)
+
+// Builds the clusters of `m` (chunks of `triangles_per_cluster` consecutive triangles; the
+// last may be shorter). O(triangles), allocates; build once, and again whenever the mesh's
+// positions or triangles change (draw() ignores clusters whose vertex or triangle count
+// differs from the mesh's, but cannot detect moved positions: stale clusters would cull
+// wrongly). Meshes whose consecutive triangles are spatially coherent (the subdivided
+// icosphere, grids) give narrow cones and small spheres; others still draw correctly,
+// only fewer chunks are skipped. Error when triangles_per_cluster < 1 or an index is out
+// of range.
+result<raster_clusters> make_raster_clusters(const raster_mesh &m, int triangles_per_cluster = RASTER_CLUSTER_TRIANGLES);
+
 enum class shading { flat, gouraud, phong };
 
 // What one draw call does. Shading (per the quality level), with the lighting module's
@@ -233,6 +277,14 @@ struct draw_params {
     texture_filter filter = texture_filter::bilinear;
     texture_wrap wrap = texture_wrap::repeat;
     bool perspective_correct = true;               // uv / normal interpolation
+    // Optional, from make_raster_clusters(mesh); must outlive the draw call. Used for opaque
+    // fast-path draws (flat or Gouraud, no texture): before any per-triangle work, a chunk
+    // whose every triangle is inside the guard band and provably back-facing after
+    // snapping (cull_mode::back) is skipped and counted in culled_backface, and a thread
+    // skips a chunk whose projected sphere misses its bands. The image and the stats
+    // (except backface_by_cluster) are bit-identical to drawing without clusters
+    // (documentation/raster.md, "Cluster culling").
+    const raster_clusters *clusters = nullptr;
 };
 
 struct frame_stats {
@@ -241,6 +293,7 @@ struct frame_stats {
     std::size_t culled_backface = 0;
     std::size_t clipped = 0;            // triangles that needed Sutherland–Hodgman
     std::size_t rasterized = 0;         // (sub-)triangles sent to the fill
+    std::size_t backface_by_cluster = 0;  // of culled_backface: in chunks skipped whole (clusters)
 };
 
 // Owns every reusable buffer (depth, transformed vertices, triangle setups, the

@@ -338,7 +338,9 @@ struct render_context::impl {
 
     void transform(const raster_mesh &m, const draw_params &p, const mat4_t &mvp, bool generic, segment &out);
     void setup(const raster_mesh &m, const draw_params &p, std::uint32_t state, bool generic, int thread,
-               segment &out);
+               const detail::cluster_view *clusters, segment &out);
+    void setup_range(const raster_mesh &m, const draw_params &p, std::uint32_t state, bool generic, int thread,
+                     bool counts_all, std::size_t first, std::size_t last, segment &out);
     // Appends a fast triangle and its band bins (skips empty ones).
     void add_fast(const triangle_edges &t, const float depth[3], const float shade[3], segment &out) {
         detail::fast_triangle f;
@@ -453,16 +455,45 @@ void render_context::impl::emit(const clip_vertex *poly, int n, const draw_param
 // Thread `thread` walks every triangle but sets up only the fast ones that reach its bands
 // (and every clipped or per-pixel-path one: rare, and cheap to repeat); each triangle is
 // counted in the stats by one thread only (thread 0, or for fast triangles the owner of the
-// first row's band).
+// first row's band). With clusters (`view` not null), whole chunks are decided first: a
+// chunk proven back-facing is skipped by every thread and counted by one; a chunk inside the
+// guard band is walked only by the threads drawing a band among its rows, and its culled
+// triangles are counted by the owner of its first row's band (thread 0 when it has no row
+// on the target) — the same counts as walking every triangle.
 void render_context::impl::setup(const raster_mesh &m, const draw_params &p, std::uint32_t state, bool generic,
-                                 int thread, segment &out) {
+                                 int thread, const detail::cluster_view *view, segment &out) {
+    if (!view) {
+        setup_range(m, p, state, generic, thread, thread == 0, 0, m.triangles.size(), out);
+        return;
+    }
+    const std::size_t count = m.triangles.size();
+    for (const raster_cluster &c : p.clusters->clusters) {
+        const detail::cluster_verdict v = detail::classify_cluster(*view, c);
+        const bool on_target = v.inside && v.row0 <= v.row1;
+        const int counter = on_target ? band_owner[band_of(v.row0)] : 0;
+        const std::size_t first = std::min<std::size_t>(c.first, count), last = std::min<std::size_t>(first + c.count, count);
+        if (v.back) {
+            if (thread == counter) {
+                out.stats.culled_backface += last - first;
+                out.stats.backface_by_cluster += last - first;
+            }
+            continue;
+        }
+        if (v.inside && thread != counter && !(on_target && draws_rows(thread, v.row0, v.row1))) continue;
+        setup_range(m, p, state, generic, thread, thread == counter, first, last, out);
+    }
+}
+
+// setup() for triangles [first, last); `counts_all`: this thread counts culled and clipped ones.
+void render_context::impl::setup_range(const raster_mesh &m, const draw_params &p, std::uint32_t state, bool generic,
+                                       int thread, bool counts_all, std::size_t first, std::size_t last,
+                                       segment &out) {
     const bool flat = p.shade == shading::flat;
-    const bool counts_all = thread == 0;
     const std::vector<xvertex> &vertices = out.vertices;
     const std::vector<float> &vertex_attr = out.vertex_attr;
     const pixel_rect full{0, 0, target->width, target->height};
     const std::int64_t last_row = target->height - 1;
-    for (std::size_t i = 0; i < m.triangles.size(); ++i) {
+    for (std::size_t i = first; i < last; ++i) {
         const std::array<std::uint32_t, 3> &tri = m.triangles[i];
         const xvertex &a = vertices[tri[0]], &b = vertices[tri[1]], &c = vertices[tri[2]];
         if (a.outcode & b.outcode & c.outcode) continue;  // all outside one plane
@@ -610,6 +641,13 @@ void render_context::draw(const raster_mesh &mesh, const draw_params &params) {
     s.states.push_back({params});
     const std::size_t nv = mesh.positions.size();
     const int n = s.pool.size();
+    // Cluster culling for the fast path, when the clusters were built from this mesh.
+    const raster_clusters *clusters = params.clusters;
+    const bool use_clusters = clusters && !generic && clusters->vertex_count == nv &&
+                              clusters->triangle_count == mesh.triangles.size();
+    detail::cluster_view cluster_view{};
+    if (use_clusters) cluster_view = detail::make_cluster_view(mvp, s.target->width, s.target->height, s.guard, params.cull);
+    const detail::cluster_view *view = use_clusters ? &cluster_view : nullptr;
     for (int t = 0; t < n; ++t) {
         impl::segment &seg = s.segments[t];
         if (seg.vertices.size() < nv) seg.vertices.resize(nv), seg.clip.resize(nv);
@@ -626,7 +664,7 @@ void render_context::draw(const raster_mesh &mesh, const draw_params &params) {
         seg.generic.clear();
         seg.stats = {};
         for (int b = 0; b < s.bands(); ++b) seg.bins[b].clear();
-        s.setup(mesh, params, state, generic, t, seg);
+        s.setup(mesh, params, state, generic, t, view, seg);
         for (int band = 0; band < s.bands(); ++band) {
             if (s.band_owner[band] != t) continue;
             const int y0 = s.band_y0(band), y1 = s.band_y0(band + 1);
@@ -652,6 +690,7 @@ void render_context::draw(const raster_mesh &mesh, const draw_params &params) {
         s.stats.culled_backface += st.culled_backface;
         s.stats.clipped += st.clipped;
         s.stats.rasterized += st.rasterized;
+        s.stats.backface_by_cluster += st.backface_by_cluster;
     }
 }
 

@@ -141,6 +141,38 @@ void fill_fast_rows(canvas_t &canvas, zbuffer *depth, const fast_triangle &f,
 // dst[0..count) := value (SSE2 stores when available).
 void fill_floats(float *dst, std::size_t count, float value);
 
+// ---- cluster culling (raster_clusters.cpp) ------------------------------------------------
+
+// What one draw needs to classify chunks (raster_cluster): the MVP rows, the eye and the
+// screen, with the per-draw constants of classify_cluster precomputed.
+struct cluster_view {
+    double row[4][4];         // MVP rows x, y, z, w: row[r][c] (the float matrix, exactly)
+    double abs_row[4][4];     // |row[r][c]|
+    double row_length[4];     // |xyz part of row r|
+    double plane[6][4];       // near z + w, far w − z, x + g·w, g·w − x, y + g·w, g·w − y
+    double plane_length[6];   // |xyz part|
+    double plane_guard[6];    // the plane's w coefficient (1 or g), for its float error
+    int plane_row[6];         // the plane's x, y or z row
+    double eye[3];            // object-space eye position (when cone_usable)
+    double eye_slack;         // rounding allowance for distances to the eye
+    double area_scale;        // hw·hh·|κ|: a triangle's screen double area (px²) is
+                              // area_scale · |N| · n·(p − eye) / (w0·w1·w2)
+    double half_w, half_h;
+    int height;
+    bool cone_usable;         // a perspective eye with front = counter-clockwise, and cull_mode::back
+};
+cluster_view make_cluster_view(const mat4_t &mvp, int width, int height, float guard, cull_mode cull);
+
+struct cluster_verdict {
+    bool inside = false;      // every vertex has outcode 0 (inside near, far and guard band)
+    bool back = false;        // inside, and every triangle's snapped area is nonzero and back-facing
+    int row0 = 0, row1 = -1;  // when inside: every candidate row of every triangle, clamped to
+                              // the target (row0 > row1: none on it)
+};
+// Conservative: `inside` and `back` are claimed only when the float transform and the 1/16 px
+// snapping of render_context cannot make any triangle of the chunk decide otherwise.
+cluster_verdict classify_cluster(const cluster_view &v, const raster_cluster &c);
+
 // Depth comparison as a function, shared by the scalar paths.
 inline bool depth_passes(depth_func test, float fragment, float stored) {
     switch (test) {
