@@ -69,8 +69,11 @@ double clip_orientation(const mesh &m, std::size_t f, const std::vector<vec4_t> 
     return sum;
 }
 
-void draw_segment(canvas_t &canvas, const screen_segment &s, line_method method, float thickness, float ink) {
-    if (method == line_method::coverage) {
+void draw_segment(canvas_t &canvas, const screen_segment &s, line_method method, float thickness, float ink,
+                  const std::optional<line_table> &table) {
+    if (method == line_method::tabulated) {
+        draw_line_tabulated(&canvas, s.x0, s.y0, s.x1, s.y1, *table, ink);
+    } else if (method == line_method::coverage) {
         line_style style;
         style.intensity = ink;
         draw_line_coverage(&canvas, s.x0, s.y0, s.x1, s.y1, thickness, style);
@@ -110,6 +113,12 @@ status render_wireframe(canvas_t &canvas, const mesh &m, const mat4_t &model_vie
     wireframe_stats &st = stats ? *stats : local;
     st = {};
     if (status s = check_inputs(canvas, m, o); !s) return s;
+    if (o.method == line_method::tabulated &&
+        (!ws.line_coverage_table || ws.line_coverage_table->thickness() != o.thickness)) {
+        result<line_table> table = line_table::make(o.thickness);
+        if (!table) return error{"", 0, -1, "render_wireframe: " + table.err().reason};
+        ws.line_coverage_table = std::move(table).value();
+    }
 
     cull_result cull = cull_result::intersecting;
     if (o.frustum_cull) {
@@ -190,7 +199,8 @@ status render_wireframe(canvas_t &canvas, const mesh &m, const mat4_t &model_vie
         else if (!o.edge_intensity.empty()) ink *= o.edge_intensity[d.edge];
         if (o.depth_cue && depth_range > 0.0f) ink *= 1.0f - (1.0f - o.depth_cue_far) * ((d.depth - nearest) / depth_range);
         if (!(ink > 0.0f)) continue;
-        draw_segment(canvas, {d.x0, d.y0, d.x1, d.y1, d.depth}, o.method, o.thickness, std::min(ink, 1.0f));
+        draw_segment(canvas, {d.x0, d.y0, d.x1, d.y1, d.depth}, o.method, o.thickness, std::min(ink, 1.0f),
+                     ws.line_coverage_table);
         ++st.edges_drawn;
     }
     return {};

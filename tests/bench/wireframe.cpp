@@ -3,7 +3,8 @@
 // no depth test; camera at (0, 0, 3), fov 45°, mesh turned 1° about +y per frame) and the
 // soccer ball (90 edges, 1024²), each drawn with
 //   faithful:  the report's draw_line_f (DDA splats) through render_wireframe,
-//   fast:      tiny3d::draw_line_coverage (exact area coverage, "over" combine),
+//   fast:      tiny3d::draw_line_coverage (exact area coverage, "over" combine), and
+//              tiny3d::draw_line_tabulated (the ends interpolated from a line_table),
 //   other:     the fast path plus the report's far-to-near Z-sort, and draw_line_f at the
 //              report's width 1.0,
 //   reference: every edge's exact coverage (line_coverage_reference_at, double) combined
@@ -116,6 +117,7 @@ int main(int argc, char **argv) {
         const variant variants[] = {
             {"faithful draw_line_f w1.5", "faithful", tiny3d::line_method::faithful, kWidth, false},
             {"fast coverage line w1.5", "fast", tiny3d::line_method::coverage, kWidth, false},
+            {"fast tabulated line w1.5", "fast", tiny3d::line_method::tabulated, kWidth, false},
             {"coverage line w1.5 + Z-sort", "other", tiny3d::line_method::coverage, kWidth, true},
             {"faithful draw_line_f w1.0 (report)", "other", tiny3d::line_method::faithful, kReportWidth, false},
             {"pipeline only: transform + clip, no lines", "other", tiny3d::line_method::coverage, kWidth, false, 0.0f},

@@ -1,0 +1,245 @@
+// line_tabulated.cpp — the tabulated thick line (include/canvas.h): the stroke of
+// draw_line_coverage with the pixels near its ends interpolated from a table of the exact
+// end coverage instead of integrated.
+//
+// Frame of an end: origin at the end point, u along the stroke (into it), v across.
+// E(u, v) = area of the pixel (centre at (u, v)) inside the half-infinite stroke that
+// starts at that end. For a stroke A→B of length L:
+//   stroke = K_A ∩ K_B, K_A ∪ K_B = the infinite band |v| ≤ h (when L ≥ h, each cap's disc
+//   lies inside the other half-infinite stroke), so by inclusion–exclusion
+//   coverage = E(u, v) + E(L − u, −v) − band(v)                                        (1)
+// with band(v) the closed-form band area (square_cdf.h). E(u, v) = band(v) once the
+// pixel lies wholly on the stroke's side of the end line (u ≥ √2/2 covers every angle)
+// and 0 beyond the cap's reach (u ≤ −R or |v| ≥ R, R = h + √2/2).
+// Symmetries used by the table: turning the picture by 90° about a pixel centre maps
+// pixels to pixels and keeps (u, v), so only the direction modulo 90° matters; mirroring
+// v → −v turns the direction θ into 90° − θ relative to the grid.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "canvas.h"
+#include "line_clip.h"
+#include "square_cdf.h"
+
+namespace tiny3d {
+namespace {
+
+constexpr double kHalfDiagonal = 0.70710678118654752;
+// Table range along u: beyond kUMax (≥ √2/2) the pixel is on the stroke's side of the end line.
+constexpr double kUMax = 0.7072;
+constexpr double kUStep = 1.0 / 32.0, kVStep = 1.0 / 16.0;
+constexpr int kDirectionSlices = 32;
+// Length of the straight part used to sample a half-infinite stroke (its far end is out
+// of reach of the sampled pixel).
+constexpr double kFarEnd = 64.0;
+
+// The direction (dx, dy) folded into the first quadrant by 90° turns, as the diamond
+// angle q = b / (a + b) ∈ [0, 1] of the folded (a, b).
+double diamond_angle(double dx, double dy) {
+    const double ax = std::fabs(dx), ay = std::fabs(dy);
+    const double b = dx * dy >= 0.0 ? ay : ax;  // quadrants 1, 3: (|dx|, |dy|); 2, 4: (|dy|, |dx|)
+    return b / (ax + ay);
+}
+
+// E(u, v) of one end from the direction slice nearest to the stroke's (bilinear in u, v).
+class end_lookup {
+public:
+    end_lookup(const line_table &table, double q)
+        : values_(table.values.data() + std::size_t(std::lround(std::clamp(q, 0.0, 1.0) * table.slices)) *
+                                            (std::size_t(table.nu) + 1) * (std::size_t(table.nv) + 1)),
+          row_(std::size_t(table.nu) + 1),
+          u_min_(table.u_min),
+          inv_u_(1.0f / table.u_step),
+          inv_v_(1.0f / table.v_step),
+          nu_(table.nu),
+          nv_(float(table.nv)) {}
+
+    // v ≥ 0, u below the table's upper end (√2/2); 0 beyond the cap's reach.
+    float operator()(float u, float v) const {
+        const float fu = (u - u_min_) * inv_u_, fv = v * inv_v_;
+        if (!(fu > 0.0f) || !(fv < nv_)) return 0.0f;
+        const int iu = std::min(int(fu), nu_ - 1), iv = int(fv);
+        const float au = fu - float(iu), av = fv - float(iv);
+        const float *c = values_ + std::size_t(iv) * row_ + std::size_t(iu);
+        const float bottom = c[0] + au * (c[1] - c[0]), top = c[row_] + au * (c[row_ + 1] - c[row_]);
+        return bottom + av * (top - bottom);
+    }
+
+private:
+    const float *values_;
+    std::size_t row_;
+    float u_min_, inv_u_, inv_v_;
+    int nu_;
+    float nv_;
+};
+
+// ceil(v) as an int, v clamped to [lo, hi] first (so ±inf and huge values convert safely).
+int clamped_ceil(double v, double lo, double hi) { return -detail::floor_to_int(-std::clamp(v, lo, hi)); }
+int clamped_floor(double v, double lo, double hi) { return detail::floor_to_int(std::clamp(v, lo, hi)); }
+
+}  // namespace
+
+result<line_table> line_table::make(float thickness, line_cap cap) {
+    if (!std::isfinite(thickness) || !(thickness > 0.0f) || thickness > kMaxThickness)
+        return error{"", 0, -1,
+                     "line_table: thickness must be finite and in (0, " + std::to_string(kMaxThickness) + "] px, got " +
+                         std::to_string(thickness)};
+    line_table t;
+    t.thickness_ = thickness;
+    t.cap_ = cap;
+    const double h = 0.5 * double(thickness), reach = h + kHalfDiagonal;
+    t.reach = float(reach);
+    t.u_min = float(-reach);
+    t.nu = int(std::ceil((kUMax + reach) / kUStep));
+    t.u_step = float((kUMax + reach) / t.nu);
+    t.nv = int(std::ceil(reach / kVStep));
+    t.v_step = float(reach / t.nv);
+    t.slices = kDirectionSlices;
+    t.values.resize(std::size_t(t.slices + 1) * std::size_t(t.nv + 1) * std::size_t(t.nu + 1));
+    // Sample pixel (px, px); the end is placed so that the pixel's centre sits at (u, v).
+    constexpr int px = 8;
+    constexpr double centre = px + 0.5;
+    float *out = t.values.data();
+    for (int s = 0; s <= t.slices; ++s) {
+        const double q = double(s) / t.slices, norm = std::hypot(1.0 - q, q);
+        const double dx = (1.0 - q) / norm, dy = q / norm;  // folded direction (a, b), normal (−b, a)
+        for (int iv = 0; iv <= t.nv; ++iv)
+            for (int iu = 0; iu <= t.nu; ++iu) {
+                const double u = double(t.u_min) + iu * double(t.u_step), v = iv * double(t.v_step);
+                const double ax = centre - u * dx + v * dy, ay = centre - u * dy - v * dx;
+                *out++ = float(line_coverage_reference_at(px, px, ax, ay, ax + kFarEnd * dx, ay + kFarEnd * dy,
+                                                          thickness, cap));
+            }
+    }
+    return t;
+}
+
+void draw_line_tabulated(canvas_t *canvas, float x0, float y0, float x1, float y1, const line_table &table,
+                         float intensity) {
+    if (!canvas || !canvas->data || canvas->width <= 0 || canvas->height <= 0 || table.values.empty()) return;
+    if (!std::isfinite(x0) || !std::isfinite(y0) || !std::isfinite(x1) || !std::isfinite(y1) ||
+        !std::isfinite(intensity) || !(intensity > 0.0f))
+        return;
+    const float ink = std::min(intensity, 1.0f);
+    const double h = 0.5 * double(table.thickness());
+    // Left to right (dx ≥ 0), so u grows along a canvas row.
+    if (x1 < x0 || (x1 == x0 && y1 < y0)) {
+        std::swap(x0, x1);
+        std::swap(y0, y1);
+    }
+    const double full_dx = double(x1) - x0, full_dy = double(y1) - y0;
+    const double full_length = std::hypot(full_dx, full_dy);
+    if (!(full_length >= h) || !std::isfinite(full_length)) {  // (1) needs L ≥ h
+        draw_line_coverage(canvas, x0, y0, x1, y1, table.thickness(), {table.cap(), ink});
+        return;
+    }
+    const double dx = full_dx / full_length, dy = full_dy / full_length;
+    // Clip to the canvas grown by 2R + 2: a clipped end is then so far off the canvas that
+    // no canvas pixel within reach of the stroke lies near it; it gets no cap.
+    const double reach = table.reach, margin = 2.0 * reach + 2.0;
+    const int width = canvas->width, height = canvas->height;
+    detail::clipped_segment clip;
+    if (!detail::clip_segment(x0, y0, x1, y1, -margin, -margin, width + margin, height + margin, clip)) return;
+    const double ax = clip.x0, ay = clip.y0;
+    const double length = std::max(0.0, (clip.x1 - ax) * dx + (clip.y1 - ay) * dy);
+    const bool end_a = !clip.start_clipped, end_b = !clip.end_clipped;
+
+    const double q = diamond_angle(dx, dy);
+    const end_lookup lookup_pos(table, q), lookup_neg(table, 1.0 - q);  // v ≥ 0; v < 0 (mirrored)
+    const detail::square_cdf cdf(-dy, dx);
+    const float hf = float(h), lf = float(length);
+    // A pixel whose centre has u ≥ w_hi lies wholly on the stroke's side of an end line
+    // (w_hi = half the pixel's extent along the stroke): E = band there, exactly.
+    const float umax = cdf.w_hi;
+    const float du = float(dx), dv = float(-dy);
+    const detail::band_writer body(cdf, hf, ink, dv);
+    // One pixel by (1): each end's table where the pixel is near it, else the band.
+    auto draw_pixel = [&](float &pixel, float u, float v) {
+        const float band = cdf.band(v, hf);
+        const float e_a = end_a && u < umax ? (v >= 0.0f ? lookup_pos(u, v) : lookup_neg(u, -v)) : band;
+        const float ub = lf - u;
+        const float e_b = end_b && ub < umax ? (v <= 0.0f ? lookup_pos(ub, -v) : lookup_neg(ub, v)) : band;
+        detail::combine_over(pixel, ink * (e_a + e_b - band));
+    };
+#ifdef __SSE2__
+    // Pixels first .. first + n − 1 of a row (width ≥ 4), 4 at a time: the band for all
+    // four, the tables only for lanes near an end. A group reaching past the row's end is
+    // moved back inside it and its lanes outside the run get coverage 0.
+    const __m128 lanes = _mm_set_ps(3.0f, 2.0f, 1.0f, 0.0f), du4 = _mm_set1_ps(du), dv4 = _mm_set1_ps(dv);
+    const __m128 umax_a = _mm_set1_ps(end_a ? umax : -INFINITY), umax_b = _mm_set1_ps(end_b ? umax : -INFINITY);
+    const __m128 length4 = _mm_set1_ps(lf);
+    auto draw_row4 = [&](float *row, int first, int n, float u0, float v0) {
+        const __m128 count = _mm_set1_ps(float(n));
+        for (int k = 0; k < n; k += 4) {
+            const int start = std::min(first + k, width - 4);
+            const __m128 index = _mm_add_ps(_mm_set1_ps(float(start - first)), lanes);  // in the run
+            const __m128 valid =
+                _mm_and_ps(_mm_cmpge_ps(index, _mm_set1_ps(float(k))), _mm_cmplt_ps(index, count));
+            const __m128 u = _mm_add_ps(_mm_set1_ps(u0), _mm_mul_ps(index, du4));
+            const __m128 v = _mm_add_ps(_mm_set1_ps(v0), _mm_mul_ps(index, dv4));
+            __m128 coverage = body.band4(v);
+            const __m128 near_a = _mm_cmplt_ps(u, umax_a), near_b = _mm_cmplt_ps(_mm_sub_ps(length4, u), umax_b);
+            const int near = _mm_movemask_ps(_mm_and_ps(_mm_or_ps(near_a, near_b), valid));
+            if (near) {
+                alignas(16) float us[4], vs[4], bands[4];
+                _mm_store_ps(us, u);
+                _mm_store_ps(vs, v);
+                _mm_store_ps(bands, coverage);
+                const int mask_a = _mm_movemask_ps(near_a), mask_b = _mm_movemask_ps(near_b);
+                for (int l = 0; l < 4; ++l) {
+                    if (!(near >> l & 1)) continue;
+                    const float uu = us[l], vv = vs[l], ub = lf - uu;
+                    const float e_a = mask_a >> l & 1 ? (vv >= 0.0f ? lookup_pos(uu, vv) : lookup_neg(uu, -vv)) : bands[l];
+                    const float e_b = mask_b >> l & 1 ? (vv <= 0.0f ? lookup_pos(ub, -vv) : lookup_neg(ub, vv)) : bands[l];
+                    bands[l] = e_a + e_b - bands[l];
+                }
+                coverage = _mm_load_ps(bands);
+            }
+            body.blend4(row + start, _mm_and_ps(valid, coverage));
+        }
+    };
+#endif
+
+    // Rows whose centres can lie within R of the segment; per row, the pixel centres in
+    // the band |v| ≤ R and the slab −R ≤ u ≤ L + R (chords of the row's centre line).
+    constexpr double kAxisAligned = 1e-12;
+    const bool crosses_rows = std::fabs(dy) > kAxisAligned, crosses_columns = dx > kAxisAligned;
+    const double inv_dx = crosses_columns ? 1.0 / dx : 0.0, inv_dy = crosses_rows ? 1.0 / dy : 0.0;
+    const int row_first = clamped_floor(std::min(ay, clip.y1) - reach, 0.0, height);
+    const int row_last = clamped_ceil(std::max(ay, clip.y1) + reach, -1.0, height - 1.0);
+    for (int j = row_first; j <= row_last; ++j) {
+        const double ry = j + 0.5 - ay;
+        double lo = -margin - ax, hi = width + margin - ax;  // rx range
+        if (crosses_rows) {
+            const double p = (ry * dx - reach) * inv_dy, r = (ry * dx + reach) * inv_dy;
+            lo = std::max(lo, std::min(p, r));
+            hi = std::min(hi, std::max(p, r));
+        } else if (std::fabs(ry * dx) > reach) {
+            continue;
+        }
+        if (crosses_columns) {
+            lo = std::max(lo, (-reach - ry * dy) * inv_dx);
+            hi = std::min(hi, (length + reach - ry * dy) * inv_dx);
+        } else if (ry * dy < -reach || ry * dy > length + reach) {
+            continue;
+        }
+        const int i_first = clamped_ceil(ax + lo - 0.5, 0.0, width);
+        const int i_last = clamped_floor(ax + hi - 0.5, -1.0, width - 1.0);
+        if (i_first > i_last) continue;
+        const int n = i_last - i_first + 1;
+        const double rx = i_first + 0.5 - ax;
+        const float u0 = float(rx * dx + ry * dy), v0 = float(ry * dx - rx * dy);
+        float *row = canvas->data + std::size_t(j) * std::size_t(width);
+#ifdef __SSE2__
+        if (width >= 4) {
+            draw_row4(row, i_first, n, u0, v0);
+            continue;
+        }
+#endif
+        float u = u0, v = v0;
+        for (int k = 0; k < n; ++k, u += du, v += dv) draw_pixel(row[i_first + k], u, v);
+    }
+}
+
+}  // namespace tiny3d
