@@ -74,6 +74,62 @@ private:
     float nv_;
 };
 
+#ifdef __SSE2__
+// end_lookup for four pixels at once: lanes with v ≥ 0 read the `pos` slice, lanes with
+// v < 0 the `neg` slice at |v|; lanes beyond the cap's reach get 0. Indices are formed
+// in float (exact: a table holds < 2^24 values); SSE2 has no gather, so the 16 corner
+// values are loaded one by one.
+class end_lookup4 {
+public:
+    end_lookup4(const line_table &table, double q_pos, double q_neg)
+        : values_(table.values.data()),
+          u_min_(_mm_set1_ps(table.u_min)),
+          inv_u_(_mm_set1_ps(1.0f / table.u_step)),
+          inv_v_(_mm_set1_ps(1.0f / table.v_step)),
+          u_cells_(_mm_set1_ps(float(table.nu))),
+          v_cells_(_mm_set1_ps(float(table.nv))),
+          row_(_mm_set1_ps(float(table.nu + 1))),
+          pos_(_mm_set1_ps(float(slice_start(table, q_pos)))),
+          neg_(_mm_set1_ps(float(slice_start(table, q_neg)))),
+          row_size_(table.nu + 1) {}
+
+    __m128 operator()(__m128 u, __m128 v) const {
+        const __m128 zero = _mm_setzero_ps(), below_one = _mm_set1_ps(0.999f);
+        const __m128 negative = _mm_cmplt_ps(v, zero);
+        const __m128 abs_v = _mm_andnot_ps(_mm_set1_ps(-0.0f), v);
+        __m128 fu = _mm_mul_ps(_mm_sub_ps(u, u_min_), inv_u_), fv = _mm_mul_ps(abs_v, inv_v_);
+        const __m128 inside = _mm_and_ps(_mm_cmpgt_ps(fu, zero), _mm_cmplt_ps(fv, v_cells_));
+        // Clamp into the table so every lane's corners are valid addresses.
+        fu = _mm_min_ps(_mm_max_ps(fu, zero), _mm_sub_ps(u_cells_, below_one));
+        fv = _mm_min_ps(fv, _mm_sub_ps(v_cells_, below_one));
+        const __m128 cell_u = _mm_cvtepi32_ps(_mm_cvttps_epi32(fu)), cell_v = _mm_cvtepi32_ps(_mm_cvttps_epi32(fv));
+        const __m128 au = _mm_sub_ps(fu, cell_u), av = _mm_sub_ps(fv, cell_v);
+        const __m128 slice = _mm_or_ps(_mm_and_ps(negative, neg_), _mm_andnot_ps(negative, pos_));
+        alignas(16) int at[4];
+        _mm_store_si128(reinterpret_cast<__m128i *>(at),
+                        _mm_cvttps_epi32(_mm_add_ps(slice, _mm_add_ps(_mm_mul_ps(cell_v, row_), cell_u))));
+        const std::size_t up = row_size_;
+        auto corner = [&](std::size_t offset) {
+            return _mm_set_ps(values_[std::size_t(at[3]) + offset], values_[std::size_t(at[2]) + offset],
+                              values_[std::size_t(at[1]) + offset], values_[std::size_t(at[0]) + offset]);
+        };
+        const __m128 c00 = corner(0), c10 = corner(1), c01 = corner(up), c11 = corner(up + 1);
+        const __m128 bottom = _mm_add_ps(c00, _mm_mul_ps(au, _mm_sub_ps(c10, c00)));
+        const __m128 top = _mm_add_ps(c01, _mm_mul_ps(au, _mm_sub_ps(c11, c01)));
+        return _mm_and_ps(inside, _mm_add_ps(bottom, _mm_mul_ps(av, _mm_sub_ps(top, bottom))));
+    }
+
+private:
+    static std::size_t slice_start(const line_table &t, double q) {
+        return std::size_t(std::clamp(q, 0.0, 1.0) * t.slices + 0.5) * (std::size_t(t.nu) + 1) *
+               (std::size_t(t.nv) + 1);
+    }
+    const float *values_;
+    __m128 u_min_, inv_u_, inv_v_, u_cells_, v_cells_, row_, pos_, neg_;
+    std::size_t row_size_;
+};
+#endif
+
 // ceil(v) as an int, v clamped to [lo, hi] first (so ±inf and huge values convert safely).
 int clamped_ceil(double v, double lo, double hi) { return -detail::floor_to_int(-std::clamp(v, lo, hi)); }
 int clamped_floor(double v, double lo, double hi) { return detail::floor_to_int(std::clamp(v, lo, hi)); }
@@ -164,11 +220,12 @@ void draw_line_tabulated(canvas_t *canvas, float x0, float y0, float x1, float y
     };
 #ifdef __SSE2__
     // Pixels first .. first + n − 1 of a row (width ≥ 4), 4 at a time: the band for all
-    // four, the tables only for lanes near an end. A group reaching past the row's end is
+    // four, an end's table only for groups with a lane near that end. A group reaching past the row's end is
     // moved back inside it and its lanes outside the run get coverage 0.
     const __m128 lanes = _mm_set_ps(3.0f, 2.0f, 1.0f, 0.0f), du4 = _mm_set1_ps(du), dv4 = _mm_set1_ps(dv);
     const __m128 umax_a = _mm_set1_ps(end_a ? umax : -INFINITY), umax_b = _mm_set1_ps(end_b ? umax : -INFINITY);
     const __m128 length4 = _mm_set1_ps(lf);
+    const end_lookup4 lookup4(table, q, 1.0 - q);
     auto draw_row4 = [&](float *row, int first, int n, float u0, float v0) {
         const __m128 count = _mm_set1_ps(float(n));
         for (int k = 0; k < n; k += 4) {
@@ -178,24 +235,21 @@ void draw_line_tabulated(canvas_t *canvas, float x0, float y0, float x1, float y
                 _mm_and_ps(_mm_cmpge_ps(index, _mm_set1_ps(float(k))), _mm_cmplt_ps(index, count));
             const __m128 u = _mm_add_ps(_mm_set1_ps(u0), _mm_mul_ps(index, du4));
             const __m128 v = _mm_add_ps(_mm_set1_ps(v0), _mm_mul_ps(index, dv4));
-            __m128 coverage = body.band4(v);
-            const __m128 near_a = _mm_cmplt_ps(u, umax_a), near_b = _mm_cmplt_ps(_mm_sub_ps(length4, u), umax_b);
-            const int near = _mm_movemask_ps(_mm_and_ps(_mm_or_ps(near_a, near_b), valid));
-            if (near) {
-                alignas(16) float us[4], vs[4], bands[4];
-                _mm_store_ps(us, u);
-                _mm_store_ps(vs, v);
-                _mm_store_ps(bands, coverage);
-                const int mask_a = _mm_movemask_ps(near_a), mask_b = _mm_movemask_ps(near_b);
-                for (int l = 0; l < 4; ++l) {
-                    if (!(near >> l & 1)) continue;
-                    const float uu = us[l], vv = vs[l], ub = lf - uu;
-                    const float e_a = mask_a >> l & 1 ? (vv >= 0.0f ? lookup_pos(uu, vv) : lookup_neg(uu, -vv)) : bands[l];
-                    const float e_b = mask_b >> l & 1 ? (vv <= 0.0f ? lookup_pos(ub, -vv) : lookup_neg(ub, vv)) : bands[l];
-                    bands[l] = e_a + e_b - bands[l];
-                }
-                coverage = _mm_load_ps(bands);
+            const __m128 band = body.band4(v);
+            const __m128 near_a = _mm_and_ps(valid, _mm_cmplt_ps(u, umax_a));
+            const __m128 end_b_u = _mm_sub_ps(length4, u);
+            const __m128 near_b = _mm_and_ps(valid, _mm_cmplt_ps(end_b_u, umax_b));
+            // (1): E = band away from an end, so a lane far from both keeps band + band − band = band.
+            __m128 e_a = band, e_b = band;
+            if (_mm_movemask_ps(near_a)) {
+                const __m128 e = lookup4(u, v);
+                e_a = _mm_or_ps(_mm_and_ps(near_a, e), _mm_andnot_ps(near_a, band));
             }
+            if (_mm_movemask_ps(near_b)) {
+                const __m128 e = lookup4(end_b_u, _mm_sub_ps(_mm_setzero_ps(), v));
+                e_b = _mm_or_ps(_mm_and_ps(near_b, e), _mm_andnot_ps(near_b, band));
+            }
+            const __m128 coverage = _mm_sub_ps(_mm_add_ps(e_a, e_b), band);
             body.blend4(row + start, _mm_and_ps(valid, coverage));
         }
     };
