@@ -226,6 +226,7 @@ result<raster_mesh> make_raster_mesh(const mesh &m, std::span<const vec3_t> vert
 // |v| · cos(α + θ) + apex_margin, v = apex − e, θ = angle(v, axis), α = the cone's half angle.
 struct raster_cluster {
     std::uint32_t first = 0, count = 0;   // triangles [first, first + count)
+    std::uint32_t vertex_first = 0, vertex_count = 0;  // its vertices: raster_clusters::vertices()[…]
     double center[3] = {0, 0, 0};
     double radius = 0;                    // +∞ when a vertex is not finite
     double axis[3] = {0, 0, 1};
@@ -233,13 +234,26 @@ struct raster_cluster {
     double apex[3] = {0, 0, 0};
     double apex_margin = 0;
     double min_double_area = 0;           // smallest |N| = |(p1 − p0) × (p2 − p0)|, object units²
-    double edge_ratio = std::numeric_limits<double>::infinity();       // largest (|p1 − p0| + |p2 − p0|) / |N|, 1 / object units
+    double edge_ratio = std::numeric_limits<double>::infinity();  // largest (|p1 − p0| + |p2 − p0|) / |N|
     bool cone_valid = false;              // false: wider than a hemisphere, degenerate or not finite
 };
 
-struct raster_clusters {
-    std::size_t vertex_count = 0, triangle_count = 0;  // of the mesh they were built from
-    std::vector<raster_cluster> clusters;              // in triangle order, covering every triangle
+// Read-only once built (the draw relies on its invariants: chunks in order covering every
+// triangle, vertex lists within the mesh).
+class raster_clusters {
+public:
+    std::size_t vertex_count() const { return vertex_count_; }      // of the mesh built from
+    std::size_t triangle_count() const { return triangle_count_; }
+    const std::vector<raster_cluster> &clusters() const { return clusters_; }
+    // Each chunk's distinct vertex indices, ascending (a draw transforms only the vertices of
+    // the chunks it walks).
+    const std::vector<std::uint32_t> &vertices() const { return vertices_; }
+
+private:
+    friend result<raster_clusters> make_raster_clusters(const raster_mesh &m, int triangles_per_cluster);
+    std::size_t vertex_count_ = 0, triangle_count_ = 0;
+    std::vector<raster_cluster> clusters_;
+    std::vector<std::uint32_t> vertices_;
 };
 
 inline constexpr int RASTER_CLUSTER_TRIANGLES = 64;  // default chunk size (triangles)
@@ -252,7 +266,10 @@ inline constexpr int RASTER_CLUSTER_TRIANGLES = 64;  // default chunk size (tria
 // icosphere, grids) give narrow cones and small spheres; others still draw correctly,
 // only fewer chunks are skipped. Error when triangles_per_cluster < 1 or an index is out
 // of range.
-result<raster_clusters> make_raster_clusters(const raster_mesh &m, int triangles_per_cluster = RASTER_CLUSTER_TRIANGLES);
+result<raster_clusters> make_raster_clusters(const raster_mesh &m, int triangles_per_cluster);
+inline result<raster_clusters> make_raster_clusters(const raster_mesh &m) {
+    return make_raster_clusters(m, RASTER_CLUSTER_TRIANGLES);
+}
 
 enum class shading { flat, gouraud, phong };
 

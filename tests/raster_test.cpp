@@ -583,10 +583,10 @@ TEST(cluster_bounds_hold_for_every_triangle) {
     bad.triangles[7][1] = static_cast<std::uint32_t>(m.positions.size());
     CHECK(!make_raster_clusters(bad, 64).ok());
     const raster_clusters cl = make_raster_clusters(m, 64).value();
-    CHECK_EQ(cl.clusters.size(), std::size_t{5120 / 64});
-    CHECK_EQ(cl.triangle_count, m.triangles.size());
+    CHECK_EQ(cl.clusters().size(), std::size_t{5120 / 64});
+    CHECK_EQ(cl.triangle_count(), m.triangles.size());
     std::size_t next = 0, with_cone = 0;
-    for (const raster_cluster &c : cl.clusters) {
+    for (const raster_cluster &c : cl.clusters()) {
         CHECK_EQ(std::size_t{c.first}, next);  // in order, no gap
         next = c.first + c.count;
         with_cone += c.cone_valid;
@@ -616,8 +616,8 @@ TEST(cluster_bounds_hold_for_every_triangle) {
         }
     }
     CHECK_EQ(next, m.triangles.size());
-    CHECK_EQ(with_cone, cl.clusters.size());  // every level-4 chunk of 64 is a small smooth patch
-    CHECK(cl.clusters[3].cone_cos > 0.9);
+    CHECK_EQ(with_cone, cl.clusters().size());  // every level-4 chunk of 64 is a small smooth patch
+    CHECK(cl.clusters()[3].cone_cos > 0.9);
 }
 
 TEST(clusters_give_the_same_scene_s_frames_for_any_thread_count) {

@@ -132,13 +132,26 @@ result<raster_clusters> make_raster_clusters(const raster_mesh &m, int triangles
                 return error{"", 0, -1, "raster clusters: triangle " + std::to_string(i) + " refers to position " +
                                             std::to_string(v) + " of " + std::to_string(m.positions.size())};
     raster_clusters out;
-    out.vertex_count = m.positions.size();
-    out.triangle_count = m.triangles.size();
+    out.vertex_count_ = m.positions.size();
+    out.triangle_count_ = m.triangles.size();
     const std::size_t per = static_cast<std::size_t>(triangles_per_cluster);
-    out.clusters.reserve((m.triangles.size() + per - 1) / per);
-    for (std::size_t first = 0; first < m.triangles.size(); first += per)
-        out.clusters.push_back(build_cluster(m, static_cast<std::uint32_t>(first),
-                                             static_cast<std::uint32_t>(std::min(per, m.triangles.size() - first))));
+    out.clusters_.reserve((m.triangles.size() + per - 1) / per);
+    std::vector<std::uint32_t> last_chunk(m.positions.size(), std::numeric_limits<std::uint32_t>::max());
+    for (std::size_t first = 0; first < m.triangles.size(); first += per) {
+        const std::uint32_t chunk = static_cast<std::uint32_t>(out.clusters_.size());
+        raster_cluster c = build_cluster(m, static_cast<std::uint32_t>(first),
+                                         static_cast<std::uint32_t>(std::min(per, m.triangles.size() - first)));
+        c.vertex_first = static_cast<std::uint32_t>(out.vertices_.size());
+        for (std::uint32_t i = c.first; i < c.first + c.count; ++i)
+            for (std::uint32_t v : m.triangles[i])
+                if (last_chunk[v] != chunk) {
+                    last_chunk[v] = chunk;
+                    out.vertices_.push_back(v);
+                }
+        std::sort(out.vertices_.begin() + c.vertex_first, out.vertices_.end());
+        c.vertex_count = static_cast<std::uint32_t>(out.vertices_.size() - c.vertex_first);
+        out.clusters_.push_back(c);
+    }
     return out;
 }
 

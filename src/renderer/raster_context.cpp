@@ -152,6 +152,22 @@ struct draw_state {
     draw_params params;
 };
 
+// The per-draw constants of the vertex transform.
+struct vertex_job {
+    mat4_t mvp;
+    normal_transform nt;
+    float half_w, half_h;
+    bool gouraud, generic;
+    bool directional_gouraud;  // Gouraud with directional lights only: the SSE2 shading path
+};
+
+// The vertices one transform() call handles: 0..count−1, or list[0..count).
+struct vertex_set {
+    const std::uint32_t *list;
+    std::size_t count;
+    std::uint32_t operator[](std::size_t k) const { return list ? list[k] : static_cast<std::uint32_t>(k); }
+};
+
 screen_vertex to_screen(vec4_t c, float half_w, float half_h) {
     const float inv_w = 1.0f / c.w;
     return {(c.x * inv_w + 1.0f) * half_w, (1.0f - c.y * inv_w) * half_h, 0.5f * c.z * inv_w + 0.5f, inv_w};
@@ -207,11 +223,13 @@ inline void unit_or_zero_x4(__m128 &x, __m128 &y, __m128 &z) {
 // The position part of transform() for four vertices: clip = M·p, outcode, screen position
 // and snap, lane by lane with the scalar code's float operations in the same order (mul,
 // clip_outcode, to_screen, detail::snap_vertex), so every field gets the same bits.
-void project_x4(const mat4_t &m, const vec3_t *positions, float guard, float half_w, float half_h, xvertex *out,
-                vec4_t *out_clip) {
-    const __m128 px = _mm_setr_ps(positions[0].x, positions[1].x, positions[2].x, positions[3].x);
-    const __m128 py = _mm_setr_ps(positions[0].y, positions[1].y, positions[2].y, positions[3].y);
-    const __m128 pz = _mm_setr_ps(positions[0].z, positions[1].z, positions[2].z, positions[3].z);
+// Vertices index[0..3] of `positions`, written to the same indices of out and out_clip.
+void project_x4(const mat4_t &m, const vec3_t *positions, const std::uint32_t index[4], float guard, float half_w,
+                float half_h, xvertex *out, vec4_t *out_clip) {
+    const vec3_t &p0 = positions[index[0]], &p1 = positions[index[1]], &p2 = positions[index[2]], &p3 = positions[index[3]];
+    const __m128 px = _mm_setr_ps(p0.x, p1.x, p2.x, p3.x);
+    const __m128 py = _mm_setr_ps(p0.y, p1.y, p2.y, p3.y);
+    const __m128 pz = _mm_setr_ps(p0.z, p1.z, p2.z, p3.z);
     auto row = [&](int r) {  // m[r]·x + m[4+r]·y + m[8+r]·z + m[12+r]
         return _mm_add_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_set1_ps(m.m[r]), px), _mm_mul_ps(_mm_set1_ps(m.m[4 + r]), py)),
                                      _mm_mul_ps(_mm_set1_ps(m.m[8 + r]), pz)),
@@ -247,10 +265,10 @@ void project_x4(const mat4_t &m, const vec3_t *positions, float guard, float hal
     _MM_TRANSPOSE4_PS(x, y, z, w);
     const __m128 clip[4] = {x, y, z, w};
     for (int l = 0; l < 4; ++l) {
-        xvertex &v = out[l];
+        xvertex &v = out[index[l]];
         alignas(16) float c[4];
         _mm_store_ps(c, clip[l]);
-        out_clip[l] = {c[0], c[1], c[2], c[3]};
+        out_clip[index[l]] = {c[0], c[1], c[2], c[3]};
         v.outcode = static_cast<std::uint8_t>(outcode[l]);
         v.depth = depth[l];
         v.snapped = !(v.outcode & CLIP_NEAR) && ((usable >> l) & 1);
@@ -262,10 +280,12 @@ void project_x4(const mat4_t &m, const vec3_t *positions, float guard, float hal
 // shade_gouraud_vertex(rig, ·, apply_normal_transform(nt, normals[l])) for l = 0..3 with
 // directional lights only (no position needed): the scalar code's operations in the same
 // order on four lanes, so each result has the same bits as the scalar one.
-void shade_gouraud_x4(const light_rig &rig, const normal_transform &nt, const vec3_t *normals, float out[4]) {
-    const __m128 nx = _mm_setr_ps(normals[0].x, normals[1].x, normals[2].x, normals[3].x);
-    const __m128 ny = _mm_setr_ps(normals[0].y, normals[1].y, normals[2].y, normals[3].y);
-    const __m128 nz = _mm_setr_ps(normals[0].z, normals[1].z, normals[2].z, normals[3].z);
+void shade_gouraud_x4(const light_rig &rig, const normal_transform &nt, const vec3_t *normals, const std::uint32_t index[4],
+                      float out[4]) {
+    const vec3_t &n0 = normals[index[0]], &n1 = normals[index[1]], &n2 = normals[index[2]], &n3 = normals[index[3]];
+    const __m128 nx = _mm_setr_ps(n0.x, n1.x, n2.x, n3.x);
+    const __m128 ny = _mm_setr_ps(n0.y, n1.y, n2.y, n3.y);
+    const __m128 nz = _mm_setr_ps(n0.z, n1.z, n2.z, n3.z);
     auto row = [&](int r) {  // nt.m[3r]·n.x + nt.m[3r+1]·n.y + nt.m[3r+2]·n.z
         return _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_set1_ps(nt.m[3 * r]), nx), _mm_mul_ps(_mm_set1_ps(nt.m[3 * r + 1]), ny)),
                           _mm_mul_ps(_mm_set1_ps(nt.m[3 * r + 2]), nz));
@@ -336,8 +356,9 @@ struct render_context::impl {
         depth.clear_rows(y0, y1, 1.0f);
     }
 
-    void transform(const raster_mesh &m, const draw_params &p, const mat4_t &mvp, bool generic, segment &out);
-    void setup(const raster_mesh &m, const draw_params &p, std::uint32_t state, bool generic, int thread,
+    vertex_job make_vertex_job(const draw_params &p, const mat4_t &mvp, bool generic) const;
+    void transform(const raster_mesh &m, const draw_params &p, const vertex_job &job, vertex_set set, segment &out);
+    void setup(const raster_mesh &m, const draw_params &p, const vertex_job &job, std::uint32_t state, int thread,
                const detail::cluster_view *clusters, segment &out);
     void setup_range(const raster_mesh &m, const draw_params &p, std::uint32_t state, bool generic, int thread,
                      bool counts_all, std::size_t first, std::size_t last, segment &out);
@@ -361,52 +382,66 @@ struct render_context::impl {
 
 // ---- phase 1a: vertices -------------------------------------------------------------------
 
-void render_context::impl::transform(const raster_mesh &m, const draw_params &p, const mat4_t &mvp, bool generic,
-                                     segment &out) {
-    const std::size_t v0 = 0, v1 = m.positions.size();
+vertex_job render_context::impl::make_vertex_job(const draw_params &p, const mat4_t &mvp, bool generic) const {
+    vertex_job job;
+    job.mvp = mvp;
+    job.nt = make_normal_transform(p.model);
+    job.half_w = 0.5f * static_cast<float>(target->width);
+    job.half_h = 0.5f * static_cast<float>(target->height);
+    job.gouraud = p.shade == shading::gouraud;
+    job.generic = generic;
+    job.directional_gouraud = job.gouraud && !generic && directional_only(p.lights);
+    return job;
+}
+
+void render_context::impl::transform(const raster_mesh &m, const draw_params &p, const vertex_job &job,
+                                     vertex_set set, segment &out) {
     std::vector<xvertex> &vertices = out.vertices;
     std::vector<vec4_t> &clip = out.clip;
     std::vector<float> &vertex_attr = out.vertex_attr;
-    const float half_w = 0.5f * static_cast<float>(target->width), half_h = 0.5f * static_cast<float>(target->height);
-    const normal_transform nt = make_normal_transform(p.model);
-    const bool gouraud = p.shade == shading::gouraud;
-    std::size_t first = v0;
+    std::size_t first = 0;
 #ifdef __SSE2__
-    for (; first + 4 <= v1; first += 4)
-        project_x4(mvp, &m.positions[first], guard, half_w, half_h, &vertices[first], &clip[first]);
+    for (; first + 4 <= set.count; first += 4) {
+        const std::uint32_t index[4] = {set[first], set[first + 1], set[first + 2], set[first + 3]};
+        project_x4(job.mvp, m.positions.data(), index, guard, job.half_w, job.half_h, vertices.data(), clip.data());
+    }
 #endif
-    for (std::size_t i = first; i < v1; ++i) {
+    for (std::size_t k = first; k < set.count; ++k) {
+        const std::uint32_t i = set[k];
         xvertex &x = vertices[i];
-        clip[i] = mul(mvp, m.positions[i]);
+        clip[i] = mul(job.mvp, m.positions[i]);
         x.outcode = static_cast<std::uint8_t>(clip_outcode(clip[i], guard));
         x.snapped = false;
         if (!(x.outcode & CLIP_NEAR)) {
-            const screen_vertex screen = to_screen(clip[i], half_w, half_h);
+            const screen_vertex screen = to_screen(clip[i], job.half_w, job.half_h);
             x.depth = screen.z;
             x.snapped = detail::snap_vertex(screen, x.snapped_x, x.snapped_y);
         }
     }
 #ifdef __SSE2__
-    if (gouraud && !generic && directional_only(p.lights)) {
-        std::size_t i = v0;
-        for (; i + 4 <= v1; i += 4) {
+    if (job.directional_gouraud) {
+        std::size_t k = 0;
+        for (; k + 4 <= set.count; k += 4) {
+            const std::uint32_t index[4] = {set[k], set[k + 1], set[k + 2], set[k + 3]};
             alignas(16) float shade[4];
-            shade_gouraud_x4(p.lights, nt, &m.normals[i], shade);
-            for (int l = 0; l < 4; ++l) vertices[i + l].shade = shade[l];
+            shade_gouraud_x4(p.lights, job.nt, m.normals.data(), index, shade);
+            for (int l = 0; l < 4; ++l) vertices[index[l]].shade = shade[l];
         }
-        for (; i < v1; ++i) vertices[i].shade = shade_gouraud_vertex(p.lights, {0, 0, 0}, apply_normal_transform(nt, m.normals[i]));
+        for (; k < set.count; ++k)
+            vertices[set[k]].shade = shade_gouraud_vertex(p.lights, {0, 0, 0}, apply_normal_transform(job.nt, m.normals[set[k]]));
         return;
     }
 #endif
-    for (std::size_t i = v0; i < v1; ++i) {
+    for (std::size_t k = 0; k < set.count; ++k) {
+        const std::uint32_t i = set[k];
         xvertex &x = vertices[i];
         vec3_t world{0, 0, 0}, normal{0, 0, 0};
-        if (gouraud || generic) {
+        if (job.gouraud || job.generic) {
             world = mul3(p.model, m.positions[i]);
-            normal = apply_normal_transform(nt, m.normals[i]);
+            normal = apply_normal_transform(job.nt, m.normals[i]);
         }
-        x.shade = gouraud ? shade_gouraud_vertex(p.lights, world, normal) : 0.0f;
-        if (generic) {
+        x.shade = job.gouraud ? shade_gouraud_vertex(p.lights, world, normal) : 0.0f;
+        if (job.generic) {
             float *a = &vertex_attr[i * ATTR_COUNT];
             a[ATTR_PX] = world.x, a[ATTR_PY] = world.y, a[ATTR_PZ] = world.z;
             a[ATTR_NX] = normal.x, a[ATTR_NY] = normal.y, a[ATTR_NZ] = normal.z;
@@ -460,27 +495,29 @@ void render_context::impl::emit(const clip_vertex *poly, int n, const draw_param
 // guard band is walked only by the threads drawing a band among its rows, and its culled
 // triangles are counted by the owner of its first row's band (thread 0 when it has no row
 // on the target) — the same counts as walking every triangle.
-void render_context::impl::setup(const raster_mesh &m, const draw_params &p, std::uint32_t state, bool generic,
+void render_context::impl::setup(const raster_mesh &m, const draw_params &p, const vertex_job &job, std::uint32_t state,
                                  int thread, const detail::cluster_view *view, segment &out) {
     if (!view) {
-        setup_range(m, p, state, generic, thread, thread == 0, 0, m.triangles.size(), out);
+        transform(m, p, job, {nullptr, m.positions.size()}, out);
+        setup_range(m, p, state, job.generic, thread, thread == 0, 0, m.triangles.size(), out);
         return;
     }
-    const std::size_t count = m.triangles.size();
-    for (const raster_cluster &c : p.clusters->clusters) {
+    const std::uint32_t *chunk_vertices = p.clusters->vertices().data();
+    for (const raster_cluster &c : p.clusters->clusters()) {
         const detail::cluster_verdict v = detail::classify_cluster(*view, c);
         const bool on_target = v.inside && v.row0 <= v.row1;
         const int counter = on_target ? band_owner[band_of(v.row0)] : 0;
-        const std::size_t first = std::min<std::size_t>(c.first, count), last = std::min<std::size_t>(first + c.count, count);
         if (v.back) {
             if (thread == counter) {
-                out.stats.culled_backface += last - first;
-                out.stats.backface_by_cluster += last - first;
+                out.stats.culled_backface += c.count;
+                out.stats.backface_by_cluster += c.count;
             }
             continue;
         }
         if (v.inside && thread != counter && !(on_target && draws_rows(thread, v.row0, v.row1))) continue;
-        setup_range(m, p, state, generic, thread, thread == counter, first, last, out);
+        // Only the vertices of walked chunks are transformed (shared ones once per chunk).
+        transform(m, p, job, {chunk_vertices + c.vertex_first, c.vertex_count}, out);
+        setup_range(m, p, state, job.generic, thread, thread == counter, c.first, c.first + c.count, out);
     }
 }
 
@@ -643,28 +680,29 @@ void render_context::draw(const raster_mesh &mesh, const draw_params &params) {
     const int n = s.pool.size();
     // Cluster culling for the fast path, when the clusters were built from this mesh.
     const raster_clusters *clusters = params.clusters;
-    const bool use_clusters = clusters && !generic && clusters->vertex_count == nv &&
-                              clusters->triangle_count == mesh.triangles.size();
+    const bool use_clusters = clusters && !generic && clusters->vertex_count() == nv &&
+                              clusters->triangle_count() == mesh.triangles.size();
     detail::cluster_view cluster_view{};
     if (use_clusters) cluster_view = detail::make_cluster_view(mvp, s.target->width, s.target->height, s.guard, params.cull);
     const detail::cluster_view *view = use_clusters ? &cluster_view : nullptr;
+    const vertex_job job = s.make_vertex_job(params, mvp, generic);
     for (int t = 0; t < n; ++t) {
         impl::segment &seg = s.segments[t];
         if (seg.vertices.size() < nv) seg.vertices.resize(nv), seg.clip.resize(nv);
         if (generic && seg.vertex_attr.size() < nv * ATTR_COUNT) seg.vertex_attr.resize(nv * ATTR_COUNT);
     }
-    // One phase: each thread transforms every vertex into its own segment (repeating that
-    // cheap pass costs less than sharing vertex lines between cores), sets up the triangles
-    // that reach its bands and draws its bands from its own segment.
+    // One phase: each thread transforms every vertex (with clusters: those of the chunks it
+    // walks) into its own segment (repeating that cheap pass costs less than sharing vertex
+    // lines between cores), sets up the triangles that reach its bands and draws its bands
+    // from its own segment.
     auto phase_triangles = [&](int t) {
         impl::segment &seg = s.segments[t];
-        s.transform(mesh, params, mvp, generic, seg);
         seg.fast.clear();
         seg.wide.clear();
         seg.generic.clear();
         seg.stats = {};
         for (int b = 0; b < s.bands(); ++b) seg.bins[b].clear();
-        s.setup(mesh, params, state, generic, t, view, seg);
+        s.setup(mesh, params, job, state, t, view, seg);
         for (int band = 0; band < s.bands(); ++band) {
             if (s.band_owner[band] != t) continue;
             const int y0 = s.band_y0(band), y1 = s.band_y0(band + 1);
