@@ -46,7 +46,7 @@ double diamond_angle(double dx, double dy) {
 class end_lookup {
 public:
     end_lookup(const line_table &table, double q)
-        : values_(table.values.data() + std::size_t(std::lround(std::clamp(q, 0.0, 1.0) * table.slices)) *
+        : values_(table.values.data() + std::size_t(std::clamp(q, 0.0, 1.0) * table.slices + 0.5) *
                                             (std::size_t(table.nu) + 1) * (std::size_t(table.nv) + 1)),
           row_(std::size_t(table.nu) + 1),
           u_min_(table.u_min),
@@ -171,6 +171,49 @@ result<line_table> line_table::make(float thickness, line_cap cap) {
     return t;
 }
 
+namespace {
+
+// The pixel runs of a stroke, row by row: per row, the pixels whose centres lie in the
+// band |v| ≤ R and the slab −R ≤ u ≤ L + R (chords of the row's centre line, each end
+// linear in the row, so stepped by additions). Direction (dx, dy) with dx ≥ 0, unit.
+class row_runs {
+public:
+    row_runs(double ax, double dx, double dy, double length, double reach, int width)
+        : ax_(ax), width_(width) {
+        constexpr double kAxisAligned = 1e-12, kUnbounded = 1e300;
+        // rx range of the band: (ry·dx ∓ R)/dy; of the slab: (−R − ry·dy)/dx … (L + R − ry·dy)/dx.
+        if (std::fabs(dy) > kAxisAligned) {
+            band_slope_ = dx / dy;
+            band_half_ = reach / std::fabs(dy);
+        } else {
+            band_half_ = kUnbounded;  // rows beyond the band are not visited (first/last row)
+        }
+        if (dx > kAxisAligned) {
+            slab_slope_ = -dy / dx;
+            slab_lo_ = -reach / dx;
+            slab_hi_ = (length + reach) / dx;
+        } else {
+            slab_lo_ = -kUnbounded;
+            slab_hi_ = kUnbounded;
+        }
+    }
+    // Pixels [first, last] of the row whose centre is ry below the start (first > last: none).
+    void at(double ry, int &first, int &last) const {
+        const double centre = ry * band_slope_, shift = ry * slab_slope_;
+        const double lo = std::max(centre - band_half_, slab_lo_ + shift);
+        const double hi = std::min(centre + band_half_, slab_hi_ + shift);
+        first = clamped_ceil(ax_ + lo - 0.5, 0.0, width_);
+        last = clamped_floor(ax_ + hi - 0.5, -1.0, width_ - 1.0);
+    }
+
+private:
+    double ax_;
+    int width_;
+    double band_slope_ = 0, band_half_ = 0, slab_slope_ = 0, slab_lo_ = 0, slab_hi_ = 0;
+};
+
+}  // namespace
+
 void draw_line_tabulated(canvas_t *canvas, float x0, float y0, float x1, float y1, const line_table &table,
                          float intensity) {
     if (!canvas || !canvas->data || canvas->width <= 0 || canvas->height <= 0 || table.values.empty()) return;
@@ -184,9 +227,10 @@ void draw_line_tabulated(canvas_t *canvas, float x0, float y0, float x1, float y
         std::swap(x0, x1);
         std::swap(y0, y1);
     }
+    // Float ends: their differences and squares are finite in double.
     const double full_dx = double(x1) - x0, full_dy = double(y1) - y0;
-    const double full_length = std::hypot(full_dx, full_dy);
-    if (!(full_length >= h) || !std::isfinite(full_length)) {  // (1) needs L ≥ h
+    const double full_length = std::sqrt(full_dx * full_dx + full_dy * full_dy);
+    if (!(full_length >= h)) {  // (1) needs L ≥ h
         draw_line_coverage(canvas, x0, y0, x1, y1, table.thickness(), {table.cap(), ink});
         return;
     }
@@ -202,97 +246,86 @@ void draw_line_tabulated(canvas_t *canvas, float x0, float y0, float x1, float y
     const bool end_a = !clip.start_clipped, end_b = !clip.end_clipped;
 
     const double q = diamond_angle(dx, dy);
-    const end_lookup lookup_pos(table, q), lookup_neg(table, 1.0 - q);  // v ≥ 0; v < 0 (mirrored)
     const detail::square_cdf cdf(-dy, dx);
     const float hf = float(h), lf = float(length);
     // A pixel whose centre has u ≥ w_hi lies wholly on the stroke's side of an end line
     // (w_hi = half the pixel's extent along the stroke): E = band there, exactly.
     const float umax = cdf.w_hi;
     const float du = float(dx), dv = float(-dy);
-    const detail::band_writer body(cdf, hf, ink, dv);
-    // One pixel by (1): each end's table where the pixel is near it, else the band.
-    auto draw_pixel = [&](float &pixel, float u, float v) {
-        const float band = cdf.band(v, hf);
-        const float e_a = end_a && u < umax ? (v >= 0.0f ? lookup_pos(u, v) : lookup_neg(u, -v)) : band;
-        const float ub = lf - u;
-        const float e_b = end_b && ub < umax ? (v <= 0.0f ? lookup_pos(ub, -v) : lookup_neg(ub, v)) : band;
-        detail::combine_over(pixel, ink * (e_a + e_b - band));
-    };
-#ifdef __SSE2__
-    // Pixels first .. first + n − 1 of a row (width ≥ 4), 4 at a time: the band for all
-    // four, an end's table only for groups with a lane near that end. A group reaching past the row's end is
-    // moved back inside it and its lanes outside the run get coverage 0.
-    const __m128 lanes = _mm_set_ps(3.0f, 2.0f, 1.0f, 0.0f), du4 = _mm_set1_ps(du), dv4 = _mm_set1_ps(dv);
-    const __m128 umax_a = _mm_set1_ps(end_a ? umax : -INFINITY), umax_b = _mm_set1_ps(end_b ? umax : -INFINITY);
-    const __m128 length4 = _mm_set1_ps(lf);
-    const end_lookup4 lookup4(table, q, 1.0 - q);
-    auto draw_row4 = [&](float *row, int first, int n, float u0, float v0) {
-        const __m128 count = _mm_set1_ps(float(n));
-        for (int k = 0; k < n; k += 4) {
-            const int start = std::min(first + k, width - 4);
-            const __m128 index = _mm_add_ps(_mm_set1_ps(float(start - first)), lanes);  // in the run
-            const __m128 valid =
-                _mm_and_ps(_mm_cmpge_ps(index, _mm_set1_ps(float(k))), _mm_cmplt_ps(index, count));
-            const __m128 u = _mm_add_ps(_mm_set1_ps(u0), _mm_mul_ps(index, du4));
-            const __m128 v = _mm_add_ps(_mm_set1_ps(v0), _mm_mul_ps(index, dv4));
-            const __m128 band = body.band4(v);
-            const __m128 near_a = _mm_and_ps(valid, _mm_cmplt_ps(u, umax_a));
-            const __m128 end_b_u = _mm_sub_ps(length4, u);
-            const __m128 near_b = _mm_and_ps(valid, _mm_cmplt_ps(end_b_u, umax_b));
-            // (1): E = band away from an end, so a lane far from both keeps band + band − band = band.
-            __m128 e_a = band, e_b = band;
-            if (_mm_movemask_ps(near_a)) {
-                const __m128 e = lookup4(u, v);
-                e_a = _mm_or_ps(_mm_and_ps(near_a, e), _mm_andnot_ps(near_a, band));
-            }
-            if (_mm_movemask_ps(near_b)) {
-                const __m128 e = lookup4(end_b_u, _mm_sub_ps(_mm_setzero_ps(), v));
-                e_b = _mm_or_ps(_mm_and_ps(near_b, e), _mm_andnot_ps(near_b, band));
-            }
-            const __m128 coverage = _mm_sub_ps(_mm_add_ps(e_a, e_b), band);
-            body.blend4(row + start, _mm_and_ps(valid, coverage));
-        }
-    };
-#endif
-
-    // Rows whose centres can lie within R of the segment; per row, the pixel centres in
-    // the band |v| ≤ R and the slab −R ≤ u ≤ L + R (chords of the row's centre line).
-    constexpr double kAxisAligned = 1e-12;
-    const bool crosses_rows = std::fabs(dy) > kAxisAligned, crosses_columns = dx > kAxisAligned;
-    const double inv_dx = crosses_columns ? 1.0 / dx : 0.0, inv_dy = crosses_rows ? 1.0 / dy : 0.0;
+    const row_runs runs(ax, dx, dy, length, reach, width);
     const int row_first = clamped_floor(std::min(ay, clip.y1) - reach, 0.0, height);
     const int row_last = clamped_ceil(std::max(ay, clip.y1) + reach, -1.0, height - 1.0);
+    const bool horizontal = !(std::fabs(dy) > 1e-12);
+
+#ifdef __SSE2__
+    if (width >= 4) {
+        const detail::band_writer body(cdf, hf, ink, dv);
+        const end_lookup4 lookup4(table, q, 1.0 - q);
+        const __m128 lanes = _mm_set_ps(3.0f, 2.0f, 1.0f, 0.0f), du4 = _mm_set1_ps(4.0f * du),
+                     dv4 = _mm_set1_ps(4.0f * dv);
+        const __m128 du1 = _mm_set1_ps(du), dv1 = _mm_set1_ps(dv);
+        const __m128 lane_du = _mm_mul_ps(lanes, du1), lane_dv = _mm_mul_ps(lanes, dv1);
+        const __m128 umax_a = _mm_set1_ps(end_a ? umax : -INFINITY), umax_b = _mm_set1_ps(end_b ? umax : -INFINITY);
+        const __m128 length4 = _mm_set1_ps(lf), all = _mm_castsi128_ps(_mm_set1_epi32(-1));
+        // Four pixels at p with centres (u, v): coverage (1), lanes outside `keep` untouched.
+        // Every pixel gets its true coverage, so groups may run past a row's run (those
+        // pixels are beyond the stroke's reach: 0).
+        auto group = [&](float *p, __m128 u, __m128 v, __m128 keep) {
+            const __m128 band = body.band4(v);
+            const __m128 near_a = _mm_cmplt_ps(u, umax_a);
+            const __m128 u_b = _mm_sub_ps(length4, u);
+            const __m128 near_b = _mm_cmplt_ps(u_b, umax_b);
+            __m128 coverage = band;
+            if (_mm_movemask_ps(_mm_or_ps(near_a, near_b))) {
+                __m128 e_a = band, e_b = band;
+                if (_mm_movemask_ps(near_a))
+                    e_a = _mm_or_ps(_mm_and_ps(near_a, lookup4(u, v)), _mm_andnot_ps(near_a, band));
+                if (_mm_movemask_ps(near_b))
+                    e_b = _mm_or_ps(_mm_and_ps(near_b, lookup4(u_b, _mm_sub_ps(_mm_setzero_ps(), v))),
+                                    _mm_andnot_ps(near_b, band));
+                coverage = _mm_sub_ps(_mm_add_ps(e_a, e_b), band);
+            }
+            body.blend4(p, _mm_and_ps(keep, coverage));
+        };
+        for (int j = row_first; j <= row_last; ++j) {
+            const double ry = j + 0.5 - ay;
+            if (horizontal && std::fabs(ry) > reach) continue;
+            int first, last;
+            runs.at(ry, first, last);
+            if (first > last) continue;
+            const double rx = first + 0.5 - ax;
+            __m128 u = _mm_add_ps(_mm_set1_ps(float(rx * dx + ry * dy)), lane_du);
+            __m128 v = _mm_add_ps(_mm_set1_ps(float(ry * dx - rx * dy)), lane_dv);
+            float *row = canvas->data + std::size_t(j) * std::size_t(width);
+            for (int i = first; i <= last; i += 4, u = _mm_add_ps(u, du4), v = _mm_add_ps(v, dv4)) {
+                if (i + 4 <= width) {
+                    group(row + i, u, v, all);
+                } else {  // the row's end: the group moved back inside, its first lanes done
+                    const __m128 back = _mm_set1_ps(float(i + 4 - width));
+                    group(row + width - 4, _mm_sub_ps(u, _mm_mul_ps(back, du1)), _mm_sub_ps(v, _mm_mul_ps(back, dv1)),
+                          _mm_cmpge_ps(lanes, back));
+                }
+            }
+        }
+        return;
+    }
+#endif
+    // Portable path (and canvases narrower than 4): one pixel at a time.
+    const end_lookup lookup_pos(table, q), lookup_neg(table, 1.0 - q);  // v ≥ 0; v < 0 (mirrored)
     for (int j = row_first; j <= row_last; ++j) {
         const double ry = j + 0.5 - ay;
-        double lo = -margin - ax, hi = width + margin - ax;  // rx range
-        if (crosses_rows) {
-            const double p = (ry * dx - reach) * inv_dy, r = (ry * dx + reach) * inv_dy;
-            lo = std::max(lo, std::min(p, r));
-            hi = std::min(hi, std::max(p, r));
-        } else if (std::fabs(ry * dx) > reach) {
-            continue;
-        }
-        if (crosses_columns) {
-            lo = std::max(lo, (-reach - ry * dy) * inv_dx);
-            hi = std::min(hi, (length + reach - ry * dy) * inv_dx);
-        } else if (ry * dy < -reach || ry * dy > length + reach) {
-            continue;
-        }
-        const int i_first = clamped_ceil(ax + lo - 0.5, 0.0, width);
-        const int i_last = clamped_floor(ax + hi - 0.5, -1.0, width - 1.0);
-        if (i_first > i_last) continue;
-        const int n = i_last - i_first + 1;
-        const double rx = i_first + 0.5 - ax;
-        const float u0 = float(rx * dx + ry * dy), v0 = float(ry * dx - rx * dy);
+        if (horizontal && std::fabs(ry) > reach) continue;
+        int first, last;
+        runs.at(ry, first, last);
+        const double rx = first + 0.5 - ax;
+        float u = float(rx * dx + ry * dy), v = float(ry * dx - rx * dy);
         float *row = canvas->data + std::size_t(j) * std::size_t(width);
-#ifdef __SSE2__
-        if (width >= 4) {
-            draw_row4(row, i_first, n, u0, v0);
-            continue;
+        for (int i = first; i <= last; ++i, u += du, v += dv) {
+            const float band = cdf.band(v, hf), u_b = lf - u;
+            const float e_a = end_a && u < umax ? (v >= 0.0f ? lookup_pos(u, v) : lookup_neg(u, -v)) : band;
+            const float e_b = end_b && u_b < umax ? (v <= 0.0f ? lookup_pos(u_b, -v) : lookup_neg(u_b, v)) : band;
+            detail::combine_over(row[i], ink * (e_a + e_b - band));
         }
-#endif
-        float u = u0, v = v0;
-        for (int k = 0; k < n; ++k, u += du, v += dv) draw_pixel(row[i_first + k], u, v);
     }
 }
 
