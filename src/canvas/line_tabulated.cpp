@@ -93,7 +93,7 @@ public:
           neg_(_mm_set1_ps(float(slice_start(table, q_neg)))),
           row_size_(table.nu + 1) {}
 
-    __m128 operator()(__m128 u, __m128 v) const {
+    [[gnu::always_inline]] __m128 operator()(__m128 u, __m128 v) const {
         const __m128 zero = _mm_setzero_ps(), below_one = _mm_set1_ps(0.999f);
         const __m128 negative = _mm_cmplt_ps(v, zero);
         const __m128 abs_v = _mm_andnot_ps(_mm_set1_ps(-0.0f), v);
@@ -270,7 +270,7 @@ void draw_line_tabulated(canvas_t *canvas, float x0, float y0, float x1, float y
         // Four pixels at p with centres (u, v): coverage (1), lanes outside `keep` untouched.
         // Every pixel gets its true coverage, so groups may run past a row's run (those
         // pixels are beyond the stroke's reach: 0).
-        auto group = [&](float *p, __m128 u, __m128 v, __m128 keep) {
+        auto group = [&](float *p, __m128 u, __m128 v, __m128 keep) __attribute__((always_inline)) {
             const __m128 band = body.band4(v);
             const __m128 near_a = _mm_cmplt_ps(u, umax_a);
             const __m128 u_b = _mm_sub_ps(length4, u);
