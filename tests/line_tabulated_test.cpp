@@ -12,9 +12,15 @@
 #include <vector>
 
 #include "canvas.h"
+#include "line_test_util.h"
 #include "renderer.h"
 
 namespace {
+
+using line_test::blank;
+using line_test::compare;
+using line_test::error_stats;
+using line_test::ink;
 
 constexpr double kPi = 3.14159265358979323846;
 
@@ -25,33 +31,8 @@ constexpr int kSegments = 600;
 #endif
 
 using canvas_ptr = tiny3d::canvas_ptr;
-canvas_ptr blank(int w, int h) { return std::move(tiny3d::make_canvas(w, h).value()); }
-
-double ink(const canvas_t &c) {
-    double s = 0;
-    for (int i = 0; i < c.width * c.height; ++i) s += c.data[i];
-    return s;
-}
-
 tiny3d::line_table table_for(double thickness, tiny3d::line_cap cap = tiny3d::line_cap::round) {
     return std::move(tiny3d::line_table::make(float(thickness), cap).value());
-}
-
-struct error_stats {
-    double sum = 0, max = 0;
-    long pixels = 0;
-    double mean() const { return sum / double(std::max(pixels, 1L)); }
-};
-
-// |tabulated − reference| over the pixels either image touches.
-void compare(const canvas_t &c, const std::vector<double> &ref, error_stats &e) {
-    for (int i = 0; i < c.width * c.height; ++i) {
-        if (c.data[i] == 0.0f && ref[std::size_t(i)] == 0.0) continue;
-        const double d = std::fabs(double(c.data[i]) - ref[std::size_t(i)]);
-        e.sum += d;
-        e.max = std::max(e.max, d);
-        ++e.pixels;
-    }
 }
 
 // Random segments of length min..max px at any angle inside a 64 × 64 canvas (whole stroke

@@ -12,8 +12,14 @@
 #include <vector>
 
 #include "canvas.h"
+#include "line_test_util.h"
 
 namespace {
+
+using line_test::blank;
+using line_test::compare;
+using line_test::error_stats;
+using line_test::ink;
 
 constexpr double kPi = 3.14159265358979323846;
 
@@ -24,14 +30,6 @@ constexpr int kSegmentsPerThickness = 1000;
 #endif
 
 using canvas_ptr = tiny3d::canvas_ptr;
-
-canvas_ptr blank(int w, int h) { return std::move(tiny3d::make_canvas(w, h).value()); }
-
-double ink(const canvas_t &c) {
-    double s = 0;
-    for (int i = 0; i < c.width * c.height; ++i) s += c.data[i];
-    return s;
-}
 
 struct segment {
     float x0, y0, x1, y1;
@@ -61,22 +59,6 @@ placed_segment random_segment(std::mt19937 &rng, double thickness, double min_le
 double true_ink(const segment &s, double thickness, tiny3d::line_cap cap) {
     const double length = std::hypot(double(s.x1) - s.x0, double(s.y1) - s.y0);
     return length * thickness + (cap == tiny3d::line_cap::round ? kPi * thickness * thickness / 4 : 0.0);
-}
-
-struct error_stats {
-    double sum = 0, max = 0;
-    long pixels = 0;
-};
-
-// Accumulates |fast − reference| over the pixels either image touches.
-void compare(const canvas_t &fast, const std::vector<double> &ref, error_stats &e) {
-    for (int i = 0; i < fast.width * fast.height; ++i) {
-        if (fast.data[i] == 0.0f && ref[std::size_t(i)] == 0.0) continue;
-        const double d = std::fabs(double(fast.data[i]) - ref[std::size_t(i)]);
-        e.sum += d;
-        e.max = std::max(e.max, d);
-        ++e.pixels;
-    }
 }
 
 void check_against_reference(double thickness, tiny3d::line_cap cap, int count, unsigned seed,

@@ -256,6 +256,19 @@ void draw_line_tabulated(canvas_t *canvas, float x0, float y0, float x1, float y
     const int row_first = clamped_floor(std::min(ay, clip.y1) - reach, 0.0, height);
     const int row_last = clamped_ceil(std::max(ay, clip.y1) + reach, -1.0, height - 1.0);
     const bool horizontal = !(std::fabs(dy) > 1e-12);
+    // Calls draw(row, first, last, u, v) for each row's run, (u, v) the centre of pixel first.
+    auto for_each_run = [&](auto &&draw) {
+        for (int j = row_first; j <= row_last; ++j) {
+            const double ry = j + 0.5 - ay;
+            if (horizontal && std::fabs(ry) > reach) continue;
+            int first, last;
+            runs.at(ry, first, last);
+            if (first > last) continue;
+            const double rx = first + 0.5 - ax;
+            draw(canvas->data + std::size_t(j) * std::size_t(width), first, last, float(rx * dx + ry * dy),
+                 float(ry * dx - rx * dy));
+        }
+    };
 
 #ifdef __SSE2__
     if (width >= 4) {
@@ -287,16 +300,8 @@ void draw_line_tabulated(canvas_t *canvas, float x0, float y0, float x1, float y
             }
             body.blend4(p, _mm_and_ps(keep, coverage));
         };
-        for (int j = row_first; j <= row_last; ++j) {
-            const double ry = j + 0.5 - ay;
-            if (horizontal && std::fabs(ry) > reach) continue;
-            int first, last;
-            runs.at(ry, first, last);
-            if (first > last) continue;
-            const double rx = first + 0.5 - ax;
-            __m128 u = _mm_add_ps(_mm_set1_ps(float(rx * dx + ry * dy)), lane_du);
-            __m128 v = _mm_add_ps(_mm_set1_ps(float(ry * dx - rx * dy)), lane_dv);
-            float *row = canvas->data + std::size_t(j) * std::size_t(width);
+        for_each_run([&](float *row, int first, int last, float u0, float v0) {
+            __m128 u = _mm_add_ps(_mm_set1_ps(u0), lane_du), v = _mm_add_ps(_mm_set1_ps(v0), lane_dv);
             for (int i = first; i <= last; i += 4, u = _mm_add_ps(u, du4), v = _mm_add_ps(v, dv4)) {
                 if (i + 4 <= width) {
                     group(row + i, u, v, all);
@@ -306,27 +311,20 @@ void draw_line_tabulated(canvas_t *canvas, float x0, float y0, float x1, float y
                           _mm_cmpge_ps(lanes, back));
                 }
             }
-        }
+        });
         return;
     }
 #endif
     // Portable path (and canvases narrower than 4): one pixel at a time.
     const end_lookup lookup_pos(table, q), lookup_neg(table, 1.0 - q);  // v ≥ 0; v < 0 (mirrored)
-    for (int j = row_first; j <= row_last; ++j) {
-        const double ry = j + 0.5 - ay;
-        if (horizontal && std::fabs(ry) > reach) continue;
-        int first, last;
-        runs.at(ry, first, last);
-        const double rx = first + 0.5 - ax;
-        float u = float(rx * dx + ry * dy), v = float(ry * dx - rx * dy);
-        float *row = canvas->data + std::size_t(j) * std::size_t(width);
+    for_each_run([&](float *row, int first, int last, float u, float v) {
         for (int i = first; i <= last; ++i, u += du, v += dv) {
             const float band = cdf.band(v, hf), u_b = lf - u;
             const float e_a = end_a && u < umax ? (v >= 0.0f ? lookup_pos(u, v) : lookup_neg(u, -v)) : band;
             const float e_b = end_b && u_b < umax ? (v <= 0.0f ? lookup_pos(u_b, -v) : lookup_neg(u_b, v)) : band;
             detail::combine_over(row[i], ink * (e_a + e_b - band));
         }
-    }
+    });
 }
 
 }  // namespace tiny3d
