@@ -27,7 +27,11 @@ constexpr std::size_t CACHE_LINE = 64;  // bytes
 // draws bands t, t + n, t + 2n, …
 constexpr int BAND_ROWS = 32;
 constexpr int MAX_BANDS = 128;
-constexpr int BLOCKS_PER_THREAD = 4;
+// Blocks of neighbouring bands per thread: 2 (256-row blocks at 1024 px on two threads) lets
+// a thread skip whole cluster chunks (~100 rows high at Scene S level 6) far more often than
+// 4 did, and fewer triangles straddle two owners; per-thread work stayed as even on Scene S
+// and on the sphere moved off-centre (documentation/raster.md).
+constexpr int BLOCKS_PER_THREAD = 2;
 static_assert(MAX_BANDS <= 256, "row_band stores band numbers in 8 bits");
 // Guard band: the x/y clip planes sit at |x|, |y| ≤ guard·w, chosen so that the whole band
 // spans fewer pixels than the 32-bit fill allows; never tighter than the frustum itself.
