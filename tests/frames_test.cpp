@@ -123,6 +123,9 @@ void check_halves_equal_full_run(const std::string &demo, const std::vector<std:
 TEST(cube_in_two_halves_equals_one_run) { check_halves_equal_full_run("cube", {}); }
 TEST(soccer_in_two_halves_equals_one_run) { check_halves_equal_full_run("soccer", {}); }
 TEST(wireframe_in_two_halves_equals_one_run) { check_halves_equal_full_run("wireframe", {"tests/data/cube_quads.obj"}); }
+TEST(wireframe_tabulated_in_two_halves_equals_one_run) {
+    check_halves_equal_full_run("wireframe", {"tests/data/cube_quads.obj", "--lines", "tabulated"});
+}
 // Filled and shaded frames with two worker threads: the split must not change a pixel.
 TEST(shaded_in_two_halves_equals_one_run) { check_halves_equal_full_run("shaded", {"--threads", "2"}); }
 
@@ -141,5 +144,18 @@ TEST(bad_frame_ranges_fail_with_a_message) {
     CHECK(missing.exit_code != 0);
     CHECK(!missing.err.empty());
     // Nothing was written by the refused runs.
+    CHECK(files_in(out.path).empty());
+}
+
+TEST(wireframe_bad_line_method_fails_with_a_message) {
+    const std::string program = demo_path("wireframe");
+    CHECK_MSG(fs::exists(program), program + " is not built");
+    if (!fs::exists(program)) return;
+    temp_dir out, logs;
+    const run_result r = run(program, {"tests/data/cube_quads.obj", "--out", out.path.string(), "--lines", "splat"},
+                             logs.path / "bad.err");
+    CHECK(r.exit_code != 0);
+    CHECK_MSG(r.err.find("--lines") != std::string::npos && r.err.find("splat") != std::string::npos,
+              "message was: " + r.err);
     CHECK(files_in(out.path).empty());
 }
