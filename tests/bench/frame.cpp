@@ -2,10 +2,12 @@
 // 5 and 6 and the 3,696-triangle torus knot, camera (0, 0, 3), fov 45°, near 0.1, far 100,
 // Gouraud Lambert (ambient 0.1, light towards (1, 1, 1)), depth LESS, back-face culling,
 // colour and depth cleared every frame, mesh turned 1° about +y per frame; 5 warm-up and 50
-// timed frames (median, min, max ms); one and two threads; frame time against triangle
-// count for levels 3–7; the reference renderers' published figures beside ours.
+// timed frames (median, min, max ms); one and two threads, with cluster culling
+// (make_raster_clusters, built once before timing) and, for comparison, without; frame time
+// against triangle count for levels 3–7; the reference renderers' published figures beside
+// ours.
 // Error column: fraction of pixels where the two-thread frame differs from the one-thread
-// frame (must be 0), and for the scan-line row, the fraction differing from half-space.
+// frame, or the frame without clusters from the frame with them (must be 0).
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -22,12 +24,14 @@ constexpr double NS_PER_MS = 1e6;
 
 struct scene {
     tiny3d::raster_mesh mesh;
+    tiny3d::raster_clusters clusters;
     tiny3d::draw_params params;
 };
 
 scene make_scene(const tiny3d::mesh &m) {
     scene s;
     s.mesh = tiny3d::make_raster_mesh(m, tiny3d::mesh_vertex_normals(m)).value();
+    s.clusters = tiny3d::make_raster_clusters(s.mesh).value();
     const light_t light = {{1, 1, 1}, 1.0f};
     s.params.lights = tiny3d::make_light_rig(std::span<const light_t>(&light, 1), 0.1f).value();
     s.params.view_projection = mat4_multiply(tiny3d::mat4_perspective(static_cast<float>(45 * M_PI / 180), 1.0f, 0.1f, 100.0f),
@@ -35,9 +39,11 @@ scene make_scene(const tiny3d::mesh &m) {
     return s;
 }
 
-// Times frames of the scene with `threads`; the last frame stays in `canvas`.
-bench::timing time_frames(scene &s, int threads, canvas_t &canvas, int frames) {
+// Times frames of the scene with `threads`, with or without its clusters; the last frame
+// stays in `canvas`.
+bench::timing time_frames(scene &s, int threads, canvas_t &canvas, int frames, bool clusters = true) {
     tiny3d::render_context ctx(threads);
+    s.params.clusters = clusters ? &s.clusters : nullptr;
     int frame = 0;
     auto render = [&] {
         s.params.model = tiny3d::mat4_rotate_y(static_cast<float>(frame++ * M_PI / 180));
@@ -63,6 +69,7 @@ int main(int argc, char **argv) {
     const bench::options o = bench::parse_options(argc, argv);
     const int frames = o.quick ? 5 : TIMED_FRAMES;
     tiny3d::canvas_ptr one = tiny3d::make_canvas(SIDE, SIDE).value(), two = tiny3d::make_canvas(SIDE, SIDE).value();
+    tiny3d::canvas_ptr plain = tiny3d::make_canvas(SIDE, SIDE).value();
     std::vector<bench::row> rows;
     struct workload {
         std::string name;
@@ -93,6 +100,10 @@ int main(int argc, char **argv) {
         const bench::timing t1 = time_frames(s, 1, *one, frames);
         const bench::timing t2 = time_frames(s, 2, *two, frames);
         const double diff = differing_fraction(*one, *two);
+        const bench::timing t1_plain = time_frames(s, 1, *plain, frames, false);
+        const double diff1_plain = differing_fraction(*one, *plain);
+        const bench::timing t2_plain = time_frames(s, 2, *plain, frames, false);
+        const double diff2_plain = differing_fraction(*one, *plain);
         const double triangles = static_cast<double>(s.mesh.triangles.size());
         add_point(triangles, {w.small3dlib_ms, w.small3dlib_ms, w.small3dlib_ms}, w.name + " small3dlib (published)");
         add_point(triangles, {w.llvmpipe_ms, w.llvmpipe_ms, w.llvmpipe_ms}, w.name + " llvmpipe (published)");
@@ -107,6 +118,10 @@ int main(int argc, char **argv) {
         rows.push_back({"frame", w.name + " libtiny3d 1 thread", "fast", "ms/frame", t1, 0.0, 0.0, "px fraction", ""});
         rows.push_back({"frame", w.name + " libtiny3d 2 threads", "fast", "ms/frame", t2, diff, diff, "px fraction",
                         "error = pixels differing from 1 thread"});
+        rows.push_back({"frame", w.name + " libtiny3d 1 thread, no clusters", "other", "ms/frame", t1_plain, diff1_plain,
+                        diff1_plain, "px fraction", "error = pixels differing from the frame with clusters"});
+        rows.push_back({"frame", w.name + " libtiny3d 2 threads, no clusters", "other", "ms/frame", t2_plain, diff2_plain,
+                        diff2_plain, "px fraction", "error = pixels differing from the 1-thread frame with clusters"});
     }
     // Frame time against triangle count (one thread).
     std::printf("frame time vs triangle count (1 thread, median ms):\n");
