@@ -25,7 +25,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
-#include <optional>
 #include <span>
 #include <vector>
 
@@ -155,7 +154,7 @@ enum class line_method {
     tabulated, // tiny3d::draw_line_tabulated: the same stroke and combine, the pixels near
                // each end interpolated from a line_table of the exact end coverage (max
                // error ~0.01, mean ~1e-4 per line); the workspace builds the table once per
-               // thickness (~20 ms at 1.5 px)
+               // thickness (~18 ms at 1.5 px) and keeps the last few
 };
 
 struct wireframe_options {
@@ -194,7 +193,9 @@ struct wireframe_stats {
 };
 
 // Buffers the wireframe renderer reuses from frame to frame: after the first frame of a
-// given mesh size, rendering allocates nothing. One workspace per thread.
+// given mesh size (and, for line_method::tabulated, of each thickness among the last
+// kLineTables used), rendering allocates nothing (tests/soak_test.cpp). One workspace per
+// thread.
 class wireframe_workspace {
 public:
     struct drawn_edge {
@@ -207,7 +208,10 @@ public:
     std::vector<unsigned> outcode;         // per position
     std::vector<std::uint8_t> face_front;  // per face (hide_back_edges)
     std::vector<drawn_edge> edges;         // the frame's visible edges
-    std::optional<line_table> line_coverage_table;  // line_method::tabulated, for its thickness
+    // line_method::tabulated: the tables of the last few thicknesses drawn, most recent
+    // first (at most kLineTables), so alternating widths do not rebuild them every frame.
+    static constexpr std::size_t kLineTables = 4;
+    std::vector<line_table> line_tables;
 };
 
 // Draws the mesh's edges (mesh::edges; derive them first) transformed by model_view_proj

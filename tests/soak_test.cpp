@@ -168,7 +168,10 @@ TEST(wireframe_path_soak_without_allocation) {
         std::uniform_int_distribution<int> coin(0, 1), three(0, 2);
         canvas_clear(canvas.get(), 0.0f);
         tiny3d::wireframe_options o;
-        o.method = coin(rng) ? tiny3d::line_method::coverage : tiny3d::line_method::faithful;
+        const int pick = three(rng);  // tabulated: the workspace keeps one table per thickness
+        o.method = pick == 0   ? tiny3d::line_method::coverage
+                   : pick == 1 ? tiny3d::line_method::tabulated
+                               : tiny3d::line_method::faithful;
         o.thickness = three(rng) == 0 ? 1.0f : three(rng) == 1 ? 1.5f : 2.5f;
         o.depth_cue = coin(rng);
         o.circular_viewport = coin(rng);

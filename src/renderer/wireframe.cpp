@@ -69,8 +69,25 @@ double clip_orientation(const mesh &m, std::size_t f, const std::vector<vec4_t> 
     return sum;
 }
 
+// Moves the workspace's table for `thickness` to the front, building it if missing (the
+// least recently used table makes room).
+status use_line_table(wireframe_workspace &ws, float thickness) {
+    auto &tables = ws.line_tables;
+    const auto found = std::find_if(tables.begin(), tables.end(),
+                                    [&](const line_table &t) { return t.thickness() == thickness; });
+    if (found != tables.end()) {
+        std::rotate(tables.begin(), found, found + 1);
+        return {};
+    }
+    result<line_table> made = line_table::make(thickness);
+    if (!made) return error{"", 0, -1, "render_wireframe: " + made.err().reason};
+    if (tables.size() >= wireframe_workspace::kLineTables) tables.pop_back();
+    tables.insert(tables.begin(), std::move(made).value());
+    return {};
+}
+
 void draw_segment(canvas_t &canvas, const screen_segment &s, line_method method, float thickness, float ink,
-                  const std::optional<line_table> &table) {
+                  const line_table *table) {
     if (method == line_method::tabulated) {
         draw_line_tabulated(&canvas, s.x0, s.y0, s.x1, s.y1, *table, ink);
     } else if (method == line_method::coverage) {
@@ -113,11 +130,10 @@ status render_wireframe(canvas_t &canvas, const mesh &m, const mat4_t &model_vie
     wireframe_stats &st = stats ? *stats : local;
     st = {};
     if (status s = check_inputs(canvas, m, o); !s) return s;
-    if (o.method == line_method::tabulated &&
-        (!ws.line_coverage_table || ws.line_coverage_table->thickness() != o.thickness)) {
-        result<line_table> table = line_table::make(o.thickness);
-        if (!table) return error{"", 0, -1, "render_wireframe: " + table.err().reason};
-        ws.line_coverage_table = std::move(table).value();
+    const line_table *table = nullptr;
+    if (o.method == line_method::tabulated) {
+        if (status s = use_line_table(ws, o.thickness); !s) return s;
+        table = &ws.line_tables.front();
     }
 
     cull_result cull = cull_result::intersecting;
@@ -199,8 +215,7 @@ status render_wireframe(canvas_t &canvas, const mesh &m, const mat4_t &model_vie
         else if (!o.edge_intensity.empty()) ink *= o.edge_intensity[d.edge];
         if (o.depth_cue && depth_range > 0.0f) ink *= 1.0f - (1.0f - o.depth_cue_far) * ((d.depth - nearest) / depth_range);
         if (!(ink > 0.0f)) continue;
-        draw_segment(canvas, {d.x0, d.y0, d.x1, d.y1, d.depth}, o.method, o.thickness, std::min(ink, 1.0f),
-                     ws.line_coverage_table);
+        draw_segment(canvas, {d.x0, d.y0, d.x1, d.y1, d.depth}, o.method, o.thickness, std::min(ink, 1.0f), table);
         ++st.edges_drawn;
     }
     return {};
