@@ -165,6 +165,12 @@ struct vertex_job {
     bool directional_gouraud;  // Gouraud with directional lights only: the SSE2 shading path
 };
 
+// What a thread does with one cluster chunk of the draw: skip it, or walk it (and whether it
+// counts the chunk's culled triangles).
+struct chunk_walk {
+    bool walk, counts;
+};
+
 // The vertices one transform() call handles: 0..count−1, or list[0..count).
 struct vertex_set {
     const std::uint32_t *list;
@@ -334,6 +340,7 @@ struct render_context::impl {
         std::vector<triangle_edges> wide;
         std::vector<generic_triangle> generic;
         std::vector<std::uint32_t> bins[MAX_BANDS];  // fast-triangle indices per band
+        std::vector<chunk_walk> chunks;              // this draw's cluster chunks, as decided
         frame_stats stats;
     };
     segment segments[MAX_THREADS];
@@ -506,22 +513,37 @@ void render_context::impl::setup(const raster_mesh &m, const draw_params &p, con
         setup_range(m, p, state, job.generic, thread, thread == 0, 0, m.triangles.size(), out);
         return;
     }
-    const std::uint32_t *chunk_vertices = p.clusters->vertices().data();
-    for (const raster_cluster &c : p.clusters->clusters()) {
+    // First decide every chunk, then transform: the vertices of the walked chunks one chunk
+    // at a time when they are fewer than the mesh's (a vertex shared by two walked chunks is
+    // transformed twice), else every vertex at once (meshes whose chunks are rarely skipped).
+    const std::vector<raster_cluster> &chunks = p.clusters->clusters();
+    out.chunks.resize(chunks.size());
+    std::size_t walked_vertices = 0;
+    for (std::size_t k = 0; k < chunks.size(); ++k) {
+        const raster_cluster &c = chunks[k];
         const detail::cluster_verdict v = detail::classify_cluster(*view, c);
         const bool on_target = v.inside && v.row0 <= v.row1;
         const int counter = on_target ? band_owner[band_of(v.row0)] : 0;
+        chunk_walk &decision = out.chunks[k];
+        decision = {false, thread == counter};
         if (v.back) {
-            if (thread == counter) {
+            if (decision.counts) {
                 out.stats.culled_backface += c.count;
                 out.stats.backface_by_cluster += c.count;
             }
             continue;
         }
-        if (v.inside && thread != counter && !(on_target && draws_rows(thread, v.row0, v.row1))) continue;
-        // Only the vertices of walked chunks are transformed (shared ones once per chunk).
-        transform(m, p, job, {chunk_vertices + c.vertex_first, c.vertex_count}, out);
-        setup_range(m, p, state, job.generic, thread, thread == counter, c.first, c.first + c.count, out);
+        decision.walk = !v.inside || decision.counts || (on_target && draws_rows(thread, v.row0, v.row1));
+        if (decision.walk) walked_vertices += c.vertex_count;
+    }
+    const bool per_chunk = walked_vertices < m.positions.size();
+    if (!per_chunk) transform(m, p, job, {nullptr, m.positions.size()}, out);
+    const std::uint32_t *chunk_vertices = p.clusters->vertices().data();
+    for (std::size_t k = 0; k < chunks.size(); ++k) {
+        if (!out.chunks[k].walk) continue;
+        const raster_cluster &c = chunks[k];
+        if (per_chunk) transform(m, p, job, {chunk_vertices + c.vertex_first, c.vertex_count}, out);
+        setup_range(m, p, state, job.generic, thread, out.chunks[k].counts, c.first, c.first + c.count, out);
     }
 }
 
