@@ -141,6 +141,22 @@ TEST(tabulated_body_hand_values) {
     CHECK_NEAR(ink(*d), length * 1.5 + kPi * 1.5 * 1.5 / 4, 0.02);
 }
 
+// Beyond 64 px the exact line is the faster one and draws instead: the same bits.
+TEST(tabulated_long_segments_are_exact) {
+    const tiny3d::line_table t = table_for(1.5);
+    std::mt19937 rng(12);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int k = 0; k < 20; ++k) {
+        const double length = 65.0 + 60.0 * unit(rng), angle = 2 * kPi * unit(rng);
+        const float x0 = float(70 + unit(rng)), y0 = float(70 + unit(rng));
+        const float x1 = float(x0 + length * std::cos(angle)), y1 = float(y0 + length * std::sin(angle));
+        canvas_ptr a = blank(140, 140), b = blank(140, 140);
+        tiny3d::draw_line_tabulated(a.get(), x0, y0, x1, y1, t, 0.8f);
+        tiny3d::draw_line_coverage(b.get(), x0, y0, x1, y1, 1.5f, {tiny3d::line_cap::round, 0.8f});
+        CHECK(std::memcmp(a->data, b->data, sizeof(float) * 140 * 140) == 0);
+    }
+}
+
 TEST(tabulated_reversed_is_bit_identical) {
     const tiny3d::line_table t = table_for(1.5);
     std::mt19937 rng(11);

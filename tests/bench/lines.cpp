@@ -2,7 +2,8 @@
 //   faithful  draw_line_f (the report's DDA of 0.5 px steps, a disc of splats each step)
 //   reference line_coverage_reference (exact area per pixel, double precision)
 //   fast      draw_line_coverage (closed-form exact coverage)
-//   other     16×16 supersampled stroke, Xiaolin Wu (thin), Bresenham (integer, thin)
+//   other     draw_line_tabulated (the ends from a line_table built once per T, outside the
+//             timing), 16×16 supersampled stroke, Xiaolin Wu (thin), Bresenham (integer, thin)
 // Time: ns per pixel of line length, median (min, max) over repeats of drawing a seeded
 // set of segments (lengths 5–300 px, any angle, sub-pixel ends) on a 512×512 canvas.
 // Error: |value − exact coverage| over the pixels either image touches, per segment on a
@@ -11,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <memory>
 #include <random>
 #include <string>
 #include <vector>
@@ -57,6 +59,8 @@ struct method {
 };
 
 std::vector<method> methods_for(float t) {
+    // Built once per thickness, as a program drawing many lines of one width would.
+    const auto table = std::make_shared<tiny3d::line_table>(std::move(tiny3d::line_table::make(t).value()));
     return {
         {"faithful DDA splat", "faithful", [t](canvas_t *c, const segment &s) { draw_line_f(c, s.x0, s.y0, s.x1, s.y1, t); }, false},
         {"exact reference", "reference",
@@ -69,6 +73,9 @@ std::vector<method> methods_for(float t) {
          },
          true},
         {"fast coverage", "fast", [t](canvas_t *c, const segment &s) { tiny3d::draw_line_coverage(c, s.x0, s.y0, s.x1, s.y1, t); }, false},
+        {"tabulated coverage", "other",
+         [table](canvas_t *c, const segment &s) { tiny3d::draw_line_tabulated(c, s.x0, s.y0, s.x1, s.y1, *table); },
+         false},
         {"supersampled 16x16", "other",
          [t](canvas_t *c, const segment &s) { tiny3d::draw_line_supersampled(c, s.x0, s.y0, s.x1, s.y1, t, kSupersamples); },
          true},
