@@ -755,3 +755,40 @@ TEST(clusters_of_another_mesh_are_ignored) {
     CHECK(same_frame(plain, with));
     CHECK_EQ(with.stats.backface_by_cluster, std::size_t{0});
 }
+
+TEST(clusters_with_hostile_vertices_and_matrices) {
+    // Non-finite, huge, denormal and coincident vertices, degenerate triangles, and matrices
+    // with NaN or a zero row: every chunk test must fail safe (walk the chunk), never skip
+    // wrongly, and the frame must equal the frame without clusters.
+    raster_mesh m = smooth_raster_mesh(make_icosphere(3));
+    m.positions[5] = {NAN, 0, 0};
+    m.positions[40] = {1e30f, -1e30f, 0};
+    m.positions[77] = {1e-40f, 1e-41f, -1e-40f};
+    m.positions[90] = m.positions[91];
+    m.triangles[300] = {7, 7, 8};
+    m.triangles[301] = {9, 10, 9};
+    const raster_clusters cl = make_raster_clusters(m, 16).value();
+    std::size_t without_cone = 0;
+    for (const raster_cluster &c : cl.clusters()) without_cone += !c.cone_valid;
+    CHECK(without_cone >= 3);  // the chunks holding the NaN, the 1e30 and the degenerate triangles
+    canvas_ptr c = make_canvas(96, 80).value();
+    render_context ctx(2);
+    draw_params p = scene_s_params();
+    mat4_t nan_matrix = p.view_projection, flat_matrix = p.view_projection;
+    nan_matrix.m[5] = NAN;
+    for (int col = 0; col < 4; ++col) flat_matrix.m[col * 4 + 3] = 0.0f;  // w row zero
+    std::size_t by_cluster = 0;
+    for (const mat4_t &vp : {p.view_projection, nan_matrix, flat_matrix}) {
+        p.view_projection = vp;
+        for (float angle : {0.0f, 1.0f, 2.5f}) {
+            p.model = mat4_rotate_xyz(angle, 0.3f * angle, 0);
+            p.clusters = nullptr;
+            const rendered plain = render_frame(ctx, *c, m, p);
+            p.clusters = &cl;
+            const rendered with = render_frame(ctx, *c, m, p);
+            CHECK(same_frame(plain, with));
+            by_cluster += with.stats.backface_by_cluster;
+        }
+    }
+    CHECK(by_cluster > 0);  // the finite, regular chunks still cull under the ordinary matrix
+}
