@@ -58,6 +58,21 @@ bool spin_until(Done &&done) {
     }
 }
 
+// Waits until done() holds: spins with a pause hint, yielding the core every
+// SPINS_PER_CLOCK_READ spins (the thread waited for may be waiting for this core).
+template <class Done>
+void spin_until_yielding(Done &&done) {
+    for (;;) {
+        for (int k = 0; k < SPINS_PER_CLOCK_READ; ++k) {
+            if (done()) return;
+#ifdef __SSE2__
+            _mm_pause();
+#endif
+        }
+        std::this_thread::yield();
+    }
+}
+
 // A fixed set of worker threads; run(job) calls job(i) for i = 0..n−1, i = 0 on the caller,
 // and returns when all are done. No allocation per run. A new job is announced by bumping
 // `generation_` (the job pointer is published by that release store); workers and the
@@ -349,7 +364,18 @@ struct render_context::impl {
 
     int band_count = 1;  // set per frame
     std::vector<std::uint8_t> row_band;  // the band holding each row (inverse of band_y0)
-    std::uint8_t band_owner[MAX_BANDS];  // the thread that draws each band
+    std::uint8_t band_owner[MAX_BANDS];  // the thread that sets up each band's triangles
+    // Per draw (numbered by draw_serial): which bands have been claimed for drawing, and which
+    // segments are fully set up. A band is drawn by its owner or, once the owner's segment is
+    // set up, by a thread that has finished its own bands (always from the owner's segment,
+    // in submission order, so the pixels do not depend on who draws it).
+    std::uint32_t draw_serial = 0;
+    std::atomic<std::uint32_t> band_claim[MAX_BANDS] = {};
+    struct alignas(CACHE_LINE) ready_flag {
+        std::atomic<std::uint32_t> serial{0};
+    };
+    ready_flag segment_ready[MAX_THREADS];
+    bool claim_band(int b) { return band_claim[b].exchange(draw_serial, std::memory_order_relaxed) != draw_serial; }
     int bands() const { return band_count; }
     int band_of(int y) const { return row_band[static_cast<std::size_t>(y)]; }
     // Whether thread t draws a band among rows [y0, y1] (inclusive, inside the target).
@@ -729,19 +755,44 @@ void render_context::draw(const raster_mesh &mesh, const draw_params &params) {
         seg.stats = {};
         for (int b = 0; b < s.bands(); ++b) seg.bins[b].clear();
         s.setup(mesh, params, job, state, t, view, seg);
-        for (int band = 0; band < s.bands(); ++band) {
-            if (s.band_owner[band] != t) continue;
+        s.segment_ready[t].serial.store(s.draw_serial, std::memory_order_release);
+        auto draw_band = [&](int band, const impl::segment &from) {
             const int y0 = s.band_y0(band), y1 = s.band_y0(band + 1);
             if (s.pending_clear) s.clear_band(band);
-            for (std::uint32_t index : seg.bins[band]) {
-                const detail::fast_triangle &f = seg.fast[index];
-                detail::fill_fast_rows(*s.target, &s.depth, f, f.wide >= 0 ? &seg.wide[f.wide] : nullptr, params.depth,
+            for (std::uint32_t index : from.bins[band]) {
+                const detail::fast_triangle &f = from.fast[index];
+                detail::fill_fast_rows(*s.target, &s.depth, f, f.wide >= 0 ? &from.wide[f.wide] : nullptr, params.depth,
                                        true, y0, y1);
             }
             if (params.alpha >= 1.0f)
-                for (const generic_triangle &g : seg.generic) s.draw_generic(g, y0, y1);
+                for (const generic_triangle &g : from.generic) s.draw_generic(g, y0, y1);
+        };
+        for (int band = 0; band < s.bands(); ++band)
+            if (s.band_owner[band] == t && s.claim_band(band)) draw_band(band, seg);
+        // Then help: the other threads' bands not yet claimed, from their last band backwards
+        // (their owners go forwards), each once its owner's segment is set up.
+        for (int k = 1; k < n; ++k) {
+            const int owner = (t + k) % n;
+            const impl::segment &from = s.segments[owner];
+            bool ready = false;
+            for (int band = s.bands() - 1; band >= 0; --band) {
+                if (s.band_owner[band] != owner || s.band_claim[band].load(std::memory_order_relaxed) == s.draw_serial)
+                    continue;
+                if (!ready) {
+                    spin_until_yielding([&] {
+                        return s.segment_ready[owner].serial.load(std::memory_order_acquire) == s.draw_serial;
+                    });
+                    ready = true;
+                }
+                if (s.claim_band(band)) draw_band(band, from);
+            }
         }
     };
+    if (++s.draw_serial == 0) {  // wrapped: 0 is what the flags start from
+        for (auto &claim : s.band_claim) claim.store(0, std::memory_order_relaxed);
+        for (auto &ready : s.segment_ready) ready.serial.store(0, std::memory_order_relaxed);
+        s.draw_serial = 1;
+    }  // published to the workers by pool.run
     s.pool.run(phase_triangles);
     if (params.alpha < 1.0f)  // every segment holds all per-pixel-path triangles: take segment 0's
         for (generic_triangle g : s.segments[0].generic) {
