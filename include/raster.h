@@ -317,8 +317,9 @@ struct frame_stats {
 // translucent queue) and a worker pool of threads − 1 threads created once. A frame:
 //   begin_frame(canvas) → draw(...)* → end_frame().
 // The canvas is split into horizontal 32-row bands; each thread owns blocks of bands, sets up
-// the triangles that reach them and draws them in submission order, so the image (and the
-// stats) are identical for any thread count.
+// the triangles that reach them and draws them in submission order (a thread done with its
+// own bands draws another thread's remaining ones from that thread's set-up triangles), so
+// the image (and the stats) are identical for any thread count.
 // No allocation per frame once buffers have grown to the scene's size.
 class render_context {
 public:
