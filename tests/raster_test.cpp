@@ -792,3 +792,29 @@ TEST(clusters_with_hostile_vertices_and_matrices) {
     }
     CHECK(by_cluster > 0);  // the finite, regular chunks still cull under the ordinary matrix
 }
+
+TEST(a_vertex_index_out_of_range_draws_nothing) {
+    // The index check runs four indices at a time: put the bad one in the vector part, in the
+    // scalar tail, at the boundary value and at the top of the unsigned range.
+    const raster_mesh good = smooth_raster_mesh(make_icosphere(2));  // 320 triangles = 960 indices
+    const std::uint32_t count = static_cast<std::uint32_t>(good.positions.size());
+    canvas_ptr c = make_canvas(64, 64).value();
+    render_context ctx(2);
+    draw_params p = scene_s_params();
+    p.model = mat4_identity();
+    CHECK(render_frame(ctx, *c, good, p).stats.rasterized > 0);
+    for (std::size_t at : {std::size_t{5}, std::size_t{319}}) {
+        for (std::uint32_t bad : {count, count + 1, 0xffffffffu}) {
+            raster_mesh m = good;
+            m.triangles[at][at % 3] = bad;
+            const rendered r = render_frame(ctx, *c, m, p);
+            CHECK_EQ(r.stats.rasterized, std::size_t{0});
+            CHECK_EQ(r.stats.triangles_in, m.triangles.size());
+        }
+    }
+    raster_mesh tail = good;
+    tail.triangles.push_back({0, 1, count});  // 963 indices: the last one in the scalar tail
+    CHECK_EQ(render_frame(ctx, *c, tail, p).stats.rasterized, std::size_t{0});
+    tail.triangles.back() = {0, 1, count - 1};
+    CHECK(render_frame(ctx, *c, tail, p).stats.rasterized > 0);
+}

@@ -225,6 +225,32 @@ bool sphere_outside(const mat4_t &m, vec3_t c, float radius) {
     return false;
 }
 
+// Whether every vertex index of `triangles` is < count. Runs on the caller's thread before the
+// workers start, so it is branch-free: no early exit, four indices per SSE2 compare.
+bool indices_below(const std::vector<std::array<std::uint32_t, 3>> &triangles, std::size_t count) {
+    if (count > std::numeric_limits<std::uint32_t>::max()) return true;
+    const std::uint32_t *index = triangles.empty() ? nullptr : triangles.front().data();
+    const std::size_t n = triangles.size() * 3;
+    const std::uint32_t limit = static_cast<std::uint32_t>(count);
+    std::size_t k = 0;
+    std::uint32_t out_of_range = 0;
+#ifdef __SSE2__
+    // Unsigned index ≥ limit  ⇔  (index ^ 2³¹) > (limit − 1) ^ 2³¹ as signed (limit ≥ 1).
+    if (limit > 0) {
+        const __m128i flip = _mm_set1_epi32(static_cast<int>(0x80000000u));
+        const __m128i last = _mm_xor_si128(_mm_set1_epi32(static_cast<int>(limit - 1)), flip);
+        __m128i any = _mm_setzero_si128();
+        for (; k + 4 <= n; k += 4) {
+            const __m128i v = _mm_xor_si128(_mm_loadu_si128(reinterpret_cast<const __m128i *>(index + k)), flip);
+            any = _mm_or_si128(any, _mm_cmpgt_epi32(v, last));
+        }
+        out_of_range = static_cast<std::uint32_t>(_mm_movemask_epi8(any));
+    }
+#endif
+    for (; k < n; ++k) out_of_range |= index[k] >= limit;
+    return out_of_range == 0;
+}
+
 bool directional_only(const light_rig &rig) {
     for (int k = 0; k < rig.count; ++k)
         if (rig.lights[k].kind != light_kind::directional) return false;
@@ -723,8 +749,7 @@ void render_context::draw(const raster_mesh &mesh, const draw_params &params) {
         s.stats.culled_frustum += mesh.triangles.size();
         return;
     }
-    for (const auto &t : mesh.triangles)
-        if (t[0] >= mesh.positions.size() || t[1] >= mesh.positions.size() || t[2] >= mesh.positions.size()) return;
+    if (!indices_below(mesh.triangles, mesh.positions.size())) return;
     const bool generic = params.shade == shading::phong || params.tex != nullptr || params.alpha < 1.0f;
     const std::uint32_t state = static_cast<std::uint32_t>(s.states.size());
     s.states.push_back({params});
