@@ -261,8 +261,9 @@ inline constexpr int RASTER_CLUSTER_TRIANGLES = 64;  // default chunk size (tria
 // Builds the clusters of `m` (chunks of `triangles_per_cluster` consecutive triangles; the
 // last may be shorter). O(triangles), allocates; build once, and again whenever the mesh's
 // positions or triangles change (draw() ignores clusters whose vertex or triangle count
-// differs from the mesh's, but cannot detect moved positions: stale clusters would cull
-// wrongly). Meshes whose consecutive triangles are spatially coherent (the subdivided
+// differs from the mesh's, but cannot detect moved positions or re-indexed triangles: stale
+// clusters would cull or draw wrongly, though never read or write out of bounds — every
+// index is still checked per draw). Meshes whose consecutive triangles are spatially coherent (the subdivided
 // icosphere, grids) give narrow cones and small spheres; others still draw correctly,
 // only fewer chunks are skipped. Error when triangles_per_cluster < 1 or an index is out
 // of range.
