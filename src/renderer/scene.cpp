@@ -2,6 +2,7 @@
 #include "scene.h"
 
 #include <cmath>
+#include <optional>
 #include <string>
 
 namespace tiny3d {
@@ -36,7 +37,7 @@ struct scene::object {
     std::vector<vec3_t> edge_normal;  // model space, per edge (corrected model)
     edge_adjacency adjacency;         // for hide_back_edges
     raster_mesh triangles;            // for filled drawing (empty until first needed)
-    bool has_triangles = false;
+    std::optional<raster_clusters> clusters;  // of `triangles`: whole back-facing chunks skipped
     std::vector<vec3_t> world;        // per frame: positions in world space
     std::vector<float> ink;           // per frame: per-edge intensity
 };
@@ -61,6 +62,8 @@ result<std::size_t> scene::add_object(const mesh &m, const object_style &style) 
     auto tris = make_raster_mesh(obj->shape, mesh_vertex_normals(obj->shape));
     if (!tris) return scene_error("object " + std::to_string(objects_.size()) + ": " + tris.message());
     obj->triangles = std::move(tris.value());
+    // Meshes only move by their model matrix here, so the clusters stay valid.
+    if (auto clusters = make_raster_clusters(obj->triangles)) obj->clusters = std::move(clusters.value());
     obj->world.resize(obj->shape.positions.size());
     obj->ink.resize(obj->shape.edges.size());
     objects_.push_back(std::move(obj));
@@ -92,6 +95,7 @@ status scene::render(canvas_t &canvas) {
             params.view_projection = view_proj.value();
             params.lights = rig.value();
             params.shade = obj->style.shade;
+            params.clusters = obj->clusters ? &*obj->clusters : nullptr;
             buffers_->raster.draw(obj->triangles, params);
         }
         buffers_->raster.end_frame();
