@@ -46,12 +46,16 @@ double diamond_angle(double dx, double dy) {
     return b / (ax + ay);
 }
 
+// Offset in table.values of the direction slice nearest to the diamond angle q.
+std::size_t slice_start(const line_table &t, double q) {
+    return std::size_t(std::clamp(q, 0.0, 1.0) * t.slices + 0.5) * (std::size_t(t.nu) + 1) * (std::size_t(t.nv) + 1);
+}
+
 // E(u, v) of one end from the direction slice nearest to the stroke's (bilinear in u, v).
 class end_lookup {
 public:
     end_lookup(const line_table &table, double q)
-        : values_(table.values.data() + std::size_t(std::clamp(q, 0.0, 1.0) * table.slices + 0.5) *
-                                            (std::size_t(table.nu) + 1) * (std::size_t(table.nv) + 1)),
+        : values_(table.values.data() + slice_start(table, q)),
           row_(std::size_t(table.nu) + 1),
           u_min_(table.u_min),
           inv_u_(1.0f / table.u_step),
@@ -124,10 +128,6 @@ public:
     }
 
 private:
-    static std::size_t slice_start(const line_table &t, double q) {
-        return std::size_t(std::clamp(q, 0.0, 1.0) * t.slices + 0.5) * (std::size_t(t.nu) + 1) *
-               (std::size_t(t.nv) + 1);
-    }
     const float *values_;
     __m128 u_min_, inv_u_, inv_v_, u_cells_, v_cells_, row_, pos_, neg_;
     std::size_t row_size_;
