@@ -85,8 +85,8 @@ private:
 #ifdef __SSE2__
 // end_lookup for four pixels at once: lanes with v ≥ 0 read the `pos` slice, lanes with
 // v < 0 the `neg` slice at |v|; lanes beyond the cap's reach get 0. Indices are formed
-// in float (exact: a table holds < 2^24 values); SSE2 has no gather, so the 16 corner
-// values are loaded one by one.
+// in float (exact: a table holds < 2^24 values); SSE2 has no gather, so each lane's
+// four corners are loaded as two adjacent pairs and transposed.
 class end_lookup4 {
 public:
     end_lookup4(const line_table &table, double q_pos, double q_neg)
@@ -116,12 +116,15 @@ public:
         alignas(16) int at[4];
         _mm_store_si128(reinterpret_cast<__m128i *>(at),
                         _mm_cvttps_epi32(_mm_add_ps(slice, _mm_add_ps(_mm_mul_ps(cell_v, row_), cell_u))));
-        const std::size_t up = row_size_;
-        auto corner = [&](std::size_t offset) {
-            return _mm_set_ps(values_[std::size_t(at[3]) + offset], values_[std::size_t(at[2]) + offset],
-                              values_[std::size_t(at[1]) + offset], values_[std::size_t(at[0]) + offset]);
+        // A cell's corners are two adjacent pairs (iu, iu + 1) on rows iv and iv + 1: two
+        // 64-bit loads per lane give (c00, c10, c01, c11), transposed into one vector per corner.
+        auto cell = [&](int lane) {
+            const float *c = values_ + std::size_t(at[lane]);
+            return _mm_loadh_pi(_mm_loadl_pi(_mm_setzero_ps(), reinterpret_cast<const __m64 *>(c)),
+                                reinterpret_cast<const __m64 *>(c + row_size_));
         };
-        const __m128 c00 = corner(0), c10 = corner(1), c01 = corner(up), c11 = corner(up + 1);
+        __m128 c00 = cell(0), c10 = cell(1), c01 = cell(2), c11 = cell(3);
+        _MM_TRANSPOSE4_PS(c00, c10, c01, c11);
         const __m128 bottom = _mm_add_ps(c00, _mm_mul_ps(au, _mm_sub_ps(c10, c00)));
         const __m128 top = _mm_add_ps(c01, _mm_mul_ps(au, _mm_sub_ps(c11, c01)));
         return _mm_and_ps(inside, _mm_add_ps(bottom, _mm_mul_ps(av, _mm_sub_ps(top, bottom))));
