@@ -180,43 +180,56 @@ result<line_table> line_table::make(float thickness, line_cap cap) {
 
 namespace {
 
-// The pixel runs of a stroke, row by row: per row, the pixels whose centres lie in the
-// band |v| ≤ R and the slab −R ≤ u ≤ L + R (chords of the row's centre line, each end
-// linear in the row, so stepped by additions). Direction (dx, dy) with dx ≥ 0, unit.
+// The pixel runs of a stroke, row by row from the top: per row, the pixels whose centres
+// lie in the band |v| ≤ R and the slab −R ≤ u ≤ L + R. Each of the four chord ends (in
+// canvas x, less ½: pixel i has its centre at i + ½) is linear in the row, so it is
+// stepped by one addition per row; the chords are widened by kChordSlack (≫ the stepping's
+// rounding) so that no pixel within reach is lost (a pixel at |v| = R or u = −R has
+// coverage 0, so a few more are harmless). Direction (dx, dy) with dx ≥ 0, unit.
 class row_runs {
 public:
-    row_runs(double ax, double dx, double dy, double length, double reach, int width)
-        : ax_(ax), width_(width) {
-        constexpr double kAxisAligned = 1e-12, kUnbounded = 1e300;
-        // rx range of the band: (ry·dx ∓ R)/dy; of the slab: (−R − ry·dy)/dx … (L + R − ry·dy)/dx.
+    row_runs(double ax, double ry, double dx, double dy, double length, double reach, int width)
+        : width_(width), last_max_(width - 1.0) {
+        constexpr double kAxisAligned = 1e-12, kUnbounded = 1e30, kChordSlack = 1e-6;
+        // x − ax of the band's sides: (ry·dx ∓ R)/dy; of the slab's: (−R − ry·dy)/dx … (L + R − ry·dy)/dx.
+        double band_slope = 0, band_half = kUnbounded, slab_slope = 0, slab_lo = -kUnbounded, slab_hi = kUnbounded;
         if (std::fabs(dy) > kAxisAligned) {
-            band_slope_ = dx / dy;
-            band_half_ = reach / std::fabs(dy);
-        } else {
-            band_half_ = kUnbounded;  // rows beyond the band are not visited (first/last row)
+            const double inv_dy = 1.0 / dy;
+            band_slope = dx * inv_dy;
+            band_half = reach * std::fabs(inv_dy);
         }
         if (dx > kAxisAligned) {
-            slab_slope_ = -dy / dx;
-            slab_lo_ = -reach / dx;
-            slab_hi_ = (length + reach) / dx;
-        } else {
-            slab_lo_ = -kUnbounded;
-            slab_hi_ = kUnbounded;
+            const double inv_dx = 1.0 / dx;
+            slab_slope = -dy * inv_dx;
+            slab_lo = -reach * inv_dx;
+            slab_hi = (length + reach) * inv_dx;
         }
+        const double x = ax - 0.5, centre = x + ry * band_slope, shift = x + ry * slab_slope;
+        band_lo_ = centre - band_half - kChordSlack;
+        band_hi_ = centre + band_half + kChordSlack;
+        slab_lo_ = shift + slab_lo - kChordSlack;
+        slab_hi_ = shift + slab_hi + kChordSlack;
+        band_step_ = band_slope;
+        slab_step_ = slab_slope;
     }
-    // Pixels [first, last] of the row whose centre is ry below the start (first > last: none).
-    void at(double ry, int &first, int &last) const {
-        const double centre = ry * band_slope_, shift = ry * slab_slope_;
-        const double lo = std::max(centre - band_half_, slab_lo_ + shift);
-        const double hi = std::min(centre + band_half_, slab_hi_ + shift);
-        first = clamped_ceil(ax_ + lo - 0.5, 0.0, width_);
-        last = clamped_floor(ax_ + hi - 0.5, -1.0, width_ - 1.0);
+    // Pixels [first, last] of the current row (first > last: none), then steps to the next.
+    void next(int &first, int &last) {
+        // Clamped to the row (also keeps the unbounded sides of an axis-aligned stroke in
+        // int range), then ceil / floor of values ≥ −1 by truncation of a positive number.
+        const double lo = std::min(std::max(std::max(band_lo_, slab_lo_), 0.0), double(width_));
+        const double hi = std::min(std::max(std::min(band_hi_, slab_hi_), -1.0), last_max_);
+        first = width_ - int(double(width_) - lo);
+        last = int(hi + 1.0) - 1;
+        band_lo_ += band_step_;
+        band_hi_ += band_step_;
+        slab_lo_ += slab_step_;
+        slab_hi_ += slab_step_;
     }
 
 private:
-    double ax_;
     int width_;
-    double band_slope_ = 0, band_half_ = 0, slab_slope_ = 0, slab_lo_ = 0, slab_hi_ = 0;
+    double last_max_;
+    double band_lo_, band_hi_, slab_lo_, slab_hi_, band_step_, slab_step_;
 };
 
 }  // namespace
@@ -260,21 +273,20 @@ void draw_line_tabulated(canvas_t *canvas, float x0, float y0, float x1, float y
     // (w_hi = half the pixel's extent along the stroke): E = band there, exactly.
     const float umax = cdf.w_hi;
     const float du = float(dx), dv = float(-dy);
-    const row_runs runs(ax, dx, dy, length, reach, width);
-    const int row_first = clamped_floor(std::min(ay, clip.y1) - reach, 0.0, height);
-    const int row_last = clamped_ceil(std::max(ay, clip.y1) + reach, -1.0, height - 1.0);
-    const bool horizontal = !(std::fabs(dy) > 1e-12);
+    // Rows whose centre lies within R of the segment's y range (the stroke's full extent).
+    const int row_first = clamped_ceil(std::min(ay, clip.y1) - reach - 0.5, 0.0, height);
+    const int row_last = clamped_floor(std::max(ay, clip.y1) + reach - 0.5, -1.0, height - 1.0);
     // Calls draw(row, first, last, u, v) for each row's run, (u, v) the centre of pixel first.
     auto for_each_run = [&](auto &&draw) {
-        for (int j = row_first; j <= row_last; ++j) {
-            const double ry = j + 0.5 - ay;
-            if (horizontal && std::fabs(ry) > reach) continue;
+        double ry = row_first + 0.5 - ay;
+        row_runs runs(ax, ry, dx, dy, length, reach, width);
+        float *row = canvas->data + std::size_t(row_first) * std::size_t(width);
+        for (int j = row_first; j <= row_last; ++j, ry += 1.0, row += width) {
             int first, last;
-            runs.at(ry, first, last);
+            runs.next(first, last);
             if (first > last) continue;
             const double rx = first + 0.5 - ax;
-            draw(canvas->data + std::size_t(j) * std::size_t(width), first, last, float(rx * dx + ry * dy),
-                 float(ry * dx - rx * dy));
+            draw(row, first, last, float(rx * dx + ry * dy), float(ry * dx - rx * dy));
         }
     };
 
