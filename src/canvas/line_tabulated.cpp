@@ -94,22 +94,23 @@ public:
           u_min_(_mm_set1_ps(table.u_min)),
           inv_u_(_mm_set1_ps(1.0f / table.u_step)),
           inv_v_(_mm_set1_ps(1.0f / table.v_step)),
-          u_cells_(_mm_set1_ps(float(table.nu))),
           v_cells_(_mm_set1_ps(float(table.nv))),
+          u_top_(_mm_set1_ps(float(table.nu) - kBelowOne)),
+          v_top_(_mm_set1_ps(float(table.nv) - kBelowOne)),
           row_(_mm_set1_ps(float(table.nu + 1))),
           pos_(_mm_set1_ps(float(slice_start(table, q_pos)))),
           neg_(_mm_set1_ps(float(slice_start(table, q_neg)))),
           row_size_(table.nu + 1) {}
 
     [[gnu::always_inline]] __m128 operator()(__m128 u, __m128 v) const {
-        const __m128 zero = _mm_setzero_ps(), below_one = _mm_set1_ps(0.999f);
+        const __m128 zero = _mm_setzero_ps();
         const __m128 negative = _mm_cmplt_ps(v, zero);
         const __m128 abs_v = _mm_andnot_ps(_mm_set1_ps(-0.0f), v);
         __m128 fu = _mm_mul_ps(_mm_sub_ps(u, u_min_), inv_u_), fv = _mm_mul_ps(abs_v, inv_v_);
         const __m128 inside = _mm_and_ps(_mm_cmpgt_ps(fu, zero), _mm_cmplt_ps(fv, v_cells_));
         // Clamp into the table so every lane's corners are valid addresses.
-        fu = _mm_min_ps(_mm_max_ps(fu, zero), _mm_sub_ps(u_cells_, below_one));
-        fv = _mm_min_ps(fv, _mm_sub_ps(v_cells_, below_one));
+        fu = _mm_min_ps(_mm_max_ps(fu, zero), u_top_);
+        fv = _mm_min_ps(fv, v_top_);
         const __m128 cell_u = _mm_cvtepi32_ps(_mm_cvttps_epi32(fu)), cell_v = _mm_cvtepi32_ps(_mm_cvttps_epi32(fv));
         const __m128 au = _mm_sub_ps(fu, cell_u), av = _mm_sub_ps(fv, cell_v);
         const __m128 slice = _mm_or_ps(_mm_and_ps(negative, neg_), _mm_andnot_ps(negative, pos_));
@@ -132,7 +133,9 @@ public:
 
 private:
     const float *values_;
-    __m128 u_min_, inv_u_, inv_v_, u_cells_, v_cells_, row_, pos_, neg_;
+    // A clamped cell coordinate stays below the last cell's upper edge.
+    static constexpr float kBelowOne = 0.999f;
+    __m128 u_min_, inv_u_, inv_v_, v_cells_, u_top_, v_top_, row_, pos_, neg_;
     std::size_t row_size_;
 };
 #endif
@@ -260,8 +263,12 @@ void draw_line_tabulated(canvas_t *canvas, float x0, float y0, float x1, float y
     // no canvas pixel within reach of the stroke lies near it; it gets no cap.
     const double reach = table.reach, margin = 2.0 * reach + 2.0;
     const int width = canvas->width, height = canvas->height;
-    detail::clipped_segment clip;
-    if (!detail::clip_segment(x0, y0, x1, y1, -margin, -margin, width + margin, height + margin, clip)) return;
+    detail::clipped_segment clip{x0, y0, x1, y1, false, false};
+    // (x0 ≤ x1 here.) The common case, both ends in the grown canvas, needs no call.
+    const double y_min = std::min(y0, y1), y_max = std::max(y0, y1);
+    if (!(x0 >= -margin && x1 <= width + margin && y_min >= -margin && y_max <= height + margin) &&
+        !detail::clip_segment(x0, y0, x1, y1, -margin, -margin, width + margin, height + margin, clip))
+        return;
     const double ax = clip.x0, ay = clip.y0;
     const double length = std::max(0.0, (clip.x1 - ax) * dx + (clip.y1 - ay) * dy);
     const bool end_a = !clip.start_clipped, end_b = !clip.end_clipped;
