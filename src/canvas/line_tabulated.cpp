@@ -46,16 +46,20 @@ double diamond_angle(double dx, double dy) {
     return b / (ax + ay);
 }
 
-// Offset in table.values of the direction slice nearest to the diamond angle q.
-std::size_t slice_start(const line_table &t, double q) {
-    return std::size_t(std::clamp(q, 0.0, 1.0) * t.slices + 0.5) * (std::size_t(t.nu) + 1) * (std::size_t(t.nv) + 1);
+// The direction slice nearest to the diamond angle q; its mirror image (v → −v) is slice
+// t.slices − that.
+int nearest_slice(const line_table &t, double q) { return int(std::clamp(q, 0.0, 1.0) * t.slices + 0.5); }
+
+// Offset in table.values of direction slice s.
+std::size_t slice_start(const line_table &t, int s) {
+    return std::size_t(s) * (std::size_t(t.nu) + 1) * (std::size_t(t.nv) + 1);
 }
 
 // E(u, v) of one end from the direction slice nearest to the stroke's (bilinear in u, v).
 class end_lookup {
 public:
-    end_lookup(const line_table &table, double q)
-        : values_(table.values.data() + slice_start(table, q)),
+    end_lookup(const line_table &table, int slice)
+        : values_(table.values.data() + slice_start(table, slice)),
           row_(std::size_t(table.nu) + 1),
           u_min_(table.u_min),
           inv_u_(1.0f / table.u_step),
@@ -84,34 +88,35 @@ private:
 
 #ifdef __SSE2__
 // end_lookup for four pixels at once: lanes with v ≥ 0 read the `pos` slice, lanes with
-// v < 0 the `neg` slice at |v|; lanes beyond the cap's reach get 0. Indices are formed
+// v < 0 its mirror image at |v|; lanes beyond the cap's reach get 0 (clamped onto the
+// table's border, which is 0: line_table::make). Indices are formed
 // in float (exact: a table holds < 2^24 values); SSE2 has no gather, so each lane's
 // four corners are loaded as two adjacent pairs and transposed.
 class end_lookup4 {
 public:
-    end_lookup4(const line_table &table, double q_pos, double q_neg)
+    end_lookup4(const line_table &table, int pos)
         : values_(table.values.data()),
           u_min_(_mm_set1_ps(table.u_min)),
           inv_u_(_mm_set1_ps(1.0f / table.u_step)),
           inv_v_(_mm_set1_ps(1.0f / table.v_step)),
           v_cells_(_mm_set1_ps(float(table.nv))),
           u_top_(_mm_set1_ps(float(table.nu) - kBelowOne)),
-          v_top_(_mm_set1_ps(float(table.nv) - kBelowOne)),
+          v_last_cell_(_mm_set1_ps(float(table.nv - 1))),
           row_(_mm_set1_ps(float(table.nu + 1))),
-          pos_(_mm_set1_ps(float(slice_start(table, q_pos)))),
-          neg_(_mm_set1_ps(float(slice_start(table, q_neg)))),
+          pos_(_mm_set1_ps(float(slice_start(table, pos)))),
+          neg_(_mm_set1_ps(float(slice_start(table, table.slices - pos)))),
           row_size_(table.nu + 1) {}
 
     [[gnu::always_inline]] __m128 operator()(__m128 u, __m128 v) const {
         const __m128 zero = _mm_setzero_ps();
         const __m128 negative = _mm_cmplt_ps(v, zero);
         const __m128 abs_v = _mm_andnot_ps(_mm_set1_ps(-0.0f), v);
-        __m128 fu = _mm_mul_ps(_mm_sub_ps(u, u_min_), inv_u_), fv = _mm_mul_ps(abs_v, inv_v_);
-        const __m128 inside = _mm_and_ps(_mm_cmpgt_ps(fu, zero), _mm_cmplt_ps(fv, v_cells_));
-        // Clamp into the table so every lane's corners are valid addresses.
-        fu = _mm_min_ps(_mm_max_ps(fu, zero), u_top_);
-        fv = _mm_min_ps(fv, v_top_);
-        const __m128 cell_u = _mm_cvtepi32_ps(_mm_cvttps_epi32(fu)), cell_v = _mm_cvtepi32_ps(_mm_cvttps_epi32(fv));
+        // Clamped into the table so every lane's corners are valid addresses: u below the
+        // table reads its first column (u = −R), |v| beyond it its last row (v = R), both 0.
+        const __m128 fu = _mm_min_ps(_mm_max_ps(_mm_mul_ps(_mm_sub_ps(u, u_min_), inv_u_), zero), u_top_);
+        const __m128 fv = _mm_min_ps(_mm_mul_ps(abs_v, inv_v_), v_cells_);
+        const __m128 cell_u = _mm_cvtepi32_ps(_mm_cvttps_epi32(fu));
+        const __m128 cell_v = _mm_min_ps(_mm_cvtepi32_ps(_mm_cvttps_epi32(fv)), v_last_cell_);
         const __m128 au = _mm_sub_ps(fu, cell_u), av = _mm_sub_ps(fv, cell_v);
         const __m128 slice = _mm_or_ps(_mm_and_ps(negative, neg_), _mm_andnot_ps(negative, pos_));
         alignas(16) int at[4];
@@ -128,14 +133,14 @@ public:
         _MM_TRANSPOSE4_PS(c00, c10, c01, c11);
         const __m128 bottom = _mm_add_ps(c00, _mm_mul_ps(au, _mm_sub_ps(c10, c00)));
         const __m128 top = _mm_add_ps(c01, _mm_mul_ps(au, _mm_sub_ps(c11, c01)));
-        return _mm_and_ps(inside, _mm_add_ps(bottom, _mm_mul_ps(av, _mm_sub_ps(top, bottom))));
+        return _mm_add_ps(bottom, _mm_mul_ps(av, _mm_sub_ps(top, bottom)));
     }
 
 private:
     const float *values_;
     // A clamped cell coordinate stays below the last cell's upper edge.
     static constexpr float kBelowOne = 0.999f;
-    __m128 u_min_, inv_u_, inv_v_, v_cells_, u_top_, v_top_, row_, pos_, neg_;
+    __m128 u_min_, inv_u_, inv_v_, v_cells_, u_top_, v_last_cell_, row_, pos_, neg_;
     std::size_t row_size_;
 };
 #endif
@@ -177,6 +182,15 @@ result<line_table> line_table::make(float thickness, line_cap cap) {
                 *out++ = float(line_coverage_reference_at(px, px, ax, ay, ax + kFarEnd * dx, ay + kFarEnd * dy,
                                                           thickness, cap));
             }
+    }
+    // The first column (u = −R) and the last row of each slice (v = R) are 0 exactly: the
+    // pixel is h + √2/2 from the cap or the stroke's side, so they touch at most at a point
+    // (the reference gives ≤ 1e-14 there). Lookups beyond the reach clamp onto them.
+    const std::size_t row = std::size_t(t.nu) + 1;
+    for (int s = 0; s <= t.slices; ++s) {
+        float *slice = t.values.data() + slice_start(t, s);
+        for (int iv = 0; iv <= t.nv; ++iv) slice[std::size_t(iv) * row] = 0.0f;
+        std::fill_n(slice + std::size_t(t.nv) * row, row, 0.0f);
     }
     return t;
 }
@@ -273,7 +287,7 @@ void draw_line_tabulated(canvas_t *canvas, float x0, float y0, float x1, float y
     const double length = std::max(0.0, (clip.x1 - ax) * dx + (clip.y1 - ay) * dy);
     const bool end_a = !clip.start_clipped, end_b = !clip.end_clipped;
 
-    const double q = diamond_angle(dx, dy);
+    const int slice = nearest_slice(table, diamond_angle(dx, dy));
     const detail::square_cdf cdf(-dy, dx);
     const float hf = float(h), lf = float(length);
     // A pixel whose centre has u ≥ w_hi lies wholly on the stroke's side of an end line
@@ -285,32 +299,33 @@ void draw_line_tabulated(canvas_t *canvas, float x0, float y0, float x1, float y
     const int row_last = clamped_floor(std::max(ay, clip.y1) + reach - 0.5, -1.0, height - 1.0);
     // Calls draw(row, first, last, u, v) for each row's run, (u, v) the centre of pixel first.
     auto for_each_run = [&](auto &&draw) {
-        double ry = row_first + 0.5 - ay;
+        const double ry = row_first + 0.5 - ay, rx = 0.5 - ax;
         row_runs runs(ax, ry, dx, dy, length, reach, width);
+        // (u, v) of the centre of the row's pixel 0, stepped by (dy, dx) per row.
+        double u_row = rx * dx + ry * dy, v_row = ry * dx - rx * dy;
         float *row = canvas->data + std::size_t(row_first) * std::size_t(width);
-        for (int j = row_first; j <= row_last; ++j, ry += 1.0, row += width) {
+        for (int j = row_first; j <= row_last; ++j, u_row += dy, v_row += dx, row += width) {
             int first, last;
             runs.next(first, last);
             if (first > last) continue;
-            const double rx = first + 0.5 - ax;
-            draw(row, first, last, float(rx * dx + ry * dy), float(ry * dx - rx * dy));
+            draw(row, first, last, float(u_row + first * dx), float(v_row - first * dy));
         }
     };
 
 #ifdef __SSE2__
     if (width >= 4) {
         const detail::band_writer body(cdf, hf, ink, dv);
-        const end_lookup4 lookup4(table, q, 1.0 - q);
+        const end_lookup4 lookup4(table, slice);
         const __m128 lanes = _mm_set_ps(3.0f, 2.0f, 1.0f, 0.0f), du4 = _mm_set1_ps(4.0f * du),
                      dv4 = _mm_set1_ps(4.0f * dv);
         const __m128 du1 = _mm_set1_ps(du), dv1 = _mm_set1_ps(dv);
         const __m128 lane_du = _mm_mul_ps(lanes, du1), lane_dv = _mm_mul_ps(lanes, dv1);
         const __m128 umax_a = _mm_set1_ps(end_a ? umax : -INFINITY), umax_b = _mm_set1_ps(end_b ? umax : -INFINITY);
-        const __m128 length4 = _mm_set1_ps(lf), all = _mm_castsi128_ps(_mm_set1_epi32(-1));
-        // Four pixels at p with centres (u, v): coverage (1), lanes outside `keep` untouched.
-        // Every pixel gets its true coverage, so groups may run past a row's run (those
-        // pixels are beyond the stroke's reach: 0).
-        auto group = [&](float *p, __m128 u, __m128 v, __m128 keep) __attribute__((always_inline)) {
+        const __m128 length4 = _mm_set1_ps(lf);
+        // Coverage (1) of four pixels with centres (u, v). Every pixel gets its true
+        // coverage, so groups may run past a row's run (those pixels are beyond the
+        // stroke's reach: 0).
+        auto group = [&](__m128 u, __m128 v) __attribute__((always_inline)) {
             const __m128 band = body.band4(v);
             const __m128 near_a = _mm_cmplt_ps(u, umax_a);
             const __m128 u_b = _mm_sub_ps(length4, u);
@@ -325,17 +340,17 @@ void draw_line_tabulated(canvas_t *canvas, float x0, float y0, float x1, float y
                                     _mm_andnot_ps(near_b, band));
                 coverage = _mm_sub_ps(_mm_add_ps(e_a, e_b), band);
             }
-            body.blend4(p, _mm_and_ps(keep, coverage));
+            return coverage;
         };
         for_each_run([&](float *row, int first, int last, float u0, float v0) {
             __m128 u = _mm_add_ps(_mm_set1_ps(u0), lane_du), v = _mm_add_ps(_mm_set1_ps(v0), lane_dv);
             for (int i = first; i <= last; i += 4, u = _mm_add_ps(u, du4), v = _mm_add_ps(v, dv4)) {
                 if (i + 4 <= width) {
-                    group(row + i, u, v, all);
-                } else {  // the row's end: the group moved back inside, its first lanes done
+                    body.blend4(row + i, group(u, v));
+                } else {  // the row's end: the group moved back inside, its first lanes (done) untouched
                     const __m128 back = _mm_set1_ps(float(i + 4 - width));
-                    group(row + width - 4, _mm_sub_ps(u, _mm_mul_ps(back, du1)), _mm_sub_ps(v, _mm_mul_ps(back, dv1)),
-                          _mm_cmpge_ps(lanes, back));
+                    const __m128 cover = group(_mm_sub_ps(u, _mm_mul_ps(back, du1)), _mm_sub_ps(v, _mm_mul_ps(back, dv1)));
+                    body.blend4(row + width - 4, _mm_and_ps(_mm_cmpge_ps(lanes, back), cover));
                 }
             }
         });
@@ -343,7 +358,7 @@ void draw_line_tabulated(canvas_t *canvas, float x0, float y0, float x1, float y
     }
 #endif
     // Portable path (and canvases narrower than 4): one pixel at a time.
-    const end_lookup lookup_pos(table, q), lookup_neg(table, 1.0 - q);  // v ≥ 0; v < 0 (mirrored)
+    const end_lookup lookup_pos(table, slice), lookup_neg(table, table.slices - slice);  // v ≥ 0; v < 0 (mirrored)
     for_each_run([&](float *row, int first, int last, float u, float v) {
         for (int i = first; i <= last; ++i, u += du, v += dv) {
             const float band = cdf.band(v, hf), u_b = lf - u;
