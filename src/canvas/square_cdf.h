@@ -60,7 +60,7 @@ public:
 
     // Pixels lo..hi (0 ≤ lo ≤ hi < row_size) of `row`, pixel lo at signed distance u_lo.
     // Pixels of the row beyond lo..hi are never touched.
-    void run(float *row, int row_size, int lo, int hi, double u_lo) const {
+    void run(float *row, [[maybe_unused]] int row_size, int lo, int hi, double u_lo) const {
 #ifdef __SSE2__
         // Groups of four, the last one moved back inside the row if needed; lanes outside
         // the pixels not yet drawn get coverage 0, and v + 0·(1 − v) leaves them unchanged.
