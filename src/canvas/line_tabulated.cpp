@@ -16,6 +16,7 @@
 // v → −v turns the direction θ into 90° − θ relative to the grid.
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <cmath>
 #include <string>
 
@@ -128,7 +129,7 @@ public:
         // A cell's corners are two adjacent pairs (iu, iu + 1) on rows iv and iv + 1: two
         // 64-bit loads per lane give (c00, c10, c01, c11), transposed into one vector per corner.
         auto cell = [&](int lane) {
-            const float *c = values_ + std::size_t(at[lane]);
+            const float *c = values_ + std::uint32_t(at[lane]);  // ≥ 0: no sign extension
             return _mm_loadh_pi(_mm_loadl_pi(_mm_setzero_ps(), reinterpret_cast<const __m64 *>(c)),
                                 reinterpret_cast<const __m64 *>(c + row_size_));
         };
