@@ -265,6 +265,38 @@ private:
     std::array<double, 2> band_, slab_, band_step_, slab_step_;
 };
 
+// (u, v) of pixel centres row by row: (u0, v0) at the row's pixel 0, stepped by (dy, dx)
+// per row; pixel i adds i·(dx, −dy). In double, rounded to float per run.
+class row_frame {
+public:
+    row_frame(double u0, double v0, double dx, double dy)
+#ifdef __SSE2__
+        : uv_(_mm_set_pd(v0, u0)), down_(_mm_set_pd(dx, dy)), right_(_mm_set_pd(-dy, dx)) {}
+    void step() { uv_ = _mm_add_pd(uv_, down_); }
+    void at(int i, float &u, float &v) const {
+        const __m128 uv = _mm_cvtpd_ps(_mm_add_pd(uv_, _mm_mul_pd(_mm_set1_pd(i), right_)));
+        u = _mm_cvtss_f32(uv);
+        v = _mm_cvtss_f32(_mm_shuffle_ps(uv, uv, _MM_SHUFFLE(1, 1, 1, 1)));
+    }
+
+private:
+    __m128d uv_, down_, right_;
+#else
+        : u_(u0), v_(v0), dx_(dx), dy_(dy) {}
+    void step() {
+        u_ += dy_;
+        v_ += dx_;
+    }
+    void at(int i, float &u, float &v) const {
+        u = float(u_ + i * dx_);
+        v = float(v_ + i * -dy_);
+    }
+
+private:
+    double u_, v_, dx_, dy_;
+#endif
+};
+
 }  // namespace
 
 void draw_line_tabulated(canvas_t *canvas, float x0, float y0, float x1, float y1, const line_table &table,
@@ -317,14 +349,15 @@ void draw_line_tabulated(canvas_t *canvas, float x0, float y0, float x1, float y
     auto for_each_run = [&](auto &&draw) {
         const double ry = row_first + 0.5 - ay, rx = 0.5 - ax;
         row_runs runs(ax, ry, dx, dy, length, reach, width);
-        // (u, v) of the centre of the row's pixel 0, stepped by (dy, dx) per row.
-        double u_row = rx * dx + ry * dy, v_row = ry * dx - rx * dy;
+        row_frame uv(rx * dx + ry * dy, ry * dx - rx * dy, dx, dy);
         float *row = canvas->data + std::size_t(row_first) * std::size_t(width);
-        for (int j = row_first; j <= row_last; ++j, u_row += dy, v_row += dx, row += width) {
+        for (int j = row_first; j <= row_last; ++j, uv.step(), row += width) {
             int first, last;
             runs.next(first, last);
             if (first > last) continue;
-            draw(row, first, last, float(u_row + first * dx), float(v_row - first * dy));
+            float u, v;
+            uv.at(first, u, v);
+            draw(row, first, last, u, v);
         }
     };
 
