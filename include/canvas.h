@@ -184,14 +184,16 @@ private:
 // u, v on the direction slice nearest the stroke's) instead of integrated exactly; the
 // other pixels get the exact closed-form band area, 4 at a time with SSE2. A pixel's
 // coverage is E(u, v) + E(L − u, −v) − band(v), E the coverage of a half-infinite stroke
-// (an exact set identity for L ≥ thickness/2; shorter segments are drawn by
-// draw_line_coverage, and so are segments longer than 64 px). Error against line_coverage_reference over random segments (1–40 px, every
-// angle, thickness 0.5–8, round and butt): mean ~1e-4, max 0.008–0.012
+// (an exact set identity for L ≥ thickness/2; shorter segments, and segments longer than
+// 64 px — whose error along float-stepped rows is not tested — are drawn by
+// draw_line_coverage). Error against line_coverage_reference over random segments (1–40
+// px, every angle, thickness 0.5–8, round and butt): mean ~1e-4, max 0.008–0.012
 // (tests/line_tabulated_test.cpp bounds: mean ≤ 4e-4, max ≤ 0.015). For many short lines
 // of one width (wireframes), where the exact ends dominate draw_line_coverage's cost: per
 // segment at T = 1.5, ≈ 140 ns + 7.6 ns/px against ≈ 530 ns + 7.5 ns/px (3.3× faster at
-// 4 px, 2.5× at 16, 1.6× at 64). Drawing B→A gives the bit-identical image. Non-finite coordinates draw nothing;
-// ends far off the canvas are clipped first (the stroke continues, no cap there).
+// 4 px, 2.5× at 16, 1.6× at 64). Drawing B→A gives the bit-identical image. Non-finite
+// coordinates draw nothing; ends far off the canvas are clipped first (the stroke
+// continues, no cap there).
 void draw_line_tabulated(canvas_t *canvas, float x0, float y0, float x1, float y1, const line_table &table,
                          float intensity = 1.0f);
 
