@@ -11,6 +11,8 @@
 
 namespace line_test {
 
+constexpr double kPi = 3.14159265358979323846;
+
 inline tiny3d::canvas_ptr blank(int w, int h) { return std::move(tiny3d::make_canvas(w, h).value()); }
 
 inline double ink(const canvas_t &c) {

@@ -16,12 +16,7 @@
 
 namespace {
 
-using line_test::blank;
-using line_test::compare;
-using line_test::error_stats;
-using line_test::ink;
-
-constexpr double kPi = 3.14159265358979323846;
+using namespace line_test;  // blank, ink, error_stats, compare, kPi
 
 #if defined(__SANITIZE_ADDRESS__)
 constexpr int kSegmentsPerThickness = 250;  // sanitizers: a subset (plain run does 1,000)
