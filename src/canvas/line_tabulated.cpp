@@ -173,6 +173,9 @@ result<line_table> line_table::make(float thickness, line_cap cap) {
     t.slices = kDirectionSlices;
     t.values.resize(std::size_t(t.slices + 1) * std::size_t(t.nv + 1) * std::size_t(t.nu + 1));
     // Sample pixel (px, px); the end is placed so that the pixel's centre sits at (u, v).
+    // The first column (u = −R) and the last row of each slice (v = R) are 0 exactly: the
+    // pixel is h + √2/2 from the cap or the stroke's side, so they touch at most at a point
+    // (the reference gives ≤ 1e-14 there). Lookups beyond the reach clamp onto them.
     constexpr int px = 8;
     constexpr double centre = px + 0.5;
     float *out = t.values.data();
@@ -181,20 +184,15 @@ result<line_table> line_table::make(float thickness, line_cap cap) {
         const double dx = (1.0 - q) / norm, dy = q / norm;  // folded direction (a, b), normal (−b, a)
         for (int iv = 0; iv <= t.nv; ++iv)
             for (int iu = 0; iu <= t.nu; ++iu) {
+                if (iu == 0 || iv == t.nv) {
+                    *out++ = 0.0f;
+                    continue;
+                }
                 const double u = double(t.u_min) + iu * double(t.u_step), v = iv * double(t.v_step);
                 const double ax = centre - u * dx + v * dy, ay = centre - u * dy - v * dx;
                 *out++ = float(line_coverage_reference_at(px, px, ax, ay, ax + kFarEnd * dx, ay + kFarEnd * dy,
                                                           thickness, cap));
             }
-    }
-    // The first column (u = −R) and the last row of each slice (v = R) are 0 exactly: the
-    // pixel is h + √2/2 from the cap or the stroke's side, so they touch at most at a point
-    // (the reference gives ≤ 1e-14 there). Lookups beyond the reach clamp onto them.
-    const std::size_t row = std::size_t(t.nu) + 1;
-    for (int s = 0; s <= t.slices; ++s) {
-        float *slice = t.values.data() + slice_start(t, s);
-        for (int iv = 0; iv <= t.nv; ++iv) slice[std::size_t(iv) * row] = 0.0f;
-        std::fill_n(slice + std::size_t(t.nv) * row, row, 0.0f);
     }
     return t;
 }
@@ -315,7 +313,7 @@ void draw_line_tabulated(canvas_t *canvas, float x0, float y0, float x1, float y
     // Float ends: their differences and squares are finite in double.
     const double full_dx = double(x1) - x0, full_dy = double(y1) - y0;
     const double full_length = std::sqrt(full_dx * full_dx + full_dy * full_dy);
-    // (1) needs L ≥ h; beyond kExactFromLength the exact line's body walk is the faster one.
+    // (1) needs L ≥ h; beyond kExactFromLength the exact line draws (see the constant).
     if (!(full_length >= h) || full_length > kExactFromLength) {
         draw_line_coverage(canvas, x0, y0, x1, y1, table.thickness(), {table.cap(), ink});
         return;
