@@ -16,6 +16,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -148,15 +149,42 @@ double line_coverage_reference_at(int px, int py, double x0, double y0, double x
 void line_coverage_reference(std::vector<double> &coverage, int width, int height, double x0, double y0,
                              double x1, double y1, double thickness, line_cap cap = line_cap::round);
 
-// Coverage table for draw_line_tabulated: the exact coverage (line_coverage_reference_at,
-// double) of a pixel near the END of a long stroke of one thickness and cap, sampled in
-// the stroke's frame — u along the stroke from the end (−R … √2/2, step ≤ 1/32 px), v
-// across (0 … R, step ≤ 1/16 px), R = thickness/2 + √2/2 — for 33 directions of the stroke
-// against the pixel grid (the "diamond angle" q = b/(a + b) of the direction folded into
-// the first quadrant, 0 … 1 in steps of 1/32; 90° turns and the mirror v → −v reduce
-// every direction to these). Float, ~230 KB at thickness 1.5 (grows like R²). Building it
-// evaluates the reference ~58,000 times (~18 ms at thickness 1.5; 5.5 MB, 0.22 s at 16): make it
-// once per thickness and keep it (render_wireframe keeps one in its workspace).
+// std::allocator with 64-byte (cache line) alignment, for tables read in whole lines.
+template <class T>
+struct cache_line_allocator {
+    using value_type = T;
+    static constexpr std::align_val_t kAlignment{64};
+    cache_line_allocator() = default;
+    template <class U>
+    cache_line_allocator(const cache_line_allocator<U> &) {}
+    T *allocate(std::size_t n) { return static_cast<T *>(::operator new(n * sizeof(T), kAlignment)); }
+    void deallocate(T *p, std::size_t) { ::operator delete(p, kAlignment); }
+    template <class U>
+    bool operator==(const cache_line_allocator<U> &) const { return true; }
+};
+
+// The instruction sets draw_line_tabulated can use; each gives the same image to ~1e-6
+// (tests/line_tabulated_test.cpp checks every one this CPU runs against the reference).
+enum class line_simd {
+    portable,  // plain C++, one pixel at a time
+    sse2,      // 4 pixels at a time (every x86-64 CPU)
+    avx512     // 16 pixels at a time (AVX-512 F/VL/DQ/BW; blocks of 4 × 4, i.e. thickness ≤ ~1.8)
+};
+// The best of them this CPU runs (CPUID, read by the compiler's runtime).
+line_simd best_line_simd();
+
+// End-correction table for draw_line_tabulated. A pixel near an end of a stroke gets
+// band + D, D = (area inside the stroke that starts at that end and never stops) − (area
+// inside the infinite band): 0 except in a small block of pixels around the end (4 × 4
+// up to thickness ≈ 1.8, 8 × 8 up to 4). The table holds D, computed exactly
+// (line_coverage_reference_at, double), for such blocks: directions folded into the
+// first octant by the pixel grid's symmetries (16 intervals, both ends of each) and end
+// positions within their pixel in steps of 1/16 px per axis; a drawn end blends 8 of them
+// (bilinear in position, linear in direction). Float: 648 KB up to thickness ~1.8,
+// 2.6 MB up to 4; building it evaluates the reference ~330,000 times (~50 ms at 1.5,
+// ~0.25 s at 4): make it once per thickness and keep it (render_wireframe keeps them in
+// its workspace). Thicker than 4 px (up to kMaxThickness) the table is empty and
+// draw_line_tabulated draws with the exact line.
 class line_table {
 public:
     static constexpr float kMaxThickness = 16.0f;
@@ -165,37 +193,56 @@ public:
 
     float thickness() const { return thickness_; }
     line_cap cap() const { return cap_; }
+    // Instruction set used to draw (best_line_simd() unless changed). use_simd returns
+    // false, changing nothing, for one this CPU does not run.
+    line_simd simd() const { return simd_; }
+    bool use_simd(line_simd simd);
 
-    // Internal layout (for the drawer): values[(slice·(nv + 1) + iv)·(nu + 1) + iu] at
-    // u = u_min + iu·u_step, v = iv·v_step, q = slice / slices.
-    float u_min = 0, u_step = 0, v_step = 0, reach = 0;
-    int nu = 0, nv = 0, slices = 0;
-    std::vector<float> values;
+    // Internal layout (for the drawer). Block side S = stamp_size (0: no table);
+    // stamps[(((interval·2 + end)·kStampPhases + sy)·kStampPhases + sx)·S² + b·S + a];
+    // stamp_axes per interval: first pixel (origin) and the cell from which it is one
+    // further (jump), for x then y — see src/canvas/line_tabulated.cpp.
+    static constexpr int kStampIntervals = 16, kStampCells = 16, kStampPhases = kStampCells + 2;
+    float reach = 0;  // thickness/2 + √2/2: how far a stroke reaches pixel centres
+    int stamp_size = 0;
+    std::vector<int> stamp_axes;
+    std::vector<float, cache_line_allocator<float>> stamps;  // each 4 × 4 block in one cache line
 
 private:
     line_table() = default;
     float thickness_ = 0;
     line_cap cap_ = line_cap::round;
+    line_simd simd_ = line_simd::portable;
 };
 
 // The tabulated anti-aliased thick line: the stroke of draw_line_coverage (same
 // thickness and cap as `table`, same "over" combine; intensity clamped to ≤ 1, ≤ 0 or NaN
-// draws nothing), but each pixel near an end is interpolated from `table` (bilinear in
-// u, v on the direction slice nearest the stroke's) instead of integrated exactly; the
-// other pixels get the exact closed-form band area, 4 at a time with SSE2. A pixel's
-// coverage is E(u, v) + E(L − u, −v) − band(v), E the coverage of a half-infinite stroke
-// (an exact set identity for L ≥ thickness/2; shorter segments, and segments longer than
-// 64 px — whose error along float-stepped rows is not tested — are drawn by
-// draw_line_coverage). Error against line_coverage_reference over random segments (1–40
-// px, every angle, thickness 0.5–8, round and butt): mean ~1e-4, max 0.008–0.012
-// (tests/line_tabulated_test.cpp bounds: mean ≤ 4e-4, max ≤ 0.015). For many short lines
-// of one width (wireframes), where the exact ends dominate draw_line_coverage's cost: per
-// segment at T = 1.5, ≈ 140 ns + 7.6 ns/px against ≈ 530 ns + 7.5 ns/px (3.3× faster at
-// 4 px, 2.5× at 16, 1.6× at 64). Drawing B→A gives the bit-identical image. Non-finite
-// coordinates draw nothing; ends far off the canvas are clipped first (the stroke
-// continues, no cap there).
+// draws nothing). A pixel's coverage is band + D_A + D_B: the exact closed-form area of
+// the infinite band, plus each end's correction D (see line_table) interpolated from the
+// table's blocks — an exact set identity for L ≥ thickness/2; shorter segments, segments
+// longer than 64 px (whose error along float-stepped rows is not tested) and thicknesses
+// over 4 px are drawn by draw_line_coverage. Pixels are done 16 at a time with AVX-512
+// (tiles of 4 × 4, 8 × 2 or 16 × 1 pixels, the narrowest the stroke fits), 4 at a time
+// with SSE2, or one at a time: table.simd(). Error against line_coverage_reference over
+// random segments (1–40 px, every angle, thickness 0.5–3, round and butt): mean
+// 5e-5–1.1e-4, max 0.008–0.014, 0.021 at thickness 1 with round caps
+// (tests/line_tabulated_test.cpp bounds: mean ≤ 2e-4, max ≤ 0.015, 0.025 at 1). Speed per
+// 6.4-px segment at T = 1.5 (random places on a 1024² canvas, this 2-core AMD EPYC):
+// ≈ 128 ns with AVX-512, ≈ 205 ns with SSE2, ≈ 600 ns portable (tests/bench/lines.cpp for
+// the length sweep). Drawing B→A gives the bit-identical image. Non-finite coordinates
+// draw nothing; ends far off the canvas are clipped first (the stroke continues, no cap
+// there).
 void draw_line_tabulated(canvas_t *canvas, float x0, float y0, float x1, float y1, const line_table &table,
                          float intensity = 1.0f);
+
+// Many tabulated lines of one table at once (the wireframe's way): the image of calling
+// draw_line_tabulated on each segment in order, bit for bit, but faster, as the table
+// reads of several segments overlap. No allocation. Null `segments` draws nothing.
+struct line_segment {
+    float x0, y0, x1, y1;
+    float intensity = 1.0f;
+};
+void draw_lines_tabulated(canvas_t *canvas, const line_segment *segments, std::size_t count, const line_table &table);
 
 // Supersampled stroke: coverage = fraction of samples_per_axis² stratified samples per
 // pixel inside the stroke (samples_per_axis = 16 in the benchmark), combined "over".

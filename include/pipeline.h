@@ -151,10 +151,10 @@ enum class line_method {
                // only decide which edges are skipped, ink ≤ 0)
     coverage,  // tiny3d::draw_line_coverage: exact area coverage, round caps, combined
                // "over" (v += c·(1 − v)) with c = ink · coverage
-    tabulated, // tiny3d::draw_line_tabulated: the same stroke and combine, the pixels near
-               // each end interpolated from a line_table of the exact end coverage (max
-               // error ~0.01, mean ~1e-4 per line); the workspace builds the table once per
-               // thickness (~18 ms at 1.5 px) and keeps the last few
+    tabulated, // tiny3d::draw_lines_tabulated: the same stroke and combine, the pixels near
+               // each end corrected from a line_table of exact end corrections (max error
+               // ≤ 0.015, 0.025 at 1 px; mean ~1e-4 per line); the workspace builds the
+               // table once per thickness (~50 ms at 1.5 px) and keeps the last few
 };
 
 struct wireframe_options {

@@ -1,24 +1,38 @@
 // line_tabulated.cpp — the tabulated thick line (include/canvas.h): the stroke of
-// draw_line_coverage with the pixels near its ends interpolated from a table of the exact
-// end coverage instead of integrated.
+// draw_line_coverage with the pixels near its ends interpolated from a table of exact
+// end corrections instead of integrated.
 //
-// Frame of an end: origin at the end point, u along the stroke (into it), v across.
-// E(u, v) = area of the pixel (centre at (u, v)) inside the half-infinite stroke that
-// starts at that end. For a stroke A→B of length L:
+// Frame of a stroke: u along it (from end A), v across. E_A = area of a pixel inside the
+// half-infinite stroke that starts at end A (and runs on through B), E_B likewise. For a
+// stroke A→B of length L:
 //   stroke = K_A ∩ K_B, K_A ∪ K_B = the infinite band |v| ≤ h (when L ≥ h, each cap's disc
 //   lies inside the other half-infinite stroke), so by inclusion–exclusion
-//   coverage = E(u, v) + E(L − u, −v) − band(v)                                        (1)
-// with band(v) the closed-form band area (square_cdf.h). E(u, v) = band(v) once the
-// pixel lies wholly on the stroke's side of the end line (u ≥ √2/2 covers every angle)
-// and 0 beyond the cap's reach (u ≤ −R or |v| ≥ R, R = h + √2/2).
-// Symmetries used by the table: turning the picture by 90° about a pixel centre maps
-// pixels to pixels and keeps (u, v), so only the direction modulo 90° matters; mirroring
-// v → −v turns the direction θ into 90° − θ relative to the grid.
+//   coverage = E_A + E_B − band = band + D_A + D_B,   D = E − band                      (1)
+// with band(v) the closed-form band area (square_cdf.h). D_A = 0 for a pixel wholly on the
+// stroke's side of A's end line (u ≥ w_hi, half the pixel's extent along the stroke) or
+// out of the band's reach (|v| ≥ R, R = h + √2/2); beyond the cap's reach (u ≤ −R) the
+// pixel is simply not drawn. So D_A is non-zero only in a small rectangle around A — at
+// most 4 × 4 pixels up to T ≈ 1.8, 8 × 8 up to T = 4 — and the table stores those blocks.
+//
+// The table ("stamps"): pixel-grid symmetries (flip x, flip y, swap x and y) fold any end
+// into one with its stroke leaving in direction (a, b), a ≥ b ≥ 0, i.e. q = b/(a + b) in
+// [0, ½]; q is cut into kStampIntervals intervals. For each interval, both of its end
+// directions, and each end position phase (the end point's offset within its pixel, in
+// steps of 1/kStampCells per axis), the table holds D of an S × S block of pixels. An end
+// is drawn from 8 blocks: bilinear in its phase, linear in q. The block's placement is
+// the same for the 2 × 2 phases of one cell and both directions of one interval (see
+// stamp_axis_layout), so the 8 blocks combine lane for lane. Interpolating in direction
+// matters: the nearest direction alone rotates the whole block about the end point, and
+// 1.8° at 1.4 px from it moves the pixels by 0.04 px (errors up to 0.045 were measured).
 #include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cmath>
 #include <string>
+
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h>
+#endif
 
 #include "canvas.h"
 #include "line_clip.h"
@@ -28,132 +42,131 @@ namespace tiny3d {
 namespace {
 
 constexpr double kHalfDiagonal = 0.70710678118654752;
-// Table range along u: beyond kUMax (≥ √2/2) the pixel is on the stroke's side of the end line.
-constexpr double kUMax = 0.7072;
-constexpr double kUStep = 1.0 / 32.0, kVStep = 1.0 / 16.0;
-constexpr int kDirectionSlices = 32;
-// Segments longer than this (px) are drawn by draw_line_coverage (exact). Set when the
-// exact line was the faster one there; per segment at T = 1.5 the tabulated line now takes
-// ≈ 140 ns + 7.6 ns/px against ≈ 530 ns + 7.5 ns/px, and is still 1.2× faster at 256 px
-// with this limit lifted — but u and v are stepped in float along a row, and the error of
-// longer segments has not been tested, so the limit stays.
+// Segments longer than this (px) are drawn by draw_line_coverage (exact): u and v are
+// stepped in float along a row, and the error of longer segments has not been tested.
 constexpr double kExactFromLength = 64.0;
 // Length of the straight part used to sample a half-infinite stroke (its far end is out
-// of reach of the sampled pixel).
+// of reach of the sampled pixels).
 constexpr double kFarEnd = 64.0;
+// Largest block side the drawers handle (T ≤ 4 at kStampCells = 16).
+constexpr int kMaxBlock = 8;
+// Strokes prepared together by draw_lines_tabulated.
+constexpr int kBatch = 8;
 
-// The direction (dx, dy) folded into the first quadrant by 90° turns, as the diamond
-// angle q = b / (a + b) ∈ [0, 1] of the folded (a, b).
-double diamond_angle(double dx, double dy) {
-    const double ax = std::fabs(dx), ay = std::fabs(dy);
-    const double b = dx * dy >= 0.0 ? ay : ax;  // quadrants 1, 3: (|dx|, |dy|); 2, 4: (|dy|, |dx|)
-    return b / (ax + ay);
-}
-
-// The direction slice nearest to the diamond angle q; its mirror image (v → −v) is slice
-// t.slices − that.
-int nearest_slice(const line_table &t, double q) { return int(std::clamp(q, 0.0, 1.0) * t.slices + 0.5); }
-
-// Offset in table.values of direction slice s.
-std::size_t slice_start(const line_table &t, int s) {
-    return std::size_t(s) * (std::size_t(t.nu) + 1) * (std::size_t(t.nv) + 1);
-}
-
-// E(u, v) of one end from the direction slice nearest to the stroke's (bilinear in u, v).
-class end_lookup {
-public:
-    end_lookup(const line_table &table, int slice)
-        : values_(table.values.data() + slice_start(table, slice)),
-          row_(std::size_t(table.nu) + 1),
-          u_min_(table.u_min),
-          inv_u_(1.0f / table.u_step),
-          inv_v_(1.0f / table.v_step),
-          nu_(table.nu),
-          nv_(float(table.nv)) {}
-
-    // v ≥ 0, u below the table's upper end (√2/2); 0 beyond the cap's reach.
-    float operator()(float u, float v) const {
-        const float fu = (u - u_min_) * inv_u_, fv = v * inv_v_;
-        if (!(fu > 0.0f) || !(fv < nv_)) return 0.0f;
-        const int iu = std::min(int(fu), nu_ - 1), iv = int(fv);
-        const float au = fu - float(iu), av = fv - float(iv);
-        const float *c = values_ + std::size_t(iv) * row_ + std::size_t(iu);
-        const float bottom = c[0] + au * (c[1] - c[0]), top = c[row_] + au * (c[row_ + 1] - c[row_]);
-        return bottom + av * (top - bottom);
+// One axis of a stamp layout: the end region's pixel-centre offsets from the end point
+// lie in the open interval lo..hi; a phase cell c (end point at Px + φ, φ ∈ [c, c+1]/cells)
+// then needs pixels Px + first(c) … Px + last(c). first(c) steps up at most once over the
+// cells (at `jump`), so the blocks of cell c start at origin + (c ≥ jump).
+struct stamp_axis_layout {
+    int origin = 0, jump = 0, size = 0;
+    stamp_axis_layout(double lo, double hi) {
+        constexpr int cells = line_table::kStampCells;
+        auto first = [&](int c) { return int(std::floor(double(c) / cells + lo - 0.5)) + 1; };
+        auto last = [&](int c) { return int(std::ceil(double(c + 1) / cells + hi - 0.5)) - 1; };
+        origin = first(0);
+        jump = cells;
+        for (int c = 0; c < cells; ++c) {
+            if (first(c) > origin && jump == cells) jump = c;
+            size = std::max(size, last(c) - first(c) + 1);
+        }
     }
-
-private:
-    const float *values_;
-    std::size_t row_;
-    float u_min_, inv_u_, inv_v_;
-    int nu_;
-    float nv_;
+    // Stored sample s (0 … cells + 1) → its phase sample and its block's first pixel.
+    int phase(int s) const { return s <= jump ? s : s - 1; }
+    int origin_of(int s) const { return s <= jump ? origin : origin + 1; }
 };
 
-#ifdef __SSE2__
-// end_lookup for four pixels at once: lanes with v ≥ 0 read the `pos` slice, lanes with
-// v < 0 its mirror image at |v|; lanes beyond the cap's reach get 0 (clamped onto the
-// table's border, which is 0: line_table::make). Indices are formed
-// in float (exact: a table holds < 2^24 values); SSE2 has no gather, so each lane's
-// four corners are loaded as two adjacent pairs and transposed.
-class end_lookup4 {
-public:
-    end_lookup4(const line_table &table, int pos)
-        : values_(table.values.data()),
-          u_min_(_mm_set1_ps(table.u_min)),
-          inv_u_(_mm_set1_ps(1.0f / table.u_step)),
-          inv_v_(_mm_set1_ps(1.0f / table.v_step)),
-          v_cells_(_mm_set1_ps(float(table.nv))),
-          u_top_(_mm_set1_ps(float(table.nu) - kBelowOne)),
-          v_last_cell_(_mm_set1_ps(float(table.nv - 1))),
-          row_(_mm_set1_ps(float(table.nu + 1))),
-          pos_(_mm_set1_ps(float(slice_start(table, pos)))),
-          neg_(_mm_set1_ps(float(slice_start(table, table.slices - pos)))),
-          row_size_(table.nu + 1) {}
+// Unit direction of stamp slice k (q = b / (a + b) = k / (2·intervals)).
+void stamp_direction(double k, double &a, double &b) {
+    const double q = k / (2.0 * line_table::kStampIntervals), norm = std::hypot(1.0 - q, q);
+    a = (1.0 - q) / norm;
+    b = q / norm;
+}
 
-    [[gnu::always_inline]] __m128 operator()(__m128 u, __m128 v) const {
-        const __m128 zero = _mm_setzero_ps();
-        const __m128 negative = _mm_cmplt_ps(v, zero);
-        const __m128 abs_v = _mm_andnot_ps(_mm_set1_ps(-0.0f), v);
-        // Clamped into the table so every lane's corners are valid addresses: u below the
-        // table reads its first column (u = −R), |v| beyond it its last row (v = R), both 0.
-        const __m128 fu = _mm_min_ps(_mm_max_ps(_mm_mul_ps(_mm_sub_ps(u, u_min_), inv_u_), zero), u_top_);
-        const __m128 fv = _mm_min_ps(_mm_mul_ps(abs_v, inv_v_), v_cells_);
-        const __m128 cell_u = _mm_cvtepi32_ps(_mm_cvttps_epi32(fu));
-        const __m128 cell_v = _mm_min_ps(_mm_cvtepi32_ps(_mm_cvttps_epi32(fv)), v_last_cell_);
-        const __m128 au = _mm_sub_ps(fu, cell_u), av = _mm_sub_ps(fv, cell_v);
-        const __m128 slice = _mm_or_ps(_mm_and_ps(negative, neg_), _mm_andnot_ps(negative, pos_));
-        alignas(16) int at[4];
-        _mm_store_si128(reinterpret_cast<__m128i *>(at),
-                        _mm_cvttps_epi32(_mm_add_ps(slice, _mm_add_ps(_mm_mul_ps(cell_v, row_), cell_u))));
-        // A cell's corners are two adjacent pairs (iu, iu + 1) on rows iv and iv + 1: two
-        // 64-bit loads per lane give (c00, c10, c01, c11), transposed into one vector per corner.
-        auto cell = [&](int lane) {
-            const float *c = values_ + std::uint32_t(at[lane]);  // ≥ 0: no sign extension
-            return _mm_loadh_pi(_mm_loadl_pi(_mm_setzero_ps(), reinterpret_cast<const __m64 *>(c)),
-                                reinterpret_cast<const __m64 *>(c + row_size_));
-        };
-        __m128 c00 = cell(0), c10 = cell(1), c01 = cell(2), c11 = cell(3);
-        _MM_TRANSPOSE4_PS(c00, c10, c01, c11);
-        const __m128 bottom = _mm_add_ps(c00, _mm_mul_ps(au, _mm_sub_ps(c10, c00)));
-        const __m128 top = _mm_add_ps(c01, _mm_mul_ps(au, _mm_sub_ps(c11, c01)));
-        return _mm_add_ps(bottom, _mm_mul_ps(av, _mm_sub_ps(top, bottom)));
-    }
-
-private:
-    const float *values_;
-    // A clamped cell coordinate stays below the last cell's upper edge.
-    static constexpr float kBelowOne = 0.999f;
-    __m128 u_min_, inv_u_, inv_v_, v_cells_, u_top_, v_last_cell_, row_, pos_, neg_;
-    std::size_t row_size_;
+// Layout of direction interval k (slices k … k + 1): bounds of the end region over
+// directions sampled across the interval.
+struct stamp_interval_layout {
+    stamp_axis_layout x, y;
 };
-#endif
+stamp_interval_layout interval_layout(int k, double reach) {
+    constexpr int kSamples = 16;
+    double xmin = 1e9, xmax = -1e9, ymin = 1e9, ymax = -1e9;
+    for (int i = 0; i <= kSamples; ++i) {
+        double a, b;
+        stamp_direction(k + double(i) / kSamples, a, b);
+        const double w_hi = 0.5 * (a + b);
+        for (double s : {-reach, w_hi})
+            for (double t : {-reach, reach}) {
+                const double ox = s * a - t * b, oy = s * b + t * a;
+                xmin = std::min(xmin, ox);
+                xmax = std::max(xmax, ox);
+                ymin = std::min(ymin, oy);
+                ymax = std::max(ymax, oy);
+            }
+    }
+    return {stamp_axis_layout(xmin, xmax), stamp_axis_layout(ymin, ymax)};
+}
+
+void build_stamps(line_table &t, double reach, float thickness, line_cap cap) {
+    constexpr int intervals = line_table::kStampIntervals, phases = line_table::kStampPhases;
+    int size = 0;
+    for (int k = 0; k < intervals; ++k) {
+        const stamp_interval_layout g = interval_layout(k, reach);
+        size = std::max({size, g.x.size, g.y.size});
+    }
+    const int side = (size + 3) / 4 * 4;  // whole SIMD groups (the extra pixels hold 0)
+    if (side > kMaxBlock) return;         // too wide for the drawers: the exact line draws
+    t.stamp_size = side;
+    const std::size_t area = std::size_t(side) * std::size_t(side);
+    t.stamps.assign(std::size_t(intervals) * 2 * phases * phases * area, 0.0f);
+    t.stamp_axes.assign(std::size_t(intervals) * 4, 0);
+    constexpr int base = 32;  // the sampled end sits in pixel (base, base)
+    for (int k = 0; k < intervals; ++k) {
+        const stamp_interval_layout g = interval_layout(k, reach);
+        int *axes = &t.stamp_axes[std::size_t(k) * 4];
+        axes[0] = g.x.origin;
+        axes[1] = g.x.jump;
+        axes[2] = g.y.origin;
+        axes[3] = g.y.jump;
+        for (int end = 0; end < 2; ++end) {
+            double dx, dy;
+            stamp_direction(k + end, dx, dy);
+            for (int sy = 0; sy < phases; ++sy)
+                for (int sx = 0; sx < phases; ++sx) {
+                    const double px = base + double(g.x.phase(sx)) / line_table::kStampCells;
+                    const double py = base + double(g.y.phase(sy)) / line_table::kStampCells;
+                    const double fx = px + kFarEnd * dx, fy = py + kFarEnd * dy;  // far along the stroke
+                    const double bx = px - kFarEnd * dx, by = py - kFarEnd * dy;  // far back: the band
+                    float *out = &t.stamps[(((std::size_t(k) * 2 + end) * phases + sy) * phases + sx) * area];
+                    for (int b = 0; b < size; ++b)
+                        for (int a = 0; a < size; ++a) {
+                            const int ix = base + g.x.origin_of(sx) + a, iy = base + g.y.origin_of(sy) + b;
+                            const double e = line_coverage_reference_at(ix, iy, px, py, fx, fy, thickness, cap);
+                            const double band = line_coverage_reference_at(ix, iy, bx, by, fx, fy, thickness, cap);
+                            out[b * side + a] = float(e - band);
+                        }
+                }
+        }
+    }
+}
 
 // ceil(v) as an int, v clamped to [lo, hi] first (so ±inf and huge values convert safely).
 int clamped_ceil(double v, double lo, double hi) { return -detail::floor_to_int(-std::clamp(v, lo, hi)); }
 int clamped_floor(double v, double lo, double hi) { return detail::floor_to_int(std::clamp(v, lo, hi)); }
 
 }  // namespace
+
+line_simd best_line_simd() {
+#if defined(__x86_64__) && defined(__GNUC__)
+    if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
+        __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512bw"))
+        return line_simd::avx512;
+#endif
+#ifdef __SSE2__
+    return line_simd::sse2;
+#else
+    return line_simd::portable;
+#endif
+}
 
 result<line_table> line_table::make(float thickness, line_cap cap) {
     if (!std::isfinite(thickness) || !(thickness > 0.0f) || thickness > kMaxThickness)
@@ -163,38 +176,17 @@ result<line_table> line_table::make(float thickness, line_cap cap) {
     line_table t;
     t.thickness_ = thickness;
     t.cap_ = cap;
-    const double h = 0.5 * double(thickness), reach = h + kHalfDiagonal;
+    t.simd_ = best_line_simd();
+    const double reach = 0.5 * double(thickness) + kHalfDiagonal;
     t.reach = float(reach);
-    t.u_min = float(-reach);
-    t.nu = int(std::ceil((kUMax + reach) / kUStep));
-    t.u_step = float((kUMax + reach) / t.nu);
-    t.nv = int(std::ceil(reach / kVStep));
-    t.v_step = float(reach / t.nv);
-    t.slices = kDirectionSlices;
-    t.values.resize(std::size_t(t.slices + 1) * std::size_t(t.nv + 1) * std::size_t(t.nu + 1));
-    // Sample pixel (px, px); the end is placed so that the pixel's centre sits at (u, v).
-    // The first column (u = −R) and the last row of each slice (v = R) are 0 exactly: the
-    // pixel is h + √2/2 from the cap or the stroke's side, so they touch at most at a point
-    // (the reference gives ≤ 1e-14 there). Lookups beyond the reach clamp onto them.
-    constexpr int px = 8;
-    constexpr double centre = px + 0.5;
-    float *out = t.values.data();
-    for (int s = 0; s <= t.slices; ++s) {
-        const double q = double(s) / t.slices, norm = std::hypot(1.0 - q, q);
-        const double dx = (1.0 - q) / norm, dy = q / norm;  // folded direction (a, b), normal (−b, a)
-        for (int iv = 0; iv <= t.nv; ++iv)
-            for (int iu = 0; iu <= t.nu; ++iu) {
-                if (iu == 0 || iv == t.nv) {
-                    *out++ = 0.0f;
-                    continue;
-                }
-                const double u = double(t.u_min) + iu * double(t.u_step), v = iv * double(t.v_step);
-                const double ax = centre - u * dx + v * dy, ay = centre - u * dy - v * dx;
-                *out++ = float(line_coverage_reference_at(px, px, ax, ay, ax + kFarEnd * dx, ay + kFarEnd * dy,
-                                                          thickness, cap));
-            }
-    }
+    build_stamps(t, reach, thickness, cap);
     return t;
+}
+
+bool line_table::use_simd(line_simd simd) {
+    if (int(simd) > int(best_line_simd())) return false;
+    simd_ = simd;
+    return true;
 }
 
 namespace {
@@ -295,15 +287,467 @@ private:
 #endif
 };
 
+
+// A stroke ready for the per-pixel loops (see draw_line_tabulated).
+struct stroke_setup {
+    double ax = 0, ay = 0, dx = 0, dy = 0, length = 0, reach = 0;
+    bool end_a = true, end_b = true;  // false: that end was clipped off (no cap)
+    detail::square_cdf cdf{0.0, 1.0};
+    float half = 0, length_f = 0, du = 0, dv = 0, ink = 0;
+    int row_first = 0, row_last = -1;
+};
+
+// Calls draw(row, y, first, last, uv) for each canvas row y the stroke reaches, with its run
+// of pixels first..last and the row's frame (uv.at(i) = (u, v) of pixel i's centre).
+// (draw_avx512 has its own copy of this loop: code compiled for AVX-512 must not be shared.)
+template <class Draw>
+void for_each_run(canvas_t *canvas, const stroke_setup &s, Draw &&draw) {
+    const int width = canvas->width;
+    const double ry = s.row_first + 0.5 - s.ay, rx = 0.5 - s.ax;
+    row_runs runs(s.ax, ry, s.dx, s.dy, s.length, s.reach, width);
+    row_frame uv(rx * s.dx + ry * s.dy, ry * s.dx - rx * s.dy, s.dx, s.dy);
+    float *row = canvas->data + std::size_t(s.row_first) * std::size_t(width);
+    for (int j = s.row_first; j <= s.row_last; ++j, uv.step(), row += width) {
+        int first, last;
+        runs.next(first, last);
+        if (first <= last) draw(row, j, first, last, uv);
+    }
+}
+
+// Where one end's correction comes from: the 8 table blocks (s000 + i·next_x + j·next_y +
+// k·next_q, i, j, k ∈ {0, 1}) and their weights, the fold (applied from the canvas to the
+// table: flip x, flip y, then swap) and the canvas pixel of the block's first element
+// after unfolding.
+struct end_source {
+    const float *s000;
+    std::size_t next_x, next_y, next_q;
+    float wx, wy, wq;
+    bool flip_x, flip_y, swap;
+    int x0, y0;
+};
+
+// The end at (px, py) whose stroke leaves it in direction (ex, ey) (unit).
+end_source locate_end(const line_table &t, double px, double py, double ex, double ey) {
+    end_source e;
+    e.flip_x = ex < 0.0;
+    e.flip_y = ey < 0.0;
+    double cx = e.flip_x ? -px : px, cy = e.flip_y ? -py : py;
+    double ax = std::fabs(ex), ay = std::fabs(ey);
+    e.swap = ay > ax;
+    if (e.swap) {
+        std::swap(cx, cy);
+        std::swap(ax, ay);
+    }
+    constexpr int intervals = line_table::kStampIntervals, cells = line_table::kStampCells;
+    const double fq = ay / (ax + ay) * (2 * intervals);  // q in units of half an interval... of one slice step
+    const int k = std::min(int(fq), intervals - 1);
+    e.wq = float(fq - k);
+    const int fx = detail::floor_to_int(cx), fy = detail::floor_to_int(cy);
+    const double phx = (cx - fx) * cells, phy = (cy - fy) * cells;
+    const int kx = std::min(int(phx), cells - 1), ky = std::min(int(phy), cells - 1);
+    e.wx = float(phx - kx);
+    e.wy = float(phy - ky);
+    const int *axes = &t.stamp_axes[std::size_t(k) * 4];
+    const bool past_x = kx >= axes[1], past_y = ky >= axes[3];
+    const int sx = kx + past_x, sy = ky + past_y;
+    const int size = t.stamp_size;
+    const std::size_t area = std::size_t(size) * std::size_t(size), phases = line_table::kStampPhases;
+    e.s000 = t.stamps.data() + (((std::size_t(k) * 2) * phases + std::size_t(sy)) * phases + std::size_t(sx)) * area;
+    e.next_x = area;
+    e.next_y = phases * area;
+    e.next_q = phases * phases * area;
+    // The block's canonical pixels (fx + ox + a, fy + oy + b) → canvas pixels.
+    const int cx0 = fx + axes[0] + past_x, cy0 = fy + axes[2] + past_y;
+    const int ux0 = e.swap ? cy0 : cx0, uy0 = e.swap ? cx0 : cy0;  // first pixel after unswapping
+    e.x0 = e.flip_x ? -(ux0 + size - 1) - 1 : ux0;
+    e.y0 = e.flip_y ? -(uy0 + size - 1) - 1 : uy0;
+    return e;
+}
+
+// One end's correction D laid out on the canvas: block pixel (x0 + c, y0 + r) at
+// rows[r·stride + kPad + c], each row padded with kPad zeros on both sides so a group of 4
+// pixels overlapping the block anywhere reads its part with one unaligned load.
+struct end_block {
+    static constexpr int kPad = 4, kStride = kMaxBlock + 2 * kPad;
+    int x0 = 0, y0 = 0, size = 0;
+    alignas(16) float rows[kMaxBlock * kStride];
+};
+
+// The block in canonical order: trilinear blend of the 8 table blocks, element by element.
+void blend_blocks(const end_source &e, int size, float *canonical) {
+    const int area = size * size;
+    for (int i = 0; i < area; ++i) {
+        auto bilinear = [&](const float *p) {
+            const float bottom = p[0] + e.wx * (p[e.next_x] - p[0]);
+            const float top = p[e.next_y] + e.wx * (p[e.next_y + e.next_x] - p[e.next_y]);
+            return bottom + e.wy * (top - bottom);
+        };
+        const float d0 = bilinear(e.s000 + i), d1 = bilinear(e.s000 + e.next_q + i);
+        canonical[i] = d0 + e.wq * (d1 - d0);
+    }
+}
+
+// Canonical element (a, b) of a size × size block → its place in the canvas block.
+int unfolded_index(const end_source &e, int size, int a, int b) {
+    int ux = e.swap ? b : a, uy = e.swap ? a : b;
+    if (e.flip_x) ux = size - 1 - ux;
+    if (e.flip_y) uy = size - 1 - uy;
+    return uy * size + ux;
+}
+
+void fill_block_portable(const end_source &e, int size, end_block &block) {
+    float canonical[kMaxBlock * kMaxBlock];
+    blend_blocks(e, size, canonical);
+    block.x0 = e.x0;
+    block.y0 = e.y0;
+    block.size = size;
+    std::fill(std::begin(block.rows), std::end(block.rows), 0.0f);
+    for (int b = 0; b < size; ++b)
+        for (int a = 0; a < size; ++a) {
+            const int at = unfolded_index(e, size, a, b);
+            block.rows[(at / size) * end_block::kStride + end_block::kPad + at % size] = canonical[b * size + a];
+        }
+}
+
+#ifdef __SSE2__
+// fill_block_portable with SSE2, for a block of Size × Size (a multiple of 4): the same
+// blend 4 elements at a time, then unfolded 4 × 4 tile by tile (swap = transpose, flips =
+// reversed order).
+template <int Size>
+void fill_block_sse2(const end_source &e, end_block &block) {
+    constexpr int stride = end_block::kStride, tiles = Size / 4;
+    alignas(16) float canonical[Size * Size];
+    const __m128 wx = _mm_set1_ps(e.wx), wy = _mm_set1_ps(e.wy), wq = _mm_set1_ps(e.wq);
+    auto lerp = [](__m128 p, __m128 q, __m128 w) { return _mm_add_ps(p, _mm_mul_ps(w, _mm_sub_ps(q, p))); };
+    auto bilinear = [&](const float *p) {
+        return lerp(lerp(_mm_loadu_ps(p), _mm_loadu_ps(p + e.next_x), wx),
+                    lerp(_mm_loadu_ps(p + e.next_y), _mm_loadu_ps(p + e.next_y + e.next_x), wx), wy);
+    };
+    for (int i = 0; i < Size * Size; i += 4)
+        _mm_store_ps(canonical + i, lerp(bilinear(e.s000 + i), bilinear(e.s000 + e.next_q + i), wq));
+    block.x0 = e.x0;
+    block.y0 = e.y0;
+    block.size = Size;
+    const __m128 zero = _mm_setzero_ps();
+    for (int r = 0; r < Size; ++r) {
+        _mm_store_ps(block.rows + r * stride, zero);
+        _mm_store_ps(block.rows + r * stride + end_block::kPad + Size, zero);
+    }
+    for (int tb = 0; tb < tiles; ++tb)
+        for (int ta = 0; ta < tiles; ++ta) {
+            const float *src = canonical + (tb * Size + ta) * 4;
+            __m128 r0 = _mm_load_ps(src), r1 = _mm_load_ps(src + Size), r2 = _mm_load_ps(src + 2 * Size),
+                   r3 = _mm_load_ps(src + 3 * Size);
+            int tx = ta, ty = tb;  // the tile's place after unswapping
+            if (e.swap) {
+                _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
+                std::swap(tx, ty);
+            }
+            if (e.flip_x) {
+                r0 = _mm_shuffle_ps(r0, r0, _MM_SHUFFLE(0, 1, 2, 3));
+                r1 = _mm_shuffle_ps(r1, r1, _MM_SHUFFLE(0, 1, 2, 3));
+                r2 = _mm_shuffle_ps(r2, r2, _MM_SHUFFLE(0, 1, 2, 3));
+                r3 = _mm_shuffle_ps(r3, r3, _MM_SHUFFLE(0, 1, 2, 3));
+                tx = tiles - 1 - tx;
+            }
+            if (e.flip_y) {
+                std::swap(r0, r3);
+                std::swap(r1, r2);
+                ty = tiles - 1 - ty;
+            }
+            float *dst = block.rows + ty * 4 * stride + end_block::kPad + tx * 4;
+            _mm_store_ps(dst, r0);
+            _mm_store_ps(dst + stride, r1);
+            _mm_store_ps(dst + 2 * stride, r2);
+            _mm_store_ps(dst + 3 * stride, r3);
+        }
+}
+
+// Four pixels at a time along each row's run: coverage (1), the band in closed form and
+// each end's correction read from its block where the group overlaps it.
+void draw_sse2(canvas_t *canvas, const stroke_setup &s, const line_table &table) {
+    const int width = canvas->width;
+    const detail::band_writer body(s.cdf, s.half, s.ink, s.dv);
+    end_block block_a, block_b;
+    auto fill = [&](end_block &block, double px, double py, double ex, double ey) {
+        const end_source e = locate_end(table, px, py, ex, ey);
+        if (table.stamp_size == 4) fill_block_sse2<4>(e, block);
+        else fill_block_sse2<8>(e, block);
+    };
+    if (s.end_a) fill(block_a, s.ax, s.ay, s.dx, s.dy);
+    if (s.end_b) fill(block_b, s.ax + s.length * s.dx, s.ay + s.length * s.dy, -s.dx, -s.dy);
+    const __m128 lanes = _mm_set_ps(3.0f, 2.0f, 1.0f, 0.0f);
+    const __m128 lane_du = _mm_mul_ps(lanes, _mm_set1_ps(s.du)), lane_dv = _mm_mul_ps(lanes, _mm_set1_ps(s.dv));
+    // Pixels beyond a cap's reach (u ≤ −R, u ≥ L + R) are not drawn: (1) holds only within.
+    const __m128 u_lo = _mm_set1_ps(s.end_a ? -float(s.reach) : -INFINITY);
+    const __m128 u_hi = _mm_set1_ps(s.end_b ? s.length_f + float(s.reach) : INFINITY);
+    // The blocks' placement in registers (as far as the compiler knows, canvas stores may
+    // change the blocks).
+    const int ya = block_a.y0, xa = block_a.x0, yb = block_b.y0, xb = block_b.x0;
+    const unsigned size_a = unsigned(block_a.size), size_b = unsigned(block_b.size);
+    for_each_run(canvas, s, [&](float *row, int y, int first, int last, const row_frame &uv) {
+        // Each block's row (rows[.. + kPad] = its pixel x0), or null.
+        const float *row_a = unsigned(y - ya) < size_a ? block_a.rows + (y - ya) * end_block::kStride + end_block::kPad : nullptr;
+        const float *row_b = unsigned(y - yb) < size_b ? block_b.rows + (y - yb) * end_block::kStride + end_block::kPad : nullptr;
+        float u0, v0;
+        for (int i = first; i <= last; i += 4) {
+            const int x = std::min(i, width - 4);  // the row's end: the last group moved back inside
+            uv.at(x, u0, v0);
+            const __m128 u = _mm_add_ps(_mm_set1_ps(u0), lane_du), v = _mm_add_ps(_mm_set1_ps(v0), lane_dv);
+            __m128 cover = body.band4(v);
+            // Groups overlapping a block's columns: −4 < x − x0 < size.
+            if (row_a && unsigned(x - xa + 3) < size_a + 3) cover = _mm_add_ps(cover, _mm_loadu_ps(row_a + (x - xa)));
+            if (row_b && unsigned(x - xb + 3) < size_b + 3) cover = _mm_add_ps(cover, _mm_loadu_ps(row_b + (x - xb)));
+            __m128 keep = _mm_and_ps(_mm_cmpgt_ps(u, u_lo), _mm_cmplt_ps(u, u_hi));
+            if (x != i) keep = _mm_andnot_ps(_mm_cmplt_ps(lanes, _mm_set1_ps(float(i - x))), keep);  // done lanes
+            body.blend4(row + x, _mm_and_ps(keep, cover));
+        }
+    });
+}
+#endif
+
+// One pixel at a time (no SSE2, or canvases narrower than 4 pixels).
+void draw_portable(canvas_t *canvas, const stroke_setup &s, const line_table &table) {
+    end_block block_a, block_b;
+    if (s.end_a) fill_block_portable(locate_end(table, s.ax, s.ay, s.dx, s.dy), table.stamp_size, block_a);
+    if (s.end_b)
+        fill_block_portable(locate_end(table, s.ax + s.length * s.dx, s.ay + s.length * s.dy, -s.dx, -s.dy),
+                            table.stamp_size, block_b);
+    const float u_lo = s.end_a ? -float(s.reach) : -INFINITY, u_hi = s.end_b ? s.length_f + float(s.reach) : INFINITY;
+    auto correction = [](const end_block &b, int x, int y) {
+        const unsigned r = unsigned(y - b.y0), c = unsigned(x - b.x0);
+        return r < unsigned(b.size) && c < unsigned(b.size) ? b.rows[r * end_block::kStride + end_block::kPad + c] : 0.0f;
+    };
+    for_each_run(canvas, s, [&](float *row, int y, int first, int last, const row_frame &uv) {
+        for (int i = first; i <= last; ++i) {
+            float u, v;
+            uv.at(i, u, v);
+            if (!(u > u_lo && u < u_hi)) continue;
+            const float cover = s.cdf.band(v, s.half) + correction(block_a, i, y) + correction(block_b, i, y);
+            detail::combine_over(row[i], s.ink * cover);
+        }
+    });
+}
+
+#if defined(__x86_64__) && defined(__GNUC__)
+// ---- AVX-512 ----
+// Compiled for AVX-512 here (the rest of the library stays baseline x86-64) and run only
+// on CPUs that have it (best_line_simd). What it calls from outside this region is
+// baseline inline code, which may be inlined into it; nothing defined here is called
+// from outside except draw_avx512. No FMA contraction: the same arithmetic as the SSE2
+// path, rounding step by step.
+#define TINY3D_LINE_AVX512 1
+#pragma GCC push_options
+#pragma GCC target("avx512f,avx512vl,avx512dq,avx512bw")
+#pragma GCC optimize("fp-contract=off")
+// GCC 12's AVX-512 intrinsics pass _mm512_undefined_ps() (self-initialised) as the unused
+// merge source, which -W(maybe-)uninitialized reports once inlined (GCC bug 105593).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#pragma GCC diagnostic ignored "-Wuninitialized"
+// Vector arguments and results between functions of this file only: no ABI to keep.
+#pragma GCC diagnostic ignored "-Wpsabi"
+
+// Unfolding a 4 × 4 block (unfolded_index) as a permutation: for fold = swap·4 + flip_y·2 +
+// flip_x, canvas lane l takes canonical lane kUnfold4[fold][l].
+struct alignas(64) lane_indices : std::array<std::int32_t, 16> {};
+constexpr std::array<lane_indices, 8> unfold_tables() {
+    std::array<lane_indices, 8> out{};
+    for (int fold = 0; fold < 8; ++fold)
+        for (int b = 0; b < 4; ++b)
+            for (int a = 0; a < 4; ++a) {
+                int ux = fold & 4 ? b : a, uy = fold & 4 ? a : b;
+                if (fold & 1) ux = 3 - ux;
+                if (fold & 2) uy = 3 - uy;
+                out[std::size_t(fold)][std::size_t(uy * 4 + ux)] = b * 4 + a;
+            }
+    return out;
+}
+constexpr std::array<lane_indices, 8> kUnfold4 = unfold_tables();
+
+// A 4 × 4 end block in one register, lane r·4 + c = canvas pixel (x0 + c, y0 + r).
+struct block16 {
+    __m512 values;
+    int x0, y0;
+    bool live;
+};
+
+void make_block16(const line_table &table, bool live, double px, double py, double ex, double ey, block16 &out) {
+    out = {_mm512_setzero_ps(), 0, 0, live};
+    if (!live) return;
+    const end_source e = locate_end(table, px, py, ex, ey);
+    const __m512 wx = _mm512_set1_ps(e.wx), wy = _mm512_set1_ps(e.wy), wq = _mm512_set1_ps(e.wq);
+    auto lerp = [](__m512 p, __m512 q, __m512 w) { return _mm512_add_ps(p, _mm512_mul_ps(w, _mm512_sub_ps(q, p))); };
+    auto bilinear = [&](const float *p) {
+        return lerp(lerp(_mm512_load_ps(p), _mm512_load_ps(p + e.next_x), wx),
+                    lerp(_mm512_load_ps(p + e.next_y), _mm512_load_ps(p + e.next_y + e.next_x), wx), wy);
+    };
+    const __m512 canonical = lerp(bilinear(e.s000), bilinear(e.s000 + e.next_q), wq);
+    const int fold = (e.swap ? 4 : 0) | (e.flip_y ? 2 : 0) | (e.flip_x ? 1 : 0);
+    out.values = _mm512_permutexvar_ps(_mm512_load_si512(kUnfold4[std::size_t(fold)].data()), canonical);
+    out.x0 = e.x0;
+    out.y0 = e.y0;
+}
+
+// Runs of up to 16 pixels of a row in one register: coverage (1), each block's row moved
+// into place by a masked permute.
+// Both ends' blocks of a stroke.
+void make_blocks16(const line_table &table, const stroke_setup &s, block16 &block_a, block16 &block_b) {
+    make_block16(table, s.end_a, s.ax, s.ay, s.dx, s.dy, block_a);
+    make_block16(table, s.end_b, s.ax + s.length * s.dx, s.ay + s.length * s.dy, -s.dx, -s.dy, block_b);
+}
+
+void draw_avx512(canvas_t *canvas, const stroke_setup &s, const block16 &block_a, const block16 &block_b) {
+    const int width = canvas->width;
+    const __m512i iota = _mm512_set_epi32(15, 14, 13, 12, 11, 10, 9, 8, 7, 6, 5, 4, 3, 2, 1, 0);
+    const __m512 lanes = _mm512_cvtepi32_ps(iota);
+    const __m512 lane_du = _mm512_mul_ps(lanes, _mm512_set1_ps(s.du)), lane_dv = _mm512_mul_ps(lanes, _mm512_set1_ps(s.dv));
+    const __m512 u_lo = _mm512_set1_ps(s.end_a ? -float(s.reach) : -INFINITY);
+    const __m512 u_hi = _mm512_set1_ps(s.end_b ? s.length_f + float(s.reach) : INFINITY);
+    // square_cdf::band, 16 lanes (as band_writer::band4).
+    const __m512 sign = _mm512_set1_ps(-0.0f), w_lo = _mm512_set1_ps(s.cdf.w_lo), w_hi = _mm512_set1_ps(s.cdf.w_hi);
+    const __m512 inv_amax = _mm512_set1_ps(s.cdf.inv_amax), inv_2ab = _mm512_set1_ps(s.cdf.inv_2ab);
+    const __m512 half = _mm512_set1_ps(s.half), ink = _mm512_set1_ps(s.ink), one = _mm512_set1_ps(1.0f);
+    auto centred = [&](__m512 x) {
+        const __m512 t = _mm512_min_ps(_mm512_andnot_ps(sign, x), w_hi);
+        const __m512 m = _mm512_max_ps(_mm512_sub_ps(t, w_lo), _mm512_setzero_ps());
+        const __m512 h = _mm512_sub_ps(_mm512_mul_ps(t, inv_amax), _mm512_mul_ps(_mm512_mul_ps(m, m), inv_2ab));
+        return _mm512_or_ps(h, _mm512_and_ps(sign, x));
+    };
+    const bool wide = s.half >= s.cdf.w_hi;
+    const __m512 saturated = centred(w_hi);
+    auto band = [&](__m512 v) {
+        const __m512 a = _mm512_andnot_ps(sign, v);
+        const __m512 near = centred(_mm512_sub_ps(half, a));
+        return _mm512_add_ps(near, wide ? saturated : centred(_mm512_add_ps(half, a)));
+    };
+    // Block b's row y for the 16 pixels from x, or 0.
+    auto correction = [&](const block16 &b, int x, int y, __m512 cover) {
+        const int r = y - b.y0, off = b.x0 - x;  // block column 0 at lane off
+        if (!b.live || unsigned(r) >= 4u || off <= -4 || off >= 16) return cover;
+        const __mmask16 at = __mmask16(off >= 0 ? 0xFu << off : 0xFu >> -off);
+        const __m512i from = _mm512_add_epi32(iota, _mm512_set1_epi32(r * 4 - off));
+        return _mm512_add_ps(cover, _mm512_maskz_permutexvar_ps(at, from, b.values));
+    };
+    const double ry = s.row_first + 0.5 - s.ay, rx = 0.5 - s.ax;
+    auto blend = [&](float *p, __mmask16 keep, __m512 cover) {
+        const __m512 c = _mm512_max_ps(_mm512_min_ps(_mm512_mul_ps(ink, cover), one), _mm512_setzero_ps());
+        const __m512 old = _mm512_maskz_loadu_ps(keep, p);
+        _mm512_mask_storeu_ps(p, keep, _mm512_add_ps(old, _mm512_mul_ps(c, _mm512_sub_ps(one, old))));
+    };
+    // Short strokes: the pixels within reach of the segment span ≤ 16 columns, so one
+    // register per row covers them all, from the same column x_lo on every row (pixels
+    // beyond the stroke get coverage 0 or lie beyond a cap: not drawn).
+    const double x_max = s.ax + s.length * s.dx;  // dx ≥ 0
+    const int x_lo = clamped_ceil(s.ax - s.reach - 0.5, 0.0, width), x_hi = clamped_floor(x_max + s.reach - 0.5, -1.0, width - 1.0);
+    // Tiles of 16 pixels: W columns from x_lo × 16/W rows (W = 4, 8 or 16), the narrowest
+    // that holds the stroke's columns: a steep stroke 4 columns wide takes a register per 4 rows.
+    auto tiles = [&]<int W>() {
+        constexpr int rows = 16 / W;
+        const __m512i lane_row = _mm512_srli_epi32(iota, W == 4 ? 2 : W == 8 ? 3 : 4);
+        const __m512i lane_col = _mm512_and_si512(iota, _mm512_set1_epi32(W - 1));
+        // block index of lane (i, c) is 4·i + c + 4·(y − y0) + (x_lo − x0)
+        const __m512i block_base = _mm512_add_epi32(_mm512_slli_epi32(lane_row, 2), lane_col);
+        const __m512 col_f = _mm512_cvtepi32_ps(lane_col), row_f = _mm512_cvtepi32_ps(lane_row);
+        const __m512 off_u = _mm512_add_ps(_mm512_mul_ps(col_f, _mm512_set1_ps(s.du)), _mm512_mul_ps(row_f, _mm512_set1_ps(float(s.dy))));
+        const __m512 off_v = _mm512_add_ps(_mm512_mul_ps(col_f, _mm512_set1_ps(s.dv)), _mm512_mul_ps(row_f, _mm512_set1_ps(float(s.dx))));
+        const __mmask16 columns = __mmask16(_mm512_cmp_epi32_mask(lane_col, _mm512_set1_epi32(x_hi - x_lo), _MM_CMPINT_LE));
+        auto add_block = [&](const block16 &b, int y, __m512 cover) {
+            const int dy0 = y - b.y0, dx0 = x_lo - b.x0;
+            if (!b.live || dy0 >= 4 || dy0 + rows <= 0 || dx0 >= 4 || dx0 + W <= 0) return cover;
+            const __mmask16 in_rows = _mm512_cmp_epu32_mask(_mm512_add_epi32(lane_row, _mm512_set1_epi32(dy0)), _mm512_set1_epi32(4), _MM_CMPINT_LT);
+            const __mmask16 in_cols = _mm512_cmp_epu32_mask(_mm512_add_epi32(lane_col, _mm512_set1_epi32(dx0)), _mm512_set1_epi32(4), _MM_CMPINT_LT);
+            const __m512i from = _mm512_add_epi32(block_base, _mm512_set1_epi32(4 * dy0 + dx0));
+            return _mm512_add_ps(cover, _mm512_maskz_permutexvar_ps(in_rows & in_cols, from, b.values));
+        };
+        const double rx_lo = rx + x_lo;
+        const __m128d down = _mm_set_pd(rows * s.dx, rows * s.dy);
+        __m128d uv_row = _mm_set_pd(ry * s.dx - rx_lo * s.dy, rx_lo * s.dx + ry * s.dy);  // (u, v) of pixel x_lo
+        float *p = canvas->data + std::size_t(s.row_first) * std::size_t(width) + std::size_t(x_lo);
+        for (int y = s.row_first; y <= s.row_last; y += rows, uv_row = _mm_add_pd(uv_row, down), p += rows * width) {
+            const __m128 uv = _mm_cvtpd_ps(uv_row);
+            const __m512 u = _mm512_add_ps(_mm512_broadcastss_ps(uv), off_u);
+            const __m512 v = _mm512_add_ps(_mm512_broadcastss_ps(_mm_movehdup_ps(uv)), off_v);
+            const __m512 cover = add_block(block_b, y, add_block(block_a, y, band(v)));
+            const int live_rows = std::min(rows, s.row_last - y + 1);
+            const __mmask16 keep = __mmask16(_mm512_cmp_ps_mask(u, u_lo, _CMP_GT_OQ) & _mm512_cmp_ps_mask(u, u_hi, _CMP_LT_OQ) &
+                                             _mm512_cmp_ps_mask(cover, _mm512_setzero_ps(), _CMP_GT_OQ) & columns &
+                                             (0xFFFFu >> (16 - live_rows * W)));
+            const __m512 c = _mm512_max_ps(_mm512_min_ps(_mm512_mul_ps(ink, cover), one), _mm512_setzero_ps());
+            if constexpr (W == 16) {
+                blend(p, keep, cover);
+            } else if constexpr (W == 8) {
+                const __mmask8 k0 = __mmask8(keep), k1 = __mmask8(keep >> 8);
+                float *p1 = live_rows > 1 ? p + width : p;  // no address past the last row
+                const __m512 old = _mm512_insertf32x8(_mm512_castps256_ps512(_mm256_maskz_loadu_ps(k0, p)), _mm256_maskz_loadu_ps(k1, p1), 1);
+                const __m512 now = _mm512_add_ps(old, _mm512_mul_ps(c, _mm512_sub_ps(one, old)));
+                _mm256_mask_storeu_ps(p, k0, _mm512_castps512_ps256(now));
+                _mm256_mask_storeu_ps(p1, k1, _mm512_extractf32x8_ps(now, 1));
+            } else {
+                float *q[4];
+                for (int i = 0; i < 4; ++i) q[i] = i < live_rows ? p + i * width : p;
+                __m512 old = _mm512_castps128_ps512(_mm_maskz_loadu_ps(__mmask8(keep & 0xF), q[0]));
+                old = _mm512_insertf32x4(old, _mm_maskz_loadu_ps(__mmask8((keep >> 4) & 0xF), q[1]), 1);
+                old = _mm512_insertf32x4(old, _mm_maskz_loadu_ps(__mmask8((keep >> 8) & 0xF), q[2]), 2);
+                old = _mm512_insertf32x4(old, _mm_maskz_loadu_ps(__mmask8((keep >> 12) & 0xF), q[3]), 3);
+                const __m512 now = _mm512_add_ps(old, _mm512_mul_ps(c, _mm512_sub_ps(one, old)));
+                _mm_mask_storeu_ps(q[0], __mmask8(keep & 0xF), _mm512_castps512_ps128(now));
+                _mm_mask_storeu_ps(q[1], __mmask8((keep >> 4) & 0xF), _mm512_extractf32x4_ps(now, 1));
+                _mm_mask_storeu_ps(q[2], __mmask8((keep >> 8) & 0xF), _mm512_extractf32x4_ps(now, 2));
+                _mm_mask_storeu_ps(q[3], __mmask8((keep >> 12) & 0xF), _mm512_extractf32x4_ps(now, 3));
+            }
+        }
+    };
+    if (x_hi < x_lo) return;
+    const int span = x_hi - x_lo + 1;
+    if (span <= 4 && x_lo + 4 <= width) return tiles.template operator()<4>();
+    if (span <= 8 && x_lo + 8 <= width) return tiles.template operator()<8>();
+    if (span <= 16) return tiles.template operator()<16>();
+    row_runs runs(s.ax, ry, s.dx, s.dy, s.length, s.reach, width);
+    row_frame uv(rx * s.dx + ry * s.dy, ry * s.dx - rx * s.dy, s.dx, s.dy);
+    float *row = canvas->data + std::size_t(s.row_first) * std::size_t(width);
+    for (int y = s.row_first; y <= s.row_last; ++y, uv.step(), row += width) {
+        int first, last;
+        runs.next(first, last);
+        for (int x = first; x <= last; x += 16) {
+            float u0, v0;
+            uv.at(x, u0, v0);
+            const __m512 u = _mm512_add_ps(_mm512_set1_ps(u0), lane_du), v = _mm512_add_ps(_mm512_set1_ps(v0), lane_dv);
+            const __m512 cover = correction(block_b, x, y, correction(block_a, x, y, band(v)));
+            const int n = std::min(16, last - x + 1);
+            const __mmask16 keep = __mmask16(_mm512_cmp_ps_mask(u, u_lo, _CMP_GT_OQ) & _mm512_cmp_ps_mask(u, u_hi, _CMP_LT_OQ) &
+                                             (0xFFFFu >> (16 - n)));
+            blend(row + x, keep, cover);
+        }
+    }
+}
+
+// Strokes prepared in a batch: all their blocks first (the table reads of several strokes
+// overlap instead of each stroke waiting for its own), then their pixels, in order.
+void draw_batch_avx512(canvas_t *canvas, const stroke_setup *strokes, int count, const line_table &table) {
+    block16 blocks[2 * kBatch];
+    for (int i = 0; i < count; ++i) make_blocks16(table, strokes[i], blocks[2 * i], blocks[2 * i + 1]);
+    for (int i = 0; i < count; ++i) draw_avx512(canvas, strokes[i], blocks[2 * i], blocks[2 * i + 1]);
+}
+
+#pragma GCC diagnostic pop
+#pragma GCC pop_options
+#endif
+
 }  // namespace
 
-void draw_line_tabulated(canvas_t *canvas, float x0, float y0, float x1, float y1, const line_table &table,
-                         float intensity) {
-    if (!canvas || !canvas->data || canvas->width <= 0 || canvas->height <= 0 || table.values.empty()) return;
+namespace {
+
+enum class stroke_kind { nothing, exact, tabulated };
+
+// Checks and clips one segment and fills `s` for the tabulated drawers.
+stroke_kind prepare_stroke(const canvas_t *canvas, float x0, float y0, float x1, float y1, const line_table &table,
+                           float intensity, stroke_setup &s) {
+    if (!canvas || !canvas->data || canvas->width <= 0 || canvas->height <= 0) return stroke_kind::nothing;
     if (!std::isfinite(x0) || !std::isfinite(y0) || !std::isfinite(x1) || !std::isfinite(y1) ||
-        !std::isfinite(intensity) || !(intensity > 0.0f))
-        return;
-    const float ink = std::min(intensity, 1.0f);
+        !std::isfinite(intensity) || !(intensity > 0.0f) || !(table.thickness() > 0.0f))
+        return stroke_kind::nothing;
+    s.ink = std::min(intensity, 1.0f);
     const double h = 0.5 * double(table.thickness());
     // Left to right (dx ≥ 0), so u grows along a canvas row.
     if (x1 < x0 || (x1 == x0 && y1 < y0)) {
@@ -313,107 +757,92 @@ void draw_line_tabulated(canvas_t *canvas, float x0, float y0, float x1, float y
     // Float ends: their differences and squares are finite in double.
     const double full_dx = double(x1) - x0, full_dy = double(y1) - y0;
     const double full_length = std::sqrt(full_dx * full_dx + full_dy * full_dy);
-    // (1) needs L ≥ h; beyond kExactFromLength the exact line draws (see the constant).
-    if (!(full_length >= h) || full_length > kExactFromLength) {
-        draw_line_coverage(canvas, x0, y0, x1, y1, table.thickness(), {table.cap(), ink});
-        return;
+    // (1) needs L ≥ h; beyond kExactFromLength, or without stamps (thick lines), the exact line draws.
+    if (!(full_length >= h) || full_length > kExactFromLength || table.stamp_size == 0) {
+        s.ax = x0;
+        s.ay = y0;
+        s.dx = x1;
+        s.dy = y1;  // the ends, for draw_line_coverage
+        return stroke_kind::exact;
     }
-    const double dx = full_dx / full_length, dy = full_dy / full_length;
+    const double inv_length = 1.0 / full_length;
+    s.dx = full_dx * inv_length;
+    s.dy = full_dy * inv_length;
     // Clip to the canvas grown by 2R + 2: a clipped end is then so far off the canvas that
     // no canvas pixel within reach of the stroke lies near it; it gets no cap.
-    const double reach = table.reach, margin = 2.0 * reach + 2.0;
+    s.reach = table.reach;
+    const double margin = 2.0 * s.reach + 2.0;
     const int width = canvas->width, height = canvas->height;
     detail::clipped_segment clip{x0, y0, x1, y1, false, false};
     // (x0 ≤ x1 here.) The common case, both ends in the grown canvas, needs no call.
     const double y_min = std::min(y0, y1), y_max = std::max(y0, y1);
     if (!(x0 >= -margin && x1 <= width + margin && y_min >= -margin && y_max <= height + margin) &&
         !detail::clip_segment(x0, y0, x1, y1, -margin, -margin, width + margin, height + margin, clip))
-        return;
-    const double ax = clip.x0, ay = clip.y0;
-    const double length = std::max(0.0, (clip.x1 - ax) * dx + (clip.y1 - ay) * dy);
-    const bool end_a = !clip.start_clipped, end_b = !clip.end_clipped;
-
-    const int slice = nearest_slice(table, diamond_angle(dx, dy));
-    const detail::square_cdf cdf(-dy, dx);
-    const float hf = float(h), lf = float(length);
-    // A pixel whose centre has u ≥ w_hi lies wholly on the stroke's side of an end line
-    // (w_hi = half the pixel's extent along the stroke): E = band there, exactly.
-    const float umax = cdf.w_hi;
-    const float du = float(dx), dv = float(-dy);
+        return stroke_kind::nothing;
+    s.ax = clip.x0;
+    s.ay = clip.y0;
+    s.length = std::max(0.0, (clip.x1 - s.ax) * s.dx + (clip.y1 - s.ay) * s.dy);
+    s.end_a = !clip.start_clipped;
+    s.end_b = !clip.end_clipped;
+    s.cdf = detail::square_cdf(-s.dy, s.dx);
+    s.half = float(h);
+    s.length_f = float(s.length);
+    s.du = float(s.dx);
+    s.dv = float(-s.dy);
     // Rows whose centre lies within R of the segment's y range (the stroke's full extent).
-    const int row_first = clamped_ceil(std::min(ay, clip.y1) - reach - 0.5, 0.0, height);
-    const int row_last = clamped_floor(std::max(ay, clip.y1) + reach - 0.5, -1.0, height - 1.0);
-    // Calls draw(row, first, last, u, v) for each row's run, (u, v) the centre of pixel first.
-    auto for_each_run = [&](auto &&draw) {
-        const double ry = row_first + 0.5 - ay, rx = 0.5 - ax;
-        row_runs runs(ax, ry, dx, dy, length, reach, width);
-        row_frame uv(rx * dx + ry * dy, ry * dx - rx * dy, dx, dy);
-        float *row = canvas->data + std::size_t(row_first) * std::size_t(width);
-        for (int j = row_first; j <= row_last; ++j, uv.step(), row += width) {
-            int first, last;
-            runs.next(first, last);
-            if (first > last) continue;
-            float u, v;
-            uv.at(first, u, v);
-            draw(row, first, last, u, v);
-        }
-    };
+    s.row_first = clamped_ceil(std::min(s.ay, clip.y1) - s.reach - 0.5, 0.0, height);
+    s.row_last = clamped_floor(std::max(s.ay, clip.y1) + s.reach - 0.5, -1.0, height - 1.0);
+    return stroke_kind::tabulated;
+}
 
-#ifdef __SSE2__
-    if (width >= 4) {
-        const detail::band_writer body(cdf, hf, ink, dv);
-        const end_lookup4 lookup4(table, slice);
-        const __m128 lanes = _mm_set_ps(3.0f, 2.0f, 1.0f, 0.0f), du4 = _mm_set1_ps(4.0f * du),
-                     dv4 = _mm_set1_ps(4.0f * dv);
-        const __m128 du1 = _mm_set1_ps(du), dv1 = _mm_set1_ps(dv);
-        const __m128 lane_du = _mm_mul_ps(lanes, du1), lane_dv = _mm_mul_ps(lanes, dv1);
-        const __m128 umax_a = _mm_set1_ps(end_a ? umax : -INFINITY), umax_b = _mm_set1_ps(end_b ? umax : -INFINITY);
-        const __m128 length4 = _mm_set1_ps(lf);
-        // Coverage (1) of four pixels with centres (u, v). Every pixel gets its true
-        // coverage, so groups may run past a row's run (those pixels are beyond the
-        // stroke's reach: 0).
-        auto group = [&](__m128 u, __m128 v) __attribute__((always_inline)) {
-            const __m128 band = body.band4(v);
-            const __m128 near_a = _mm_cmplt_ps(u, umax_a);
-            const __m128 u_b = _mm_sub_ps(length4, u);
-            const __m128 near_b = _mm_cmplt_ps(u_b, umax_b);
-            __m128 coverage = band;
-            if (_mm_movemask_ps(_mm_or_ps(near_a, near_b))) {
-                __m128 e_a = band, e_b = band;
-                if (_mm_movemask_ps(near_a))
-                    e_a = _mm_or_ps(_mm_and_ps(near_a, lookup4(u, v)), _mm_andnot_ps(near_a, band));
-                if (_mm_movemask_ps(near_b))
-                    e_b = _mm_or_ps(_mm_and_ps(near_b, lookup4(u_b, _mm_sub_ps(_mm_setzero_ps(), v))),
-                                    _mm_andnot_ps(near_b, band));
-                coverage = _mm_sub_ps(_mm_add_ps(e_a, e_b), band);
-            }
-            return coverage;
-        };
-        for_each_run([&](float *row, int first, int last, float u0, float v0) {
-            __m128 u = _mm_add_ps(_mm_set1_ps(u0), lane_du), v = _mm_add_ps(_mm_set1_ps(v0), lane_dv);
-            for (int i = first; i <= last; i += 4, u = _mm_add_ps(u, du4), v = _mm_add_ps(v, dv4)) {
-                if (i + 4 <= width) {
-                    body.blend4(row + i, group(u, v));
-                } else {  // the row's end: the group moved back inside, its first lanes (done) untouched
-                    const __m128 back = _mm_set1_ps(float(i + 4 - width));
-                    const __m128 cover = group(_mm_sub_ps(u, _mm_mul_ps(back, du1)), _mm_sub_ps(v, _mm_mul_ps(back, dv1)));
-                    body.blend4(row + width - 4, _mm_and_ps(_mm_cmpge_ps(lanes, back), cover));
-                }
-            }
-        });
+void draw_prepared(canvas_t *canvas, stroke_kind kind, const stroke_setup &s, const line_table &table) {
+    if (kind == stroke_kind::exact) {
+        draw_line_coverage(canvas, float(s.ax), float(s.ay), float(s.dx), float(s.dy), table.thickness(),
+                           {table.cap(), s.ink});
         return;
     }
+    if (kind != stroke_kind::tabulated) return;
+#ifdef TINY3D_LINE_AVX512
+    if (table.simd() == line_simd::avx512 && table.stamp_size == 4) {
+        block16 a, b;
+        make_blocks16(table, s, a, b);
+        return draw_avx512(canvas, s, a, b);
+    }
 #endif
-    // Portable path (and canvases narrower than 4): one pixel at a time.
-    const end_lookup lookup_pos(table, slice), lookup_neg(table, table.slices - slice);  // v ≥ 0; v < 0 (mirrored)
-    for_each_run([&](float *row, int first, int last, float u, float v) {
-        for (int i = first; i <= last; ++i, u += du, v += dv) {
-            const float band = cdf.band(v, hf), u_b = lf - u;
-            const float e_a = end_a && u < umax ? (v >= 0.0f ? lookup_pos(u, v) : lookup_neg(u, -v)) : band;
-            const float e_b = end_b && u_b < umax ? (v <= 0.0f ? lookup_pos(u_b, -v) : lookup_neg(u_b, v)) : band;
-            detail::combine_over(row[i], ink * (e_a + e_b - band));
+#ifdef __SSE2__
+    if (table.simd() != line_simd::portable && canvas->width >= 4) return draw_sse2(canvas, s, table);
+#endif
+    draw_portable(canvas, s, table);
+}
+
+}  // namespace
+
+void draw_line_tabulated(canvas_t *canvas, float x0, float y0, float x1, float y1, const line_table &table,
+                         float intensity) {
+    stroke_setup s;
+    draw_prepared(canvas, prepare_stroke(canvas, x0, y0, x1, y1, table, intensity, s), s, table);
+}
+
+void draw_lines_tabulated(canvas_t *canvas, const line_segment *segments, std::size_t count, const line_table &table) {
+    if (!segments) return;
+    stroke_setup strokes[kBatch];
+    stroke_kind kinds[kBatch];
+    for (std::size_t start = 0; start < count; start += kBatch) {
+        const int n = int(std::min<std::size_t>(kBatch, count - start));
+        bool all_wide = true;
+        for (int i = 0; i < n; ++i) {
+            const line_segment &g = segments[start + std::size_t(i)];
+            kinds[i] = prepare_stroke(canvas, g.x0, g.y0, g.x1, g.y1, table, g.intensity, strokes[i]);
+            all_wide = all_wide && kinds[i] == stroke_kind::tabulated;
         }
-    });
+#ifdef TINY3D_LINE_AVX512
+        if (all_wide && table.simd() == line_simd::avx512 && table.stamp_size == 4) {
+            draw_batch_avx512(canvas, strokes, n, table);
+            continue;
+        }
+#endif
+        for (int i = 0; i < n; ++i) draw_prepared(canvas, kinds[i], strokes[i], table);
+    }
 }
 
 }  // namespace tiny3d

@@ -33,10 +33,16 @@ struct square_cdf {
         const double amin_d = std::min(std::fabs(a), std::fabs(b));
         w_lo = float((amax - amin_d) / 2);
         w_hi = float((amax + amin_d) / 2);
-        inv_amax = float(1.0 / amax);
         // amin ≈ 0 (axis-aligned line): the quadratic corners are narrower than kNarrowCorner
         // px and contribute nothing visible; m ≡ 0 then, and a zero factor avoids 0·inf.
-        inv_2ab = amin_d > kNarrowCorner ? float(1.0 / (2.0 * amax * amin_d)) : 0.0f;
+        if (amin_d > kNarrowCorner) {
+            const double r = 1.0 / (amax * amin_d);  // one division for both factors
+            inv_amax = float(amin_d * r);
+            inv_2ab = float(0.5 * r);
+        } else {
+            inv_amax = float(1.0 / amax);
+            inv_2ab = 0.0f;
+        }
     }
     // sign(s)·H(|s|) = F(s) − ½
     float centred(float s) const {
