@@ -292,7 +292,7 @@ private:
 struct stroke_setup {
     double ax = 0, ay = 0, dx = 0, dy = 0, length = 0, reach = 0;
     bool end_a = true, end_b = true;  // false: that end was clipped off (no cap)
-    detail::square_cdf cdf{0.0, 1.0};
+    detail::square_cdf cdf;
     float half = 0, length_f = 0, du = 0, dv = 0, ink = 0;
     int row_first = 0, row_last = -1;
 };

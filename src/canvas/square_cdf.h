@@ -26,8 +26,9 @@ constexpr double kNarrowCorner = 1e-12;
 //   w_hi, H is the same float constant for every t, so the two terms of band() cancel
 //   exactly for a square outside the band.
 struct square_cdf {
-    float w_lo, w_hi, inv_amax, inv_2ab;
+    float w_lo = 0, w_hi = 0, inv_amax = 0, inv_2ab = 0;
 
+    square_cdf() = default;  // all zero: no line (set before use)
     square_cdf(double a, double b) {
         const double amax = std::max(std::fabs(a), std::fabs(b));
         const double amin_d = std::min(std::fabs(a), std::fabs(b));
