@@ -203,9 +203,17 @@ public:
         float depth;           // mean screen depth of the visible part
         std::uint32_t edge;    // index into mesh::edges
     };
-    std::vector<vec4_t> clip;              // per position: clip-space coordinates
-    std::vector<float> screen_x, screen_y, screen_depth;  // per position (when inside)
-    std::vector<unsigned> outcode;         // per position
+    // A position's screen point and outcode side by side, so an edge reads each end with
+    // one 16-byte load.
+    struct projected_vertex {
+        float x, y;             // pixels (viewport convention above); 0 unless outcode is 0
+        float depth;            // screen depth in [0, 1]; 0 unless outcode is 0
+        std::uint32_t outcode;  // clip_outcode of the clip point (0 = inside the frustum; 0 for
+                                // every point when the mesh's sphere lies wholly inside), or
+                                // clip_all when an inside point has no finite screen point
+    };
+    std::vector<vec4_t> clip;                  // per position: clip-space coordinates
+    std::vector<projected_vertex> vertices;    // per position
     std::vector<std::uint8_t> face_front;  // per face (hide_back_edges)
     std::vector<drawn_edge> edges;         // the frame's visible edges
     // line_method::tabulated: the tables of the last few thicknesses drawn, most recent

@@ -423,3 +423,79 @@ TEST(hostile_coordinates_draw_nothing_wrong) {
         CHECK(d.x0 >= -1e-3 && d.x0 <= W + 1e-3 && d.x1 >= -1e-3 && d.x1 <= W + 1e-3);
     }
 }
+
+// workspace.vertices (filled four at a time with SSE2) against its scalar definition:
+// clip_outcode of workspace.clip, then clip_to_screen for the inside points, bit for bit,
+// and workspace.clip against mat4_mul_vec4. Random points around the frustum plus points
+// exactly on its planes, at the eye (w = 0), behind it, huge, denormal and non-finite; an
+// odd count, so the scalar tail runs too.
+TEST(packed_vertices_match_outcode_and_screen_point_bit_for_bit) {
+    std::mt19937 rng(20240611);
+    std::uniform_real_distribution<float> u(-12.0f, 12.0f);
+    mesh m;
+    for (int i = 0; i < 997; ++i) m.positions.push_back({u(rng), u(rng), u(rng)});
+    const float inf = INFINITY, nan = NAN;
+    const std::vector<vec3_t> special = {{0, 0, 0},        {1, 0, -1},      {-1, 1, -1},   {10, -10, -10}, {0, 0, -10},
+                                         {0, 0, 1},        {2, 0, 0},       {1e30f, 0, -2}, {0, 0, -1e30f}, {1e-40f, 0, -1e-39f},
+                                         {0, 0, -1e-40f},  {nan, 0, -2},    {0, inf, -2},   {0, 0, -inf},   {-inf, 0, -5},
+                                         {3e38f, 3e38f, -3e38f}, {0, 0, -2e38f}};
+    for (int k = 0; k < 5; ++k) m.positions.insert(m.positions.end(), special.begin(), special.end());
+    for (std::uint32_t i = 0; i + 1 < m.positions.size(); ++i) m.edges.push_back({i, i + 1});
+    canvas_holder c(W, H);
+    wireframe_workspace ws;
+    wireframe_options o = plain_options();
+    o.intensity = 0.0f;  // list only
+    const bounding_sphere claimed_inside{{0, 0, -5}, 0.5f};
+    mat4_t wide_w = mat4_identity();  // w × 10: (0, 0, −2e38) gets a finite z and w = +∞
+    wide_w.m[15] = 10.0f;
+    const mat4_t matrices[] = {test_proj(), mat4_identity(), mat4_multiply(test_proj(), tiny3d::mat4_rotate_y(0.7f)),
+                               mat4_multiply(wide_w, test_proj())};
+    std::size_t shown = 0, hidden = 0;
+    for (const mat4_t &mvp : matrices)
+        for (bool all_inside : {false, true}) {
+            // A sphere declared inside the frustum makes every outcode 0 (no plane tests).
+            o.frustum_cull = all_inside;
+            o.bounds = all_inside ? &claimed_inside : nullptr;
+            if (all_inside && cull_sphere(frustum_from_matrix(mvp), claimed_inside) != cull_result::inside) continue;
+            CHECK(render_wireframe(*c, m, mvp, o, ws).ok());
+            CHECK_EQ(ws.vertices.size(), m.positions.size());
+            for (std::size_t i = 0; i < m.positions.size(); ++i) {
+                const vec4_t want = mat4_mul_vec4(mvp, vec4_from_vec3(m.positions[i], 1.0f)), &got = ws.clip[i];
+                auto same = [](float a, float b) { return a == b || (std::isnan(a) && std::isnan(b)); };
+                CHECK(same(got.x, want.x) && same(got.y, want.y) && same(got.z, want.z) && same(got.w, want.w));
+                const unsigned code = all_inside ? 0u : clip_outcode(want);
+                const screen_point p = clip_to_screen(want, W, H);
+                const auto &v = ws.vertices[i];
+                if (code == 0 && !p.behind) {
+                    ++shown;
+                    CHECK_EQ(v.outcode, 0u);
+                    CHECK(v.x == p.x && v.y == p.y && v.depth == p.depth);
+                } else {
+                    ++hidden;
+                    CHECK_EQ(v.outcode, code != 0 ? code : unsigned(clip_all));
+                    CHECK(v.x == 0.0f && v.y == 0.0f && v.depth == 0.0f);
+                }
+            }
+        }
+    CHECK(shown > 100 && hidden > 1000);
+}
+
+// An edge index past the positions is an error naming the first such edge, wherever it
+// sits (the range check reads two edges at a time) and however large the index.
+TEST(out_of_range_edge_is_named) {
+    mesh m;
+    m.positions = {{0, 0, -2}, {1, 0, -2}, {0, 1, -2}};
+    canvas_holder c(W, H);
+    wireframe_workspace ws;
+    const wireframe_options o = plain_options();
+    for (std::uint32_t bad : {3u, 0x80000000u, 0xFFFFFFFFu})
+        for (std::size_t at : {0u, 3u, 4u}) {
+            m.edges = {{0, 1}, {1, 2}, {0, 2}, {0, 1}, {1, 2}};
+            m.edges[at].b = bad;
+            const status s = render_wireframe(*c, m, test_proj(), o, ws);
+            CHECK(!s.ok());
+            CHECK_MSG(s.message().find("edge " + std::to_string(at) + " refers") != std::string::npos, s.message());
+        }
+    m.edges = {{0, 1}, {1, 2}, {0, 2}, {0, 1}, {1, 2}};
+    CHECK(render_wireframe(*c, m, test_proj(), o, ws).ok());
+}

@@ -3,9 +3,14 @@
 // See include/pipeline.h.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "pipeline.h"
+
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
 
 namespace tiny3d {
 
@@ -98,6 +103,225 @@ void draw_segment(canvas_t &canvas, const screen_segment &s, line_method method,
     }
 }
 
+using projected_vertex = wireframe_workspace::projected_vertex;
+using drawn_edge = wireframe_workspace::drawn_edge;
+
+// One position's screen point and outcode (the definition the SSE2 path below matches):
+// clip_outcode (0 for every point when the mesh's sphere is wholly inside), then
+// clip_to_screen for the inside points.
+projected_vertex project_one(const vec4_t &c, bool all_inside, int width, int height) {
+    const unsigned code = all_inside ? 0u : clip_outcode(c);
+    if (code != 0) return {0.0f, 0.0f, 0.0f, code};
+    const screen_point p = clip_to_screen(c, width, height);
+    // Non-finite (a NaN position passes the sphere test): never drawn at (0, 0).
+    if (p.behind) return {0.0f, 0.0f, 0.0f, clip_all};
+    return {p.x, p.y, p.depth, 0u};
+}
+
+#ifdef __SSE2__
+// project_one for clip[0..3], one lane per point, with the scalar code's float operations
+// in the same order, so every field gets the same bits. The plane tests use float sums:
+// the sign of a rounded sum of two finite floats is the sign of the exact sum (and it is
+// zero only when that is), so "z + w ≥ 0" in float agrees with clip_outcode's double.
+void project_four(const vec4_t *clip, bool all_inside, __m128 width, __m128 height, projected_vertex *out) {
+    __m128 x = _mm_loadu_ps(&clip[0].x), y = _mm_loadu_ps(&clip[1].x), z = _mm_loadu_ps(&clip[2].x),
+           w = _mm_loadu_ps(&clip[3].x);
+    _MM_TRANSPOSE4_PS(x, y, z, w);
+    const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f), half = _mm_set1_ps(0.5f);
+    auto finite = [&](__m128 v) { return _mm_cmpeq_ps(_mm_mul_ps(v, zero), zero); };  // ±∞·0, NaN·0 are NaN
+    const __m128i all_planes = _mm_set1_epi32(int(clip_all));
+    __m128i code = _mm_setzero_si128();
+    if (!all_inside) {
+        auto outside = [&](__m128 distance, unsigned plane) {  // plane's bit unless distance ≥ 0
+            return _mm_andnot_si128(_mm_castps_si128(_mm_cmpge_ps(distance, zero)), _mm_set1_epi32(int(plane)));
+        };
+        code = _mm_or_si128(_mm_or_si128(outside(_mm_add_ps(z, w), clip_near), outside(_mm_sub_ps(w, z), clip_far)),
+                            _mm_or_si128(outside(_mm_add_ps(x, w), clip_left), outside(_mm_sub_ps(w, x), clip_right)));
+        code = _mm_or_si128(code, _mm_or_si128(outside(_mm_add_ps(y, w), clip_bottom), outside(_mm_sub_ps(w, y), clip_top)));
+        const __m128 clip_finite = _mm_and_ps(_mm_and_ps(finite(x), finite(y)), _mm_and_ps(finite(z), finite(w)));
+        code = _mm_or_si128(code, _mm_andnot_si128(_mm_castps_si128(clip_finite), all_planes));
+    }
+    // clip_to_screen, on every lane.
+    const __m128 inv_w = _mm_div_ps(one, w);
+    const __m128 ndc_x = _mm_mul_ps(x, inv_w), ndc_y = _mm_mul_ps(y, inv_w), ndc_z = _mm_mul_ps(z, inv_w);
+    __m128 sx = _mm_mul_ps(_mm_mul_ps(_mm_add_ps(ndc_x, one), half), width);
+    __m128 sy = _mm_mul_ps(_mm_mul_ps(_mm_sub_ps(one, ndc_y), half), height);
+    __m128 depth = _mm_mul_ps(_mm_add_ps(ndc_z, one), half);
+    const __m128 in_front = _mm_and_ps(_mm_and_ps(_mm_cmpgt_ps(w, zero), finite(w)),
+                                       _mm_and_ps(finite(ndc_x), _mm_and_ps(finite(ndc_y), finite(ndc_z))));
+    const __m128i inside = _mm_cmpeq_epi32(code, _mm_setzero_si128());
+    code = _mm_or_si128(code, _mm_and_si128(_mm_andnot_si128(_mm_castps_si128(in_front), inside), all_planes));
+    const __m128 shown = _mm_castsi128_ps(_mm_cmpeq_epi32(code, _mm_setzero_si128()));
+    sx = _mm_and_ps(sx, shown);
+    sy = _mm_and_ps(sy, shown);
+    depth = _mm_and_ps(depth, shown);
+    __m128 packed_code = _mm_castsi128_ps(code);
+    _MM_TRANSPOSE4_PS(sx, sy, depth, packed_code);
+    _mm_storeu_ps(&out[0].x, sx);
+    _mm_storeu_ps(&out[1].x, sy);
+    _mm_storeu_ps(&out[2].x, depth);
+    _mm_storeu_ps(&out[3].x, packed_code);
+}
+#endif
+
+// ws.vertices from ws.clip.
+void project_vertices(wireframe_workspace &ws, bool all_inside, int width, int height) {
+    const std::size_t n = ws.clip.size();
+    ws.vertices.resize(n);
+    std::size_t i = 0;
+#ifdef __SSE2__
+    static_assert(sizeof(projected_vertex) == 4 * sizeof(float) && sizeof(vec4_t) == 4 * sizeof(float));
+    const __m128 w = _mm_set1_ps(float(width)), h = _mm_set1_ps(float(height));
+    for (; i + 4 <= n; i += 4) project_four(&ws.clip[i], all_inside, w, h, &ws.vertices[i]);
+#endif
+    for (; i < n; ++i) ws.vertices[i] = project_one(ws.clip[i], all_inside, width, height);
+}
+
+// Inks and draws listed edges in the order given: ink = intensity × per-edge value ×
+// depth cue; tabulated lines go to draw_lines_tabulated a batch at a time (same image,
+// faster). finish() draws what is left.
+class edge_painter {
+public:
+    edge_painter(canvas_t &canvas, const wireframe_options &o, const line_table *table, wireframe_stats &st)
+        : canvas_(canvas),
+          o_(o),
+          table_(table),
+          st_(st),
+          uniform_ink_(!o.edge_intensity_fn && o.edge_intensity.empty() && !o.depth_cue) {}
+    // Depth cueing from the nearest and farthest listed depths.
+    void set_depth_range(float nearest, float farthest) {
+        nearest_ = nearest;
+        depth_range_ = farthest - nearest;
+    }
+    void paint(const drawn_edge &d) {
+        float ink = o_.intensity;
+        if (!uniform_ink_) {
+            if (o_.edge_intensity_fn) ink *= o_.edge_intensity_fn(d.edge);
+            else if (!o_.edge_intensity.empty()) ink *= o_.edge_intensity[d.edge];
+            if (o_.depth_cue && depth_range_ > 0.0f)
+                ink *= 1.0f - (1.0f - o_.depth_cue_far) * ((d.depth - nearest_) / depth_range_);
+        }
+        if (ink > 0.0f) draw(d, std::min(ink, 1.0f));
+    }
+    void finish() {
+        if (batched_) draw_lines_tabulated(&canvas_, batch_, batched_, *table_);
+        batched_ = 0;
+    }
+
+private:
+    [[gnu::noinline]] void draw(const drawn_edge &d, float ink) {
+        ++st_.edges_drawn;
+        if (table_) {
+            batch_[batched_++] = {d.x0, d.y0, d.x1, d.y1, ink};
+            if (batched_ == kBatch) finish();
+            return;
+        }
+        draw_segment(canvas_, {d.x0, d.y0, d.x1, d.y1, d.depth}, o_.method, o_.thickness, ink);
+    }
+
+    static constexpr std::size_t kBatch = 64;
+    canvas_t &canvas_;
+    const wireframe_options &o_;
+    const line_table *table_;
+    wireframe_stats &st_;
+    const bool uniform_ink_;  // the same ink for every edge: o.intensity
+    float nearest_ = 0.0f, depth_range_ = 0.0f;
+    line_segment batch_[kBatch];
+    std::size_t batched_ = 0;
+};
+
+// Writes the drawn edge between two inside points: their screen points and the mean depth
+// 0.5·(p.depth + q.depth).
+inline void list_inside_edge(const projected_vertex &p, const projected_vertex &q, std::uint32_t e, drawn_edge &out) {
+#ifdef __SSE2__
+    const __m128 vp = _mm_loadu_ps(&p.x), vq = _mm_loadu_ps(&q.x);  // x, y, depth, outcode
+    _mm_storeu_ps(&out.x0, _mm_movelh_ps(vp, vq));
+    const __m128 sum = _mm_add_ps(vp, vq);  // lane 2: p.depth + q.depth
+    _mm_store_ss(&out.depth, _mm_mul_ss(_mm_movehl_ps(sum, sum), _mm_set_ss(0.5f)));
+    out.edge = e;
+#else
+    out = {p.x, p.y, q.x, q.y, 0.5f * (p.depth + q.depth), e};
+#endif
+}
+
+// The visible part of the edge a–b on the screen when it is not simply the segment between
+// two inside points: clipped in clip space if an end is outside the frustum, then to the
+// circle if one is given. False when nothing is left.
+bool visible_part(const canvas_t &canvas, const wireframe_workspace &ws, std::uint32_t a, std::uint32_t b,
+                  const circle *round, screen_segment &s) {
+    const projected_vertex &p = ws.vertices[a], &q = ws.vertices[b];
+    if ((p.outcode | q.outcode) == 0) s = {p.x, p.y, q.x, q.y, 0.5f * (p.depth + q.depth)};
+    else if ((p.outcode & q.outcode) != 0 || !clip_and_project(ws.clip[a], ws.clip[b], canvas.width, canvas.height, s))
+        return false;
+    return !round || clip_to_circle(*round, s);
+}
+
+// True when every face of edge e faces away (edges with no face are kept).
+bool back_edge(const edge_adjacency &adjacency, const std::vector<std::uint8_t> &face_front, std::size_t e) {
+    return adjacency.count(e) > 0 &&
+           std::none_of(adjacency.begin(e), adjacency.end(e), [&](std::uint32_t f) { return face_front[f]; });
+}
+
+// Lists the visible part of every edge in ws.edges (mesh order), counting the hidden and
+// clipped ones, and hands each listed edge to on_listed.
+template <class OnListed>
+void list_edges(const canvas_t &canvas, const mesh &m, const wireframe_options &o, wireframe_workspace &ws,
+                wireframe_stats &st, OnListed on_listed) {
+    const circle circ = circular_viewport(canvas);
+    const circle *round = o.circular_viewport ? &circ : nullptr;
+    const edge_adjacency *hide = o.hide_back_edges ? o.adjacency : nullptr;
+    const projected_vertex *vertex = ws.vertices.data();
+    const edge *edges = m.edges.data();
+    const std::size_t edge_count = m.edges.size();
+    ws.edges.resize(edge_count);  // at most every edge; trimmed to the listed ones below
+    drawn_edge *listed = ws.edges.data();
+    std::size_t count = 0;
+    for (std::size_t e = 0; e < edge_count; ++e) {
+        const std::uint32_t a = edges[e].a, b = edges[e].b;
+        if (hide && back_edge(*hide, ws.face_front, e)) {
+            ++st.edges_hidden;
+            continue;
+        }
+        drawn_edge &d = listed[count];
+        if ((vertex[a].outcode | vertex[b].outcode) == 0 && !round) {  // the common case, kept tight
+            list_inside_edge(vertex[a], vertex[b], std::uint32_t(e), d);
+        } else {
+            screen_segment s;
+            if (!visible_part(canvas, ws, a, b, round, s)) {
+                ++st.edges_clipped_away;
+                continue;
+            }
+            d = {s.x0, s.y0, s.x1, s.y1, s.depth, std::uint32_t(e)};
+        }
+        on_listed(d);
+        ++count;
+    }
+    ws.edges.resize(count);
+}
+
+// The largest position index among the edges' ends (0 for none), in one branch-free pass
+// (the first bad edge is looked for only when there is one).
+std::uint32_t highest_edge_end(const std::vector<edge> &edges) {
+    std::uint32_t highest = 0;
+    std::size_t i = 0;
+#ifdef __SSE2__
+    // Two edges (four indices) at a time. SSE2 has no unsigned 32-bit max: indices are
+    // compared as signed after flipping their top bit (x ↦ x − 2³¹ keeps the order).
+    const __m128i flip = _mm_set1_epi32(std::numeric_limits<std::int32_t>::min());
+    __m128i top = flip;  // 0, flipped
+    for (; i + 2 <= edges.size(); i += 2) {
+        const __m128i v = _mm_xor_si128(_mm_loadu_si128(reinterpret_cast<const __m128i *>(&edges[i])), flip);
+        const __m128i greater = _mm_cmpgt_epi32(v, top);
+        top = _mm_or_si128(_mm_and_si128(greater, v), _mm_andnot_si128(greater, top));
+    }
+    alignas(16) std::uint32_t lanes[4];
+    _mm_store_si128(reinterpret_cast<__m128i *>(lanes), _mm_xor_si128(top, flip));
+    highest = std::max(std::max(lanes[0], lanes[1]), std::max(lanes[2], lanes[3]));
+#endif
+    for (; i < edges.size(); ++i) highest = std::max(highest, std::max(edges[i].a, edges[i].b));
+    return highest;
+}
+
 status check_inputs(const canvas_t &canvas, const mesh &m, const wireframe_options &o) {
     auto fail = [](std::string why) { return status(error{"", 0, -1, "render_wireframe: " + std::move(why)}); };
     if (!canvas.data || canvas.width <= 0 || canvas.height <= 0) return fail("canvas has no pixels");
@@ -108,9 +332,10 @@ status check_inputs(const canvas_t &canvas, const mesh &m, const wireframe_optio
     if (o.hide_back_edges && (!o.adjacency || o.adjacency->start.size() != m.edges.size() + 1))
         return fail("hide_back_edges needs adjacency = mesh_edge_faces(mesh) for this mesh");
     const std::size_t n = m.positions.size();
-    for (std::size_t e = 0; e < m.edges.size(); ++e)
-        if (m.edges[e].a >= n || m.edges[e].b >= n)
-            return fail("edge " + std::to_string(e) + " refers to a position out of range");
+    if (!m.edges.empty() && highest_edge_end(m.edges) >= n)
+        for (std::size_t e = 0; e < m.edges.size(); ++e)
+            if (m.edges[e].a >= n || m.edges[e].b >= n)
+                return fail("edge " + std::to_string(e) + " refers to a position out of range");
     if (o.hide_back_edges) {
         for (std::uint32_t idx : m.indices)
             if (idx >= n) return fail("a face refers to a position out of range");
@@ -143,92 +368,32 @@ status render_wireframe(canvas_t &canvas, const mesh &m, const mat4_t &model_vie
         }
     }
 
-    // Per position: clip coordinates, outcode, and the screen point when inside.
-    const std::size_t n = m.positions.size();
-    ws.clip.resize(n);
-    ws.outcode.resize(n);
-    ws.screen_x.resize(n);
-    ws.screen_y.resize(n);
-    ws.screen_depth.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const vec4_t c = mat4_mul_vec4(model_view_proj, vec4_from_vec3(m.positions[i], 1.0f));
-        ws.clip[i] = c;
-        ws.outcode[i] = cull == cull_result::inside ? 0u : clip_outcode(c);
-        if (ws.outcode[i] != 0) continue;
-        const screen_point p = clip_to_screen(c, canvas.width, canvas.height);
-        if (p.behind) {  // non-finite (a NaN position passes the sphere test): never drawn at (0, 0)
-            ws.outcode[i] = clip_all;
-            continue;
-        }
-        ws.screen_x[i] = p.x;
-        ws.screen_y[i] = p.y;
-        ws.screen_depth[i] = p.depth;
-    }
+    // Per position: clip coordinates, then the packed screen point and outcode.
+    ws.clip.resize(m.positions.size());
+    (void)transform_points_homogeneous(model_view_proj, m.positions, ws.clip);  // sizes match: cannot fail
+    project_vertices(ws, cull == cull_result::inside, canvas.width, canvas.height);
     if (o.hide_back_edges) {
         ws.face_front.resize(m.face_count());
         for (std::size_t f = 0; f < m.face_count(); ++f) ws.face_front[f] = clip_orientation(m, f, ws.clip) > 0.0;
     }
 
-    const circle circ = circular_viewport(canvas);
-    ws.edges.clear();
-    for (std::size_t e = 0; e < m.edges.size(); ++e) {
-        const std::uint32_t a = m.edges[e].a, b = m.edges[e].b;
-        if (o.hide_back_edges && o.adjacency->count(e) > 0 &&
-            std::none_of(o.adjacency->begin(e), o.adjacency->end(e), [&](std::uint32_t f) { return ws.face_front[f]; })) {
-            ++st.edges_hidden;
-            continue;
+    edge_painter painter(canvas, o, table, st);
+    if (!o.depth_sort && !o.depth_cue) {  // mesh order, nothing to know first: paint as listed
+        list_edges(canvas, m, o, ws, st, [&](const drawn_edge &d) { painter.paint(d); });
+    } else {
+        list_edges(canvas, m, o, ws, st, [](const drawn_edge &) {});
+        if (o.depth_sort)  // far (larger depth) first; equal depths by edge index
+            std::sort(ws.edges.begin(), ws.edges.end(), [](const drawn_edge &p, const drawn_edge &q) {
+                return p.depth != q.depth ? p.depth > q.depth : p.edge < q.edge;
+            });
+        if (o.depth_cue && !ws.edges.empty()) {
+            const auto [lo, hi] = std::minmax_element(
+                ws.edges.begin(), ws.edges.end(), [](const drawn_edge &p, const drawn_edge &q) { return p.depth < q.depth; });
+            painter.set_depth_range(lo->depth, hi->depth);
         }
-        screen_segment s;
-        if ((ws.outcode[a] | ws.outcode[b]) == 0) {
-            s = {ws.screen_x[a], ws.screen_y[a], ws.screen_x[b], ws.screen_y[b],
-                 0.5f * (ws.screen_depth[a] + ws.screen_depth[b])};
-        } else if ((ws.outcode[a] & ws.outcode[b]) != 0 ||
-                   !clip_and_project(ws.clip[a], ws.clip[b], canvas.width, canvas.height, s)) {
-            ++st.edges_clipped_away;
-            continue;
-        }
-        if (o.circular_viewport && !clip_to_circle(circ, s)) {
-            ++st.edges_clipped_away;
-            continue;
-        }
-        ws.edges.push_back({s.x0, s.y0, s.x1, s.y1, s.depth, std::uint32_t(e)});
+        for (const drawn_edge &d : ws.edges) painter.paint(d);
     }
-
-    using drawn = wireframe_workspace::drawn_edge;
-    if (o.depth_sort)  // far (larger depth) first; equal depths by edge index
-        std::sort(ws.edges.begin(), ws.edges.end(), [](const drawn &p, const drawn &q) {
-            return p.depth != q.depth ? p.depth > q.depth : p.edge < q.edge;
-        });
-    float nearest = 0.0f, farthest = 0.0f;
-    if (o.depth_cue && !ws.edges.empty()) {
-        const auto [lo, hi] = std::minmax_element(ws.edges.begin(), ws.edges.end(),
-                                                  [](const drawn &p, const drawn &q) { return p.depth < q.depth; });
-        nearest = lo->depth;
-        farthest = hi->depth;
-    }
-    const float depth_range = farthest - nearest;
-    // Tabulated lines go to draw_lines_tabulated a batch at a time (same image, faster).
-    constexpr std::size_t kBatch = 64;
-    line_segment batch[kBatch];
-    std::size_t batched = 0;
-    for (const drawn &d : ws.edges) {
-        float ink = o.intensity;
-        if (o.edge_intensity_fn) ink *= o.edge_intensity_fn(d.edge);
-        else if (!o.edge_intensity.empty()) ink *= o.edge_intensity[d.edge];
-        if (o.depth_cue && depth_range > 0.0f) ink *= 1.0f - (1.0f - o.depth_cue_far) * ((d.depth - nearest) / depth_range);
-        if (!(ink > 0.0f)) continue;
-        ++st.edges_drawn;
-        if (table) {
-            batch[batched++] = {d.x0, d.y0, d.x1, d.y1, std::min(ink, 1.0f)};
-            if (batched == kBatch) {
-                draw_lines_tabulated(&canvas, batch, batched, *table);
-                batched = 0;
-            }
-            continue;
-        }
-        draw_segment(canvas, {d.x0, d.y0, d.x1, d.y1, d.depth}, o.method, o.thickness, std::min(ink, 1.0f));
-    }
-    if (batched) draw_lines_tabulated(&canvas, batch, batched, *table);
+    painter.finish();
     return {};
 }
 
