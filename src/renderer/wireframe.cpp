@@ -183,11 +183,9 @@ void project_vertices(wireframe_workspace &ws, bool all_inside, int width, int h
 class edge_painter {
 public:
     edge_painter(canvas_t &canvas, const wireframe_options &o, const line_table *table, wireframe_stats &st)
-        : canvas_(canvas),
-          o_(o),
-          table_(table),
-          st_(st),
-          uniform_ink_(!o.edge_intensity_fn && o.edge_intensity.empty() && !o.depth_cue) {}
+        : canvas_(canvas), o_(o), table_(table), st_(st) {}
+    // Every edge gets o.intensity (no per-edge value, no depth cue): callers may use draw.
+    bool uniform_ink() const { return !o_.edge_intensity_fn && o_.edge_intensity.empty() && !o_.depth_cue; }
     // Depth cueing from the nearest and farthest listed depths.
     void set_depth_range(float nearest, float farthest) {
         nearest_ = nearest;
@@ -195,36 +193,33 @@ public:
     }
     void paint(const drawn_edge &d) {
         float ink = o_.intensity;
-        if (!uniform_ink_) {
-            if (o_.edge_intensity_fn) ink *= o_.edge_intensity_fn(d.edge);
-            else if (!o_.edge_intensity.empty()) ink *= o_.edge_intensity[d.edge];
-            if (o_.depth_cue && depth_range_ > 0.0f)
-                ink *= 1.0f - (1.0f - o_.depth_cue_far) * ((d.depth - nearest_) / depth_range_);
-        }
+        if (o_.edge_intensity_fn) ink *= o_.edge_intensity_fn(d.edge);
+        else if (!o_.edge_intensity.empty()) ink *= o_.edge_intensity[d.edge];
+        if (o_.depth_cue && depth_range_ > 0.0f)
+            ink *= 1.0f - (1.0f - o_.depth_cue_far) * ((d.depth - nearest_) / depth_range_);
         if (ink > 0.0f) draw(d, std::min(ink, 1.0f));
     }
-    void finish() {
+    // Draws d with ink in (0, 1] (tabulated lines: queues it in the batch).
+    void draw(const drawn_edge &d, float ink) {
+        ++st_.edges_drawn;
+        if (!table_) return draw_one(d, ink);
+        batch_[batched_++] = {d.x0, d.y0, d.x1, d.y1, ink};
+        if (batched_ == kBatch) finish();
+    }
+    [[gnu::noinline]] void finish() {
         if (batched_) draw_lines_tabulated(&canvas_, batch_, batched_, *table_);
         batched_ = 0;
     }
 
 private:
-    [[gnu::noinline]] void draw(const drawn_edge &d, float ink) {
-        ++st_.edges_drawn;
-        if (table_) {
-            batch_[batched_++] = {d.x0, d.y0, d.x1, d.y1, ink};
-            if (batched_ == kBatch) finish();
-            return;
-        }
+    [[gnu::noinline]] void draw_one(const drawn_edge &d, float ink) {
         draw_segment(canvas_, {d.x0, d.y0, d.x1, d.y1, d.depth}, o_.method, o_.thickness, ink);
     }
-
     static constexpr std::size_t kBatch = 64;
     canvas_t &canvas_;
     const wireframe_options &o_;
     const line_table *table_;
     wireframe_stats &st_;
-    const bool uniform_ink_;  // the same ink for every edge: o.intensity
     float nearest_ = 0.0f, depth_range_ = 0.0f;
     line_segment batch_[kBatch];
     std::size_t batched_ = 0;
@@ -244,22 +239,46 @@ inline void list_inside_edge(const projected_vertex &p, const projected_vertex &
 #endif
 }
 
-// The visible part of the edge a–b on the screen when it is not simply the segment between
-// two inside points: clipped in clip space if an end is outside the frustum, then to the
-// circle if one is given. False when nothing is left.
-bool visible_part(const canvas_t &canvas, const wireframe_workspace &ws, std::uint32_t a, std::uint32_t b,
-                  const circle *round, screen_segment &s) {
-    const projected_vertex &p = ws.vertices[a], &q = ws.vertices[b];
-    if ((p.outcode | q.outcode) == 0) s = {p.x, p.y, q.x, q.y, 0.5f * (p.depth + q.depth)};
-    else if ((p.outcode & q.outcode) != 0 || !clip_and_project(ws.clip[a], ws.clip[b], canvas.width, canvas.height, s))
-        return false;
-    return !round || clip_to_circle(*round, s);
-}
-
 // True when every face of edge e faces away (edges with no face are kept).
 bool back_edge(const edge_adjacency &adjacency, const std::vector<std::uint8_t> &face_front, std::size_t e) {
     return adjacency.count(e) > 0 &&
            std::none_of(adjacency.begin(e), adjacency.end(e), [&](std::uint32_t f) { return face_front[f]; });
+}
+
+// What listing an edge needs besides the edge itself.
+struct listing {
+    const canvas_t &canvas;
+    const wireframe_workspace &ws;
+    const edge_adjacency *hide;  // non-null: hide back edges
+    const circle *round;         // non-null: clip to this circle
+    wireframe_stats &st;
+};
+
+// Lists edge e = a–b in the general case (out of line, so the loop over the edges stays
+// tight for the plain one, both ends inside with no back-edge test or circle): hidden if
+// it faces away, else clipped in clip space if an end is outside the frustum, then to the
+// circle. False (and counted) when it is not listed.
+[[gnu::noinline]] bool list_general_edge(const listing &l, std::uint32_t a, std::uint32_t b, std::size_t e,
+                                         drawn_edge &out) {
+    if (l.hide && back_edge(*l.hide, l.ws.face_front, e)) {
+        ++l.st.edges_hidden;
+        return false;
+    }
+    const projected_vertex &p = l.ws.vertices[a], &q = l.ws.vertices[b];
+    screen_segment s;
+    if ((p.outcode | q.outcode) == 0) {
+        s = {p.x, p.y, q.x, q.y, 0.5f * (p.depth + q.depth)};
+    } else if ((p.outcode & q.outcode) != 0 ||
+               !clip_and_project(l.ws.clip[a], l.ws.clip[b], l.canvas.width, l.canvas.height, s)) {
+        ++l.st.edges_clipped_away;
+        return false;
+    }
+    if (l.round && !clip_to_circle(*l.round, s)) {
+        ++l.st.edges_clipped_away;
+        return false;
+    }
+    out = {s.x0, s.y0, s.x1, s.y1, s.depth, std::uint32_t(e)};
+    return true;
 }
 
 // Lists the visible part of every edge in ws.edges (mesh order), counting the hidden and
@@ -268,35 +287,25 @@ template <class OnListed>
 void list_edges(const canvas_t &canvas, const mesh &m, const wireframe_options &o, wireframe_workspace &ws,
                 wireframe_stats &st, OnListed on_listed) {
     const circle circ = circular_viewport(canvas);
-    const circle *round = o.circular_viewport ? &circ : nullptr;
-    const edge_adjacency *hide = o.hide_back_edges ? o.adjacency : nullptr;
+    const listing general{canvas, ws, o.hide_back_edges ? o.adjacency : nullptr, o.circular_viewport ? &circ : nullptr,
+                          st};
+    // Nonzero when every edge needs the general path (OR-ed into the ends' outcodes).
+    const std::uint32_t all_general = general.hide || general.round ? 1u : 0u;
     const projected_vertex *vertex = ws.vertices.data();
-    const edge *edges = m.edges.data();
+    const edge *const edges = m.edges.data();
     const std::size_t edge_count = m.edges.size();
     ws.edges.resize(edge_count);  // at most every edge; trimmed to the listed ones below
-    drawn_edge *listed = ws.edges.data();
-    std::size_t count = 0;
+    drawn_edge *const first = ws.edges.data();
+    drawn_edge *out = first;
     for (std::size_t e = 0; e < edge_count; ++e) {
         const std::uint32_t a = edges[e].a, b = edges[e].b;
-        if (hide && back_edge(*hide, ws.face_front, e)) {
-            ++st.edges_hidden;
-            continue;
-        }
-        drawn_edge &d = listed[count];
-        if ((vertex[a].outcode | vertex[b].outcode) == 0 && !round) {  // the common case, kept tight
-            list_inside_edge(vertex[a], vertex[b], std::uint32_t(e), d);
-        } else {
-            screen_segment s;
-            if (!visible_part(canvas, ws, a, b, round, s)) {
-                ++st.edges_clipped_away;
-                continue;
-            }
-            d = {s.x0, s.y0, s.x1, s.y1, s.depth, std::uint32_t(e)};
-        }
-        on_listed(d);
-        ++count;
+        if ((vertex[a].outcode | vertex[b].outcode | all_general) == 0)
+            list_inside_edge(vertex[a], vertex[b], std::uint32_t(e), *out);
+        else if (!list_general_edge(general, a, b, e, *out)) continue;
+        on_listed(*out);
+        ++out;
     }
-    ws.edges.resize(count);
+    ws.edges.resize(std::size_t(out - first));
 }
 
 // The largest position index among the edges' ends (0 for none), in one branch-free pass
@@ -378,10 +387,18 @@ status render_wireframe(canvas_t &canvas, const mesh &m, const mat4_t &model_vie
     }
 
     edge_painter painter(canvas, o, table, st);
+    const auto list_only = [](const drawn_edge &) {};
     if (!o.depth_sort && !o.depth_cue) {  // mesh order, nothing to know first: paint as listed
-        list_edges(canvas, m, o, ws, st, [&](const drawn_edge &d) { painter.paint(d); });
+        if (!painter.uniform_ink()) {
+            list_edges(canvas, m, o, ws, st, [&](const drawn_edge &d) { painter.paint(d); });
+        } else if (o.intensity > 0.0f) {
+            const float ink = std::min(o.intensity, 1.0f);
+            list_edges(canvas, m, o, ws, st, [&](const drawn_edge &d) { painter.draw(d, ink); });
+        } else {
+            list_edges(canvas, m, o, ws, st, list_only);  // no ink anywhere: nothing to draw
+        }
     } else {
-        list_edges(canvas, m, o, ws, st, [](const drawn_edge &) {});
+        list_edges(canvas, m, o, ws, st, list_only);
         if (o.depth_sort)  // far (larger depth) first; equal depths by edge index
             std::sort(ws.edges.begin(), ws.edges.end(), [](const drawn_edge &p, const drawn_edge &q) {
                 return p.depth != q.depth ? p.depth > q.depth : p.edge < q.edge;
