@@ -778,6 +778,119 @@ void draw_avx512(canvas_t *canvas, const stroke_setup &s, const block16 &block_a
 
 // Strokes prepared in a batch: all their blocks first (the table reads of several strokes
 // overlap instead of each stroke waiting for its own), then their pixels, in order.
+// prepare_stroke's common case (both ends finite and in the grown canvas, h ≤ L ≤ 64 px,
+// intensity > 0) for up to 8 segments at once: the same double operations lane by lane,
+// so the set-ups are bit for bit prepare_stroke's. Returns the lanes it set up; the
+// caller hands the others to prepare_stroke. The table has blocks (stamp_size > 0).
+unsigned prepare8_avx512(const canvas_t &canvas, const line_segment *g, int n, const line_table &table,
+                         stroke_setup *out) {
+    alignas(32) float fx0[8] = {}, fy0[8] = {}, fx1[8] = {}, fy1[8] = {}, fink[8] = {};
+    for (int i = 0; i < n; ++i) {
+        fx0[i] = g[i].x0;
+        fy0[i] = g[i].y0;
+        fx1[i] = g[i].x1;
+        fy1[i] = g[i].y1;
+        fink[i] = g[i].intensity;
+    }
+    __m256 x0 = _mm256_load_ps(fx0), y0 = _mm256_load_ps(fy0), x1 = _mm256_load_ps(fx1), y1 = _mm256_load_ps(fy1);
+    const __m256 ink = _mm256_load_ps(fink), zero_f = _mm256_setzero_ps();
+    auto finite = [&](__m256 v) { return _mm256_cmp_ps_mask(_mm256_mul_ps(v, zero_f), zero_f, _CMP_EQ_OQ); };
+    __mmask8 ok = __mmask8((1u << n) - 1) & finite(x0) & finite(y0) & finite(x1) & finite(y1) & finite(ink) &
+                  _mm256_cmp_ps_mask(ink, zero_f, _CMP_GT_OQ);
+    // Left to right (as prepare_stroke).
+    const __mmask8 swap = _mm256_cmp_ps_mask(x1, x0, _CMP_LT_OQ) |
+                          (_mm256_cmp_ps_mask(x1, x0, _CMP_EQ_OQ) & _mm256_cmp_ps_mask(y1, y0, _CMP_LT_OQ));
+    const __m256 sx0 = _mm256_mask_blend_ps(swap, x0, x1), sy0 = _mm256_mask_blend_ps(swap, y0, y1);
+    x1 = _mm256_mask_blend_ps(swap, x1, x0);
+    y1 = _mm256_mask_blend_ps(swap, y1, y0);
+    x0 = sx0;
+    y0 = sy0;
+    const __m512d X0 = _mm512_cvtps_pd(x0), Y0 = _mm512_cvtps_pd(y0), X1 = _mm512_cvtps_pd(x1), Y1 = _mm512_cvtps_pd(y1);
+    const __m512d full_dx = _mm512_sub_pd(X1, X0), full_dy = _mm512_sub_pd(Y1, Y0);
+    const __m512d length_full = _mm512_sqrt_pd(_mm512_add_pd(_mm512_mul_pd(full_dx, full_dx), _mm512_mul_pd(full_dy, full_dy)));
+    const double h = 0.5 * double(table.thickness());
+    ok &= _mm512_cmp_pd_mask(length_full, _mm512_set1_pd(h), _CMP_GE_OQ) &
+          _mm512_cmp_pd_mask(length_full, _mm512_set1_pd(kExactFromLength), _CMP_LE_OQ);
+    const __m512d inv_length = _mm512_div_pd(_mm512_set1_pd(1.0), length_full);
+    const __m512d dx = _mm512_mul_pd(full_dx, inv_length), dy = _mm512_mul_pd(full_dy, inv_length);
+    const double reach = table.reach, margin = 2.0 * reach + 2.0;
+    const double width = canvas.width, height = canvas.height;
+    const __m512d y_min = _mm512_min_pd(Y1, Y0), y_max = _mm512_max_pd(Y1, Y0);  // equal: either
+    ok &= _mm512_cmp_pd_mask(X0, _mm512_set1_pd(-margin), _CMP_GE_OQ) &
+          _mm512_cmp_pd_mask(X1, _mm512_set1_pd(width + margin), _CMP_LE_OQ) &
+          _mm512_cmp_pd_mask(y_min, _mm512_set1_pd(-margin), _CMP_GE_OQ) &
+          _mm512_cmp_pd_mask(y_max, _mm512_set1_pd(height + margin), _CMP_LE_OQ);
+    if (!ok) return 0;
+    const __m512d zero = _mm512_setzero_pd();
+    const __m512d length = _mm512_max_pd(_mm512_add_pd(_mm512_mul_pd(full_dx, dx), _mm512_mul_pd(full_dy, dy)), zero);
+    // square_cdf(−dy, dx)
+    const __m512d sign = _mm512_set1_pd(-0.0);
+    const __m512d abs_a = _mm512_andnot_pd(sign, dy), abs_b = _mm512_andnot_pd(sign, dx);
+    const __m512d amax = _mm512_max_pd(abs_a, abs_b), amin = _mm512_min_pd(abs_a, abs_b);
+    const __m512d two = _mm512_set1_pd(2.0);
+    const __m256 w_lo = _mm512_cvtpd_ps(_mm512_div_pd(_mm512_sub_pd(amax, amin), two));
+    const __m256 w_hi = _mm512_cvtpd_ps(_mm512_div_pd(_mm512_add_pd(amax, amin), two));
+    const __mmask8 cornered = _mm512_cmp_pd_mask(amin, _mm512_set1_pd(detail::kNarrowCorner), _CMP_GT_OQ);
+    const __m512d r = _mm512_div_pd(_mm512_set1_pd(1.0), _mm512_mul_pd(amax, amin));
+    const __m256 inv_amax = _mm512_cvtpd_ps(
+        _mm512_mask_blend_pd(cornered, _mm512_div_pd(_mm512_set1_pd(1.0), amax), _mm512_mul_pd(amin, r)));
+    const __m256 inv_2ab = _mm256_maskz_mov_ps(cornered, _mm512_cvtpd_ps(_mm512_mul_pd(_mm512_set1_pd(0.5), r)));
+    // Rows within R of the y range: −⌊−clamp(·)⌋ and ⌊clamp(·)⌋ as in clamped_ceil / clamped_floor.
+    auto clamp = [](__m512d v, double lo, double hi) {
+        return _mm512_mask_blend_pd(_mm512_cmp_pd_mask(v, _mm512_set1_pd(lo), _CMP_LT_OQ),
+                                    _mm512_mask_blend_pd(_mm512_cmp_pd_mask(_mm512_set1_pd(hi), v, _CMP_LT_OQ), v,
+                                                         _mm512_set1_pd(hi)),
+                                    _mm512_set1_pd(lo));
+    };
+    auto floor_int = [](__m512d v) {
+        return _mm512_cvttpd_epi32(_mm512_roundscale_pd(v, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC));
+    };
+    const __m512d y_lo = _mm512_min_pd(Y1, Y0), y_hi = _mm512_max_pd(Y1, Y0);
+    const __m256i row_first = _mm256_sub_epi32(
+        _mm256_setzero_si256(),
+        floor_int(_mm512_sub_pd(zero, clamp(_mm512_sub_pd(_mm512_sub_pd(y_lo, _mm512_set1_pd(reach)), _mm512_set1_pd(0.5)), 0.0, height))));
+    const __m256i row_last =
+        floor_int(clamp(_mm512_sub_pd(_mm512_add_pd(y_hi, _mm512_set1_pd(reach)), _mm512_set1_pd(0.5)), -1.0, height - 1.0));
+    alignas(64) double ax[8], ay[8], adx[8], ady[8], alen[8];
+    alignas(32) float lo[8], hi[8], ia[8], i2[8], ink_f[8];
+    alignas(32) std::int32_t first[8], last[8];
+    _mm512_store_pd(ax, X0);
+    _mm512_store_pd(ay, Y0);
+    _mm512_store_pd(adx, dx);
+    _mm512_store_pd(ady, dy);
+    _mm512_store_pd(alen, length);
+    _mm256_store_ps(lo, w_lo);
+    _mm256_store_ps(hi, w_hi);
+    _mm256_store_ps(ia, inv_amax);
+    _mm256_store_ps(i2, inv_2ab);
+    _mm256_store_ps(ink_f, _mm256_min_ps(ink, _mm256_set1_ps(1.0f)));
+    _mm256_store_si256(reinterpret_cast<__m256i *>(first), row_first);
+    _mm256_store_si256(reinterpret_cast<__m256i *>(last), row_last);
+    for (int i = 0; i < n; ++i) {
+        if (!(ok >> i & 1)) continue;
+        stroke_setup &s = out[i];
+        s.ax = ax[i];
+        s.ay = ay[i];
+        s.dx = adx[i];
+        s.dy = ady[i];
+        s.length = alen[i];
+        s.reach = reach;
+        s.end_a = s.end_b = true;
+        s.cdf.w_lo = lo[i];
+        s.cdf.w_hi = hi[i];
+        s.cdf.inv_amax = ia[i];
+        s.cdf.inv_2ab = i2[i];
+        s.half = float(h);
+        s.length_f = float(alen[i]);
+        s.du = float(adx[i]);
+        s.dv = float(-ady[i]);
+        s.ink = ink_f[i];
+        s.row_first = first[i];
+        s.row_last = last[i];
+    }
+    return ok;
+}
+
 void draw_batch_avx512(canvas_t *canvas, const stroke_setup *strokes, int count, const line_table &table) {
     alignas(64) float px[16] = {}, py[16] = {}, ex[16], ey[16];
     std::fill(std::begin(ex), std::end(ex), 1.0f);
@@ -902,7 +1015,17 @@ void draw_lines_tabulated(canvas_t *canvas, const line_segment *segments, std::s
     for (std::size_t start = 0; start < count; start += kBatch) {
         const int n = int(std::min<std::size_t>(kBatch, count - start));
         bool all_wide = true;
+        unsigned ready = 0;  // set up by the vector code
+#ifdef TINY3D_LINE_AVX512
+        if (table.simd() == line_simd::avx512 && table.stamp_size == 4 && canvas && canvas->data && canvas->width > 0 &&
+            canvas->height > 0)
+            ready = prepare8_avx512(*canvas, segments + start, n, table, strokes);
+#endif
         for (int i = 0; i < n; ++i) {
+            if (ready >> i & 1) {
+                kinds[i] = stroke_kind::tabulated;
+                continue;
+            }
             const line_segment &g = segments[start + std::size_t(i)];
             kinds[i] = prepare_stroke(canvas, g.x0, g.y0, g.x1, g.y1, table, g.intensity, strokes[i]);
             all_wide = all_wide && kinds[i] == stroke_kind::tabulated;
