@@ -297,20 +297,36 @@ struct stroke_setup {
     int row_first = 0, row_last = -1;
 };
 
-// Calls draw(row, y, first, last, uv) for each canvas row y the stroke reaches, with its run
-// of pixels first..last and the row's frame (uv.at(i) = (u, v) of pixel i's centre).
-// (draw_avx512 has its own copy of this loop: code compiled for AVX-512 must not be shared.)
+// The stroke's rows from the top: row y, its pixels, its run first..last (next()) and its
+// frame (uv.at(i) = (u, v) of pixel i's centre). Plain inline code, so the AVX-512 drawer
+// can use it too (a template taking its lambda would be compiled for the baseline).
+struct row_walk {
+    row_walk(canvas_t *canvas, const stroke_setup &s)
+        : runs(s.ax, s.row_first + 0.5 - s.ay, s.dx, s.dy, s.length, s.reach, canvas->width),
+          uv((0.5 - s.ax) * s.dx + (s.row_first + 0.5 - s.ay) * s.dy, (s.row_first + 0.5 - s.ay) * s.dx - (0.5 - s.ax) * s.dy,
+             s.dx, s.dy),
+          row(canvas->data + std::size_t(s.row_first) * std::size_t(canvas->width)),
+          y(s.row_first),
+          width(canvas->width) {}
+    void advance() {
+        uv.step();
+        row += width;
+        ++y;
+    }
+    row_runs runs;
+    row_frame uv;
+    float *row;
+    int y, width;
+};
+
+// Calls draw(row, y, first, last, uv) for each canvas row y the stroke reaches that has
+// pixels in its run.
 template <class Draw>
 void for_each_run(canvas_t *canvas, const stroke_setup &s, Draw &&draw) {
-    const int width = canvas->width;
-    const double ry = s.row_first + 0.5 - s.ay, rx = 0.5 - s.ax;
-    row_runs runs(s.ax, ry, s.dx, s.dy, s.length, s.reach, width);
-    row_frame uv(rx * s.dx + ry * s.dy, ry * s.dx - rx * s.dy, s.dx, s.dy);
-    float *row = canvas->data + std::size_t(s.row_first) * std::size_t(width);
-    for (int j = s.row_first; j <= s.row_last; ++j, uv.step(), row += width) {
+    for (row_walk walk(canvas, s); walk.y <= s.row_last; walk.advance()) {
         int first, last;
-        runs.next(first, last);
-        if (first <= last) draw(row, j, first, last, uv);
+        walk.runs.next(first, last);
+        if (first <= last) draw(walk.row, walk.y, first, last, walk.uv);
     }
 }
 
@@ -757,15 +773,14 @@ void draw_avx512(canvas_t *canvas, const stroke_setup &s, const block16 &block_a
     if (span <= 4 && x_lo + 4 <= width) return tiles.template operator()<4>();
     if (span <= 8 && x_lo + 8 <= width) return tiles.template operator()<8>();
     if (span <= 16) return tiles.template operator()<16>();
-    row_runs runs(s.ax, ry, s.dx, s.dy, s.length, s.reach, width);
-    row_frame uv(rx * s.dx + ry * s.dy, ry * s.dx - rx * s.dy, s.dx, s.dy);
-    float *row = canvas->data + std::size_t(s.row_first) * std::size_t(width);
-    for (int y = s.row_first; y <= s.row_last; ++y, uv.step(), row += width) {
+    for (row_walk walk(canvas, s); walk.y <= s.row_last; walk.advance()) {
+        const int y = walk.y;
+        float *const row = walk.row;
         int first, last;
-        runs.next(first, last);
+        walk.runs.next(first, last);
         for (int x = first; x <= last; x += 16) {
             float u0, v0;
-            uv.at(x, u0, v0);
+            walk.uv.at(x, u0, v0);
             const __m512 u = _mm512_add_ps(_mm512_set1_ps(u0), lane_du), v = _mm512_add_ps(_mm512_set1_ps(v0), lane_dv);
             const __m512 cover = correction(block_b, x, y, correction(block_a, x, y, band(v)));
             const int n = std::min(16, last - x + 1);
