@@ -168,7 +168,7 @@ struct cache_line_allocator {
 enum class line_simd {
     portable,  // plain C++, one pixel at a time
     sse2,      // 4 pixels at a time (every x86-64 CPU)
-    avx512     // 16 pixels at a time (AVX-512 F/VL/DQ/BW; blocks of 4 × 4, i.e. thickness ≤ ~1.8)
+    avx512     // 16 pixels at a time (AVX-512 F/VL/DQ/BW; blocks of 4 × 4, i.e. thickness < 1.8)
 };
 // The best of them this CPU runs (CPUID, read by the compiler's runtime).
 line_simd best_line_simd();
@@ -176,14 +176,14 @@ line_simd best_line_simd();
 // End-correction table for draw_line_tabulated. A pixel near an end of a stroke gets
 // band + D, D = (area inside the stroke that starts at that end and never stops) − (area
 // inside the infinite band): 0 except in a small block of pixels around the end (4 × 4
-// up to thickness ≈ 1.8, 8 × 8 up to 4). The table holds D, computed exactly
+// up to thickness 1.75, 8 × 8 up to 5.3). The table holds D, computed exactly
 // (line_coverage_reference_at, double), for such blocks: directions folded into the
 // first octant by the pixel grid's symmetries (16 intervals, both ends of each) and end
 // positions within their pixel in steps of 1/16 px per axis; a drawn end blends 8 of them
-// (bilinear in position, linear in direction). Float: 648 KB up to thickness ~1.8,
-// 2.6 MB up to 4; building it evaluates the reference ~330,000 times (~50 ms at 1.5,
-// ~0.25 s at 4): make it once per thickness and keep it (render_wireframe keeps them in
-// its workspace). Thicker than 4 px (up to kMaxThickness) the table is empty and
+// (bilinear in position, linear in direction). Float: 648 KB up to thickness 1.75,
+// 2.6 MB beyond; building it evaluates the reference ~330,000 times up to 1.75, ~1 M at
+// 4 (measured 38 ms at 1.5, 114 ms at 4): make it once per thickness and keep it (render_wireframe keeps them in
+// its workspace). From about 5.35 px (up to kMaxThickness) the table is empty and
 // draw_line_tabulated draws with the exact line.
 class line_table {
 public:
@@ -221,7 +221,7 @@ private:
 // the infinite band, plus each end's correction D (see line_table) interpolated from the
 // table's blocks — an exact set identity for L ≥ thickness/2; shorter segments, segments
 // longer than 64 px (whose error along float-stepped rows is not tested) and thicknesses
-// over 4 px are drawn by draw_line_coverage. Pixels are done 16 at a time with AVX-512
+// from ~5.35 px on (no table) are drawn by draw_line_coverage. Pixels are done 16 at a time with AVX-512
 // (tiles of 4 × 4, 8 × 2 or 16 × 1 pixels, the narrowest the stroke fits), 4 at a time
 // with SSE2, or one at a time: table.simd(). Error against line_coverage_reference over
 // random segments (1–40 px, every angle, thickness 0.5–3, round and butt): mean

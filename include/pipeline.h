@@ -154,7 +154,7 @@ enum class line_method {
     tabulated, // tiny3d::draw_lines_tabulated: the same stroke and combine, the pixels near
                // each end corrected from a line_table of exact end corrections (max error
                // ≤ 0.015, 0.025 at 1 px; mean ~1e-4 per line); the workspace builds the
-               // table once per thickness (~50 ms at 1.5 px) and keeps the last few
+               // table once per thickness (~40 ms at 1.5 px) and keeps the last few
 };
 
 struct wireframe_options {

@@ -114,7 +114,7 @@ TEST(table_holds_reference_corrections) {
         CHECK(d <= 1e-6f && d >= -1.0f - 1e-6f);
         if (!(d <= 1e-6f && d >= -1.0f - 1e-6f)) break;
     }
-    // Beyond 4 px no table: the exact line draws, bit for bit.
+    // From ~5.35 px on no table: the exact line draws, bit for bit.
     const tiny3d::line_table wide = table_for(6.0);
     CHECK_EQ(wide.stamp_size, 0);
     canvas_ptr a = blank(40, 40), b = blank(40, 40);

@@ -12,7 +12,7 @@
 // stroke's side of A's end line (u ≥ w_hi, half the pixel's extent along the stroke) or
 // out of the band's reach (|v| ≥ R, R = h + √2/2); beyond the cap's reach (u ≤ −R) the
 // pixel is simply not drawn. So D_A is non-zero only in a small rectangle around A — at
-// most 4 × 4 pixels up to T ≈ 1.8, 8 × 8 up to T = 4 — and the table stores those blocks.
+// most 4 × 4 pixels up to T = 1.75, 8 × 8 up to T ≈ 5.3 — and the table stores those blocks.
 //
 // The table ("stamps"): pixel-grid symmetries (flip x, flip y, swap x and y) fold any end
 // into one with its stroke leaving in direction (a, b), a ≥ b ≥ 0, i.e. q = b/(a + b) in
@@ -48,7 +48,7 @@ constexpr double kExactFromLength = 64.0;
 // Length of the straight part used to sample a half-infinite stroke (its far end is out
 // of reach of the sampled pixels).
 constexpr double kFarEnd = 64.0;
-// Largest block side the drawers handle (T ≤ 4 at kStampCells = 16).
+// Largest block side the drawers handle (T up to ~5.3 at kStampCells = 16).
 constexpr int kMaxBlock = 8;
 // Strokes prepared together by draw_lines_tabulated.
 constexpr int kBatch = 8;
