@@ -179,10 +179,10 @@ line_simd best_line_simd();
 // up to thickness 1.75, 8 × 8 up to 5.3). The table holds D, computed exactly
 // (line_coverage_reference_at, double), for such blocks: directions folded into the
 // first octant by the pixel grid's symmetries (16 intervals, both ends of each) and end
-// positions within their pixel in steps of 1/16 px per axis; a drawn end blends 8 of them
-// (bilinear in position, linear in direction). Float: 648 KB up to thickness 1.75,
-// 2.6 MB beyond; building it evaluates the reference ~330,000 times up to 1.75, ~1 M at
-// 4 (measured 38 ms at 1.5, 114 ms at 4): make it once per thickness and keep it (render_wireframe keeps them in
+// positions within their pixel in steps of 1/24 px per axis; a drawn end blends 8 of them
+// (bilinear in position, linear in direction). Float: 1.35 MB up to thickness 1.75,
+// 5.4 MB beyond; building it evaluates the reference ~690,000 times up to 1.75, ~2.1 M at
+// 4 (measured 77 ms at 1.5, 234 ms at 4): make it once per thickness and keep it (render_wireframe keeps them in
 // its workspace). From about 5.35 px (up to kMaxThickness) the table is empty and
 // draw_line_tabulated draws with the exact line.
 class line_table {
@@ -202,7 +202,7 @@ public:
     // stamps[(((interval·2 + end)·kStampPhases + sy)·kStampPhases + sx)·S² + b·S + a];
     // stamp_axes per interval: first pixel (origin) and the cell from which it is one
     // further (jump), for x then y — see src/canvas/line_tabulated.cpp.
-    static constexpr int kStampIntervals = 16, kStampCells = 16, kStampPhases = kStampCells + 2;
+    static constexpr int kStampIntervals = 16, kStampCells = 24, kStampPhases = kStampCells + 2;
     float reach = 0;  // thickness/2 + √2/2: how far a stroke reaches pixel centres
     int stamp_size = 0;
     std::vector<int> stamp_axes;
@@ -225,8 +225,8 @@ private:
 // (tiles of 4 × 4, 8 × 2 or 16 × 1 pixels, the narrowest the stroke fits), 4 at a time
 // with SSE2, or one at a time: table.simd(). Error against line_coverage_reference over
 // random segments (1–40 px, every angle, thickness 0.5–3, round and butt): mean
-// 5e-5–1.1e-4, max 0.008–0.014, 0.021 at thickness 1 with round caps
-// (tests/line_tabulated_test.cpp bounds: mean ≤ 2e-4, max ≤ 0.015, 0.025 at 1). Speed per
+// 4e-5–9e-5, max 0.003–0.013 (tests/line_tabulated_test.cpp bounds: mean ≤ 2e-4, max ≤
+// 0.015). Speed per
 // 6.4-px segment at T = 1.5 (random places on a 1024² canvas, this 2-core AMD EPYC):
 // ≈ 128 ns with AVX-512, ≈ 205 ns with SSE2, ≈ 600 ns portable (tests/bench/lines.cpp for
 // the length sweep). Drawing B→A gives the bit-identical image. Non-finite coordinates

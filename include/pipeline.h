@@ -153,8 +153,8 @@ enum class line_method {
                // "over" (v += c·(1 − v)) with c = ink · coverage
     tabulated, // tiny3d::draw_lines_tabulated: the same stroke and combine, the pixels near
                // each end corrected from a line_table of exact end corrections (max error
-               // ≤ 0.015, 0.025 at 1 px; mean ~1e-4 per line); the workspace builds the
-               // table once per thickness (~40 ms at 1.5 px) and keeps the last few
+               // ≤ 0.015, mean ~5e-5 per line); the workspace builds the
+               // table once per thickness (~80 ms at 1.5 px) and keeps the last few
 };
 
 struct wireframe_options {

@@ -48,7 +48,7 @@ constexpr double kExactFromLength = 64.0;
 // Length of the straight part used to sample a half-infinite stroke (its far end is out
 // of reach of the sampled pixels).
 constexpr double kFarEnd = 64.0;
-// Largest block side the drawers handle (T up to ~5.3 at kStampCells = 16).
+// Largest block side the drawers handle (T up to ~5.35 at kStampCells = 24).
 constexpr int kMaxBlock = 8;
 // Strokes prepared together by draw_lines_tabulated.
 constexpr int kBatch = 8;
