@@ -143,23 +143,21 @@ TEST(table_simd_choice) {
 // well: 0.021 with 1/16-px steps, hence 1/24; T = 8 is drawn by the exact line).
 TEST(tabulated_matches_reference_at_every_angle) {
     const double thicknesses[] = {0.5, 1.0, 1.5, 3.0, 8.0};
-    for (tiny3d::line_simd simd : paths()) {
-        const int count = simd == tiny3d::best_line_simd() ? kSegments : kSegments / 4;
-        for (int i = 0; i < 5; ++i) {
-            const double t = thicknesses[i];
-            const error_stats e =
-                random_segments(table_for(t, tiny3d::line_cap::round, simd), count, 500u + unsigned(i), std::max(t / 2, 1.0), 40.0);
-            CHECK_MSG(e.mean() <= 2e-4, path_name(simd) + (" " + describe("round", t, e)));
-            CHECK_MSG(e.max <= 0.015, path_name(simd) + (" " + describe("round", t, e)));
-            CHECK(e.pixels > count * 10);
+    auto check = [](const tiny3d::line_table &built, const char *cap, int seed, double min_length) {
+        for (tiny3d::line_simd simd : paths()) {
+            tiny3d::line_table t = built;  // one build per thickness and cap, each path on a copy
+            t.use_simd(simd);
+            const int count = simd == tiny3d::best_line_simd() ? kSegments : kSegments / 4;
+            const bool round = built.cap() == tiny3d::line_cap::round;
+            const error_stats e = random_segments(t, round ? count : count / 3, unsigned(seed), min_length, 40.0);
+            CHECK_MSG(e.mean() <= 2e-4, path_name(simd) + (" " + describe(cap, t.thickness(), e)));
+            CHECK_MSG(e.max <= 0.015, path_name(simd) + (" " + describe(cap, t.thickness(), e)));
+            if (round) CHECK(e.pixels > count * 10);
         }
-        for (double t : {1.0, 1.5, 3.0}) {
-            const error_stats e =
-                random_segments(table_for(t, tiny3d::line_cap::butt, simd), count / 3, 600u, 1.0, 40.0);
-            CHECK_MSG(e.mean() <= 2e-4, path_name(simd) + (" " + describe("butt", t, e)));
-            CHECK_MSG(e.max <= 0.015, path_name(simd) + (" " + describe("butt", t, e)));
-        }
-    }
+    };
+    for (int i = 0; i < 5; ++i)
+        check(table_for(thicknesses[i]), "round", 500 + i, std::max(thicknesses[i] / 2, 1.0));
+    for (double t : {1.0, 1.5, 3.0}) check(table_for(t, tiny3d::line_cap::butt), "butt", 600, 1.0);
 }
 
 // The drawing paths compute the same coverage: u and v are rounded to float from different
@@ -172,8 +170,9 @@ TEST(tabulated_paths_agree) {
     std::uniform_real_distribution<float> at(-6.0f, 50.0f);
     const std::vector<tiny3d::line_simd> simds = paths();
     for (double thickness : {1.0, 1.5, 2.5}) {
-        std::vector<tiny3d::line_table> tables;
-        for (tiny3d::line_simd simd : simds) tables.push_back(table_for(thickness, tiny3d::line_cap::round, simd));
+        const tiny3d::line_table built = table_for(thickness);
+        std::vector<tiny3d::line_table> tables(simds.size(), built);
+        for (std::size_t p = 0; p < simds.size(); ++p) tables[p].use_simd(simds[p]);
         std::vector<double> worst(simds.size(), 0.0);  // against the portable path
         for (int k = 0; k < kSegments / 4; ++k) {
             const float x0 = at(rng), y0 = at(rng), x1 = x0 + at(rng) / 3, y1 = y0 + at(rng) / 3;
@@ -198,8 +197,10 @@ TEST(tabulated_paths_agree) {
 TEST(tabulated_batch_equals_single_calls) {
     std::mt19937 rng(99);
     std::uniform_real_distribution<float> at(-10.0f, 70.0f), ink_of(-0.2f, 1.3f);
+    const tiny3d::line_table built = table_for(1.5);
     for (tiny3d::line_simd simd : paths()) {
-        const tiny3d::line_table t = table_for(1.5, tiny3d::line_cap::round, simd);
+        tiny3d::line_table t = built;
+        t.use_simd(simd);
         std::vector<tiny3d::line_segment> segments;
         for (int k = 0; k < 300; ++k) {
             const float x0 = at(rng), y0 = at(rng);

@@ -295,6 +295,7 @@ struct stroke_setup {
     detail::square_cdf cdf;
     float half = 0, length_f = 0, du = 0, dv = 0, ink = 0;
     int row_first = 0, row_last = -1;
+    std::array<float, 4> exact{};  // x0, y0, x1, y1 of a segment handed to the exact line
 };
 
 // The stroke's rows from the top: row y, its pixels, its run first..last (next()) and its
@@ -963,10 +964,7 @@ stroke_kind prepare_stroke(const canvas_t *canvas, float x0, float y0, float x1,
     const double full_length = std::sqrt(full_dx * full_dx + full_dy * full_dy);
     // (1) needs L ≥ h; beyond kExactFromLength, or without stamps (thick lines), the exact line draws.
     if (!(full_length >= h) || full_length > kExactFromLength || table.stamp_size == 0) {
-        s.ax = x0;
-        s.ay = y0;
-        s.dx = x1;
-        s.dy = y1;  // the ends, for draw_line_coverage
+        s.exact = {x0, y0, x1, y1};
         return stroke_kind::exact;
     }
     const double inv_length = 1.0 / full_length;
@@ -1001,7 +999,7 @@ stroke_kind prepare_stroke(const canvas_t *canvas, float x0, float y0, float x1,
 
 void draw_prepared(canvas_t *canvas, stroke_kind kind, const stroke_setup &s, const line_table &table) {
     if (kind == stroke_kind::exact) {
-        draw_line_coverage(canvas, float(s.ax), float(s.ay), float(s.dx), float(s.dy), table.thickness(),
+        draw_line_coverage(canvas, s.exact[0], s.exact[1], s.exact[2], s.exact[3], table.thickness(),
                            {table.cap(), s.ink});
         return;
     }
