@@ -16,7 +16,9 @@ WARN     := -Wall -Wextra -Wpedantic -Werror
 CPPFLAGS := -Iinclude -MMD -MP
 OPT      ?= -O2
 # float-cast-overflow is not part of GCC's "undefined" group: out-of-range float→int is UB too.
-SANFLAGS := -O1 -g -fsanitize=address,undefined,float-cast-overflow -fno-omit-frame-pointer -fno-sanitize-recover=all
+# -g1 (line tables only): reports still name file:line, and the sanitizer build — most of
+# `make test`'s time — compiles ~25 % faster than with full -g.
+SANFLAGS := -O1 -g1 -fsanitize=address,undefined,float-cast-overflow -fno-omit-frame-pointer -fno-sanitize-recover=all
 LDLIBS   := -pthread
 
 LIB_SRCS   := $(sort $(shell find src -name '*.cpp'))
