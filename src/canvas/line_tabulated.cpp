@@ -356,7 +356,7 @@ end_source locate_end(const line_table &t, double px, double py, double ex, doub
         std::swap(ax, ay);
     }
     constexpr int intervals = line_table::kStampIntervals, cells = line_table::kStampCells;
-    const double fq = ay / (ax + ay) * (2 * intervals);  // q in units of half an interval... of one slice step
+    const double fq = ay / (ax + ay) * (2 * intervals);  // q = b/(a + b) scaled so slice k sits at k
     const int k = std::min(int(fq), intervals - 1);
     e.wq = float(fq - k);
     const int fx = detail::floor_to_int(cx), fy = detail::floor_to_int(cy);
@@ -404,11 +404,12 @@ void blend_blocks(const end_source &e, int size, float *canonical) {
     }
 }
 
-// Canonical element (a, b) of a size × size block → its place in the canvas block.
-int unfolded_index(const end_source &e, int size, int a, int b) {
-    int ux = e.swap ? b : a, uy = e.swap ? a : b;
-    if (e.flip_x) ux = size - 1 - ux;
-    if (e.flip_y) uy = size - 1 - uy;
+// Canonical element (a, b) of a size × size block → its place in the canvas block
+// (undoing the fold: unswap, then unflip).
+constexpr int unfolded_index(bool swap, bool flip_x, bool flip_y, int size, int a, int b) {
+    int ux = swap ? b : a, uy = swap ? a : b;
+    if (flip_x) ux = size - 1 - ux;
+    if (flip_y) uy = size - 1 - uy;
     return uy * size + ux;
 }
 
@@ -421,7 +422,7 @@ void fill_block_portable(const end_source &e, int size, end_block &block) {
     std::fill(std::begin(block.rows), std::end(block.rows), 0.0f);
     for (int b = 0; b < size; ++b)
         for (int a = 0; a < size; ++a) {
-            const int at = unfolded_index(e, size, a, b);
+            const int at = unfolded_index(e.swap, e.flip_x, e.flip_y, size, a, b);
             block.rows[(at / size) * end_block::kStride + end_block::kPad + at % size] = canonical[b * size + a];
         }
 }
@@ -572,12 +573,8 @@ constexpr std::array<lane_indices, 8> unfold_tables() {
     std::array<lane_indices, 8> out{};
     for (int fold = 0; fold < 8; ++fold)
         for (int b = 0; b < 4; ++b)
-            for (int a = 0; a < 4; ++a) {
-                int ux = fold & 4 ? b : a, uy = fold & 4 ? a : b;
-                if (fold & 1) ux = 3 - ux;
-                if (fold & 2) uy = 3 - uy;
-                out[std::size_t(fold)][std::size_t(uy * 4 + ux)] = b * 4 + a;
-            }
+            for (int a = 0; a < 4; ++a)
+                out[std::size_t(fold)][std::size_t(unfolded_index(fold & 4, fold & 1, fold & 2, 4, a, b))] = b * 4 + a;
     return out;
 }
 constexpr std::array<lane_indices, 8> kUnfold4 = unfold_tables();
@@ -587,6 +584,29 @@ struct block16 {
     __m512 values;
     int x0, y0;
     bool live;
+};
+
+// The lanes of a tile of W columns × 16/W rows (lane i·W + c = tile pixel (c, i)), and how
+// an end block enters such a tile.
+template <int W>
+struct tile_lanes {
+    static constexpr int kRows = 16 / W;
+    __m512i row, col, block_base;  // block_base: 4·row + col
+    explicit tile_lanes(__m512i iota)
+        : row(_mm512_srli_epi32(iota, W == 4 ? 2 : W == 8 ? 3 : 4)),
+          col(_mm512_and_si512(iota, _mm512_set1_epi32(W - 1))),
+          block_base(_mm512_add_epi32(_mm512_slli_epi32(row, 2), col)) {}
+    // cover + block b's values on the pixels it shares with the tile whose first pixel is
+    // (x, y): tile lane (i, c) takes block lane 4·(i + y − y0) + (c + x − x0) by one masked
+    // permute.
+    __m512 add_block(const block16 &b, int x, int y, __m512 cover) const {
+        const int dy0 = y - b.y0, dx0 = x - b.x0;
+        if (!b.live || dy0 >= 4 || dy0 + kRows <= 0 || dx0 >= 4 || dx0 + W <= 0) return cover;
+        const __mmask16 in_rows = _mm512_cmp_epu32_mask(_mm512_add_epi32(row, _mm512_set1_epi32(dy0)), _mm512_set1_epi32(4), _MM_CMPINT_LT);
+        const __mmask16 in_cols = _mm512_cmp_epu32_mask(_mm512_add_epi32(col, _mm512_set1_epi32(dx0)), _mm512_set1_epi32(4), _MM_CMPINT_LT);
+        const __m512i from = _mm512_add_epi32(block_base, _mm512_set1_epi32(4 * dy0 + dx0));
+        return _mm512_add_ps(cover, _mm512_maskz_permutexvar_ps(in_rows & in_cols, from, b.values));
+    }
 };
 
 // locate_end for up to 16 ends at once (8 strokes: lane 2i end A of stroke i, 2i + 1 its
@@ -635,7 +655,7 @@ void locate_ends16(const line_table &t, const float *px, const float *py, const 
     constexpr int phases = line_table::kStampPhases;
     const int area = t.stamp_size * t.stamp_size;
     // (((k·2)·phases + sy)·phases + sx)·area
-    const __m512i index = _mm512_add_epi32(_mm512_mullo_epi32(_mm512_add_epi32(_mm512_slli_epi32(k, 1), _mm512_setzero_si512()), _mm512_set1_epi32(phases)), sy);
+    const __m512i index = _mm512_add_epi32(_mm512_mullo_epi32(_mm512_slli_epi32(k, 1), _mm512_set1_epi32(phases)), sy);
     _mm512_store_si512(out.offset, _mm512_mullo_epi32(_mm512_add_epi32(_mm512_mullo_epi32(index, _mm512_set1_epi32(phases)), sx), _mm512_set1_epi32(area)));
     // The block's canonical first pixel, unswapped and unflipped (locate_end).
     const __m512i cx0 = _mm512_add_epi32(_mm512_add_epi32(fx, origin_x), _mm512_maskz_mov_epi32(past_x, one));
@@ -692,14 +712,6 @@ void draw_avx512(canvas_t *canvas, const stroke_setup &s, const block16 &block_a
         const __m512 near = centred(_mm512_sub_ps(half, a));
         return _mm512_add_ps(near, wide ? saturated : centred(_mm512_add_ps(half, a)));
     };
-    // Block b's row y for the 16 pixels from x, or 0.
-    auto correction = [&](const block16 &b, int x, int y, __m512 cover) {
-        const int r = y - b.y0, off = b.x0 - x;  // block column 0 at lane off
-        if (!b.live || unsigned(r) >= 4u || off <= -4 || off >= 16) return cover;
-        const __mmask16 at = __mmask16(off >= 0 ? 0xFu << off : 0xFu >> -off);
-        const __m512i from = _mm512_add_epi32(iota, _mm512_set1_epi32(r * 4 - off));
-        return _mm512_add_ps(cover, _mm512_maskz_permutexvar_ps(at, from, b.values));
-    };
     const double ry = s.row_first + 0.5 - s.ay, rx = 0.5 - s.ax;
     auto blend = [&](float *p, __mmask16 keep, __m512 cover) {
         const __m512 c = _mm512_max_ps(_mm512_min_ps(_mm512_mul_ps(ink, cover), one), _mm512_setzero_ps());
@@ -714,23 +726,12 @@ void draw_avx512(canvas_t *canvas, const stroke_setup &s, const block16 &block_a
     // Tiles of 16 pixels: W columns from x_lo × 16/W rows (W = 4, 8 or 16), the narrowest
     // that holds the stroke's columns: a steep stroke 4 columns wide takes a register per 4 rows.
     auto tiles = [&]<int W>() {
-        constexpr int rows = 16 / W;
-        const __m512i lane_row = _mm512_srli_epi32(iota, W == 4 ? 2 : W == 8 ? 3 : 4);
-        const __m512i lane_col = _mm512_and_si512(iota, _mm512_set1_epi32(W - 1));
-        // block index of lane (i, c) is 4·i + c + 4·(y − y0) + (x_lo − x0)
-        const __m512i block_base = _mm512_add_epi32(_mm512_slli_epi32(lane_row, 2), lane_col);
-        const __m512 col_f = _mm512_cvtepi32_ps(lane_col), row_f = _mm512_cvtepi32_ps(lane_row);
+        const tile_lanes<W> tile(iota);
+        constexpr int rows = tile_lanes<W>::kRows;
+        const __m512 col_f = _mm512_cvtepi32_ps(tile.col), row_f = _mm512_cvtepi32_ps(tile.row);
         const __m512 off_u = _mm512_add_ps(_mm512_mul_ps(col_f, _mm512_set1_ps(s.du)), _mm512_mul_ps(row_f, _mm512_set1_ps(float(s.dy))));
         const __m512 off_v = _mm512_add_ps(_mm512_mul_ps(col_f, _mm512_set1_ps(s.dv)), _mm512_mul_ps(row_f, _mm512_set1_ps(float(s.dx))));
-        const __mmask16 columns = __mmask16(_mm512_cmp_epi32_mask(lane_col, _mm512_set1_epi32(x_hi - x_lo), _MM_CMPINT_LE));
-        auto add_block = [&](const block16 &b, int y, __m512 cover) {
-            const int dy0 = y - b.y0, dx0 = x_lo - b.x0;
-            if (!b.live || dy0 >= 4 || dy0 + rows <= 0 || dx0 >= 4 || dx0 + W <= 0) return cover;
-            const __mmask16 in_rows = _mm512_cmp_epu32_mask(_mm512_add_epi32(lane_row, _mm512_set1_epi32(dy0)), _mm512_set1_epi32(4), _MM_CMPINT_LT);
-            const __mmask16 in_cols = _mm512_cmp_epu32_mask(_mm512_add_epi32(lane_col, _mm512_set1_epi32(dx0)), _mm512_set1_epi32(4), _MM_CMPINT_LT);
-            const __m512i from = _mm512_add_epi32(block_base, _mm512_set1_epi32(4 * dy0 + dx0));
-            return _mm512_add_ps(cover, _mm512_maskz_permutexvar_ps(in_rows & in_cols, from, b.values));
-        };
+        const __mmask16 columns = __mmask16(_mm512_cmp_epi32_mask(tile.col, _mm512_set1_epi32(x_hi - x_lo), _MM_CMPINT_LE));
         const double rx_lo = rx + x_lo;
         const __m128d down = _mm_set_pd(rows * s.dx, rows * s.dy);
         __m128d uv_row = _mm_set_pd(ry * s.dx - rx_lo * s.dy, rx_lo * s.dx + ry * s.dy);  // (u, v) of pixel x_lo
@@ -739,7 +740,7 @@ void draw_avx512(canvas_t *canvas, const stroke_setup &s, const block16 &block_a
             const __m128 uv = _mm_cvtpd_ps(uv_row);
             const __m512 u = _mm512_add_ps(_mm512_broadcastss_ps(uv), off_u);
             const __m512 v = _mm512_add_ps(_mm512_broadcastss_ps(_mm_movehdup_ps(uv)), off_v);
-            const __m512 cover = add_block(block_b, y, add_block(block_a, y, band(v)));
+            const __m512 cover = tile.add_block(block_b, x_lo, y, tile.add_block(block_a, x_lo, y, band(v)));
             const int live_rows = std::min(rows, s.row_last - y + 1);
             const __mmask16 keep = __mmask16(_mm512_cmp_ps_mask(u, u_lo, _CMP_GT_OQ) & _mm512_cmp_ps_mask(u, u_hi, _CMP_LT_OQ) &
                                              _mm512_cmp_ps_mask(cover, _mm512_setzero_ps(), _CMP_GT_OQ) & columns &
@@ -774,6 +775,7 @@ void draw_avx512(canvas_t *canvas, const stroke_setup &s, const block16 &block_a
     if (span <= 4 && x_lo + 4 <= width) return tiles.template operator()<4>();
     if (span <= 8 && x_lo + 8 <= width) return tiles.template operator()<8>();
     if (span <= 16) return tiles.template operator()<16>();
+    const tile_lanes<16> run(iota);  // a row's run, 16 pixels at a time
     for (row_walk walk(canvas, s); walk.y <= s.row_last; walk.advance()) {
         const int y = walk.y;
         float *const row = walk.row;
@@ -783,7 +785,7 @@ void draw_avx512(canvas_t *canvas, const stroke_setup &s, const block16 &block_a
             float u0, v0;
             walk.uv.at(x, u0, v0);
             const __m512 u = _mm512_add_ps(_mm512_set1_ps(u0), lane_du), v = _mm512_add_ps(_mm512_set1_ps(v0), lane_dv);
-            const __m512 cover = correction(block_b, x, y, correction(block_a, x, y, band(v)));
+            const __m512 cover = run.add_block(block_b, x, y, run.add_block(block_a, x, y, band(v)));
             const int n = std::min(16, last - x + 1);
             const __mmask16 keep = __mmask16(_mm512_cmp_ps_mask(u, u_lo, _CMP_GT_OQ) & _mm512_cmp_ps_mask(u, u_hi, _CMP_LT_OQ) &
                                              (0xFFFFu >> (16 - n)));
@@ -792,8 +794,6 @@ void draw_avx512(canvas_t *canvas, const stroke_setup &s, const block16 &block_a
     }
 }
 
-// Strokes prepared in a batch: all their blocks first (the table reads of several strokes
-// overlap instead of each stroke waiting for its own), then their pixels, in order.
 // prepare_stroke's common case (both ends finite and in the grown canvas, h ≤ L ≤ 64 px,
 // intensity > 0) for up to 8 segments at once: the same double operations lane by lane,
 // so the set-ups are bit for bit prepare_stroke's. Returns the lanes it set up; the
@@ -861,12 +861,11 @@ unsigned prepare8_avx512(const canvas_t &canvas, const line_segment *g, int n, c
     auto floor_int = [](__m512d v) {
         return _mm512_cvttpd_epi32(_mm512_roundscale_pd(v, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC));
     };
-    const __m512d y_lo = _mm512_min_pd(Y1, Y0), y_hi = _mm512_max_pd(Y1, Y0);
     const __m256i row_first = _mm256_sub_epi32(
         _mm256_setzero_si256(),
-        floor_int(_mm512_sub_pd(zero, clamp(_mm512_sub_pd(_mm512_sub_pd(y_lo, _mm512_set1_pd(reach)), _mm512_set1_pd(0.5)), 0.0, height))));
+        floor_int(_mm512_sub_pd(zero, clamp(_mm512_sub_pd(_mm512_sub_pd(y_min, _mm512_set1_pd(reach)), _mm512_set1_pd(0.5)), 0.0, height))));
     const __m256i row_last =
-        floor_int(clamp(_mm512_sub_pd(_mm512_add_pd(y_hi, _mm512_set1_pd(reach)), _mm512_set1_pd(0.5)), -1.0, height - 1.0));
+        floor_int(clamp(_mm512_sub_pd(_mm512_add_pd(y_max, _mm512_set1_pd(reach)), _mm512_set1_pd(0.5)), -1.0, height - 1.0));
     alignas(64) double ax[8], ay[8], adx[8], ady[8], alen[8];
     alignas(32) float lo[8], hi[8], ia[8], i2[8], ink_f[8];
     alignas(32) std::int32_t first[8], last[8];
@@ -907,6 +906,8 @@ unsigned prepare8_avx512(const canvas_t &canvas, const line_segment *g, int n, c
     return ok;
 }
 
+// Strokes prepared in a batch: all their blocks first (the table reads of several strokes
+// overlap instead of each stroke waiting for its own), then their pixels, in order.
 void draw_batch_avx512(canvas_t *canvas, const stroke_setup *strokes, int count, const line_table &table) {
     alignas(64) float px[16] = {}, py[16] = {}, ex[16], ey[16];
     std::fill(std::begin(ex), std::end(ex), 1.0f);
