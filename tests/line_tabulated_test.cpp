@@ -27,11 +27,8 @@ constexpr int kSegments = 600;
 #endif
 
 using canvas_ptr = tiny3d::canvas_ptr;
-tiny3d::line_table table_for(double thickness, tiny3d::line_cap cap = tiny3d::line_cap::round,
-                             tiny3d::line_simd simd = tiny3d::best_line_simd()) {
-    tiny3d::line_table t = std::move(tiny3d::line_table::make(float(thickness), cap).value());
-    t.use_simd(simd);
-    return t;
+tiny3d::line_table table_for(double thickness, tiny3d::line_cap cap = tiny3d::line_cap::round) {
+    return std::move(tiny3d::line_table::make(float(thickness), cap).value());
 }
 
 // Every drawing path this CPU runs (the best one is also what every other test uses).
