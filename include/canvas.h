@@ -89,7 +89,7 @@ enum class pgm_encoding { binary_p5, ascii_p2 };
 status save_pgm(const canvas_t &canvas, const std::string &path,
                 pgm_encoding encoding = pgm_encoding::binary_p5);
 
-// ---- lines beyond the report (src/canvas/line_coverage.cpp, line_thin.cpp) -------------
+// ---- lines beyond the report (src/lines/line_coverage.cpp, line_thin.cpp) -------------
 //
 // Coordinates are in pixels with the convention above (pixel (x, y) is the unit square
 // [x, x+1) × [y, y+1)). Every line is clipped to the canvas first (Liang–Barsky, in double),
@@ -121,7 +121,7 @@ struct line_style {
 // integrated exactly in double from the stroke's outline: over a column the stroke's
 // cross-section is one interval [lower(X), upper(X)], so a pixel's area is a difference
 // of ∫ max(y − t, 0) dX over the boundary pieces (straight sides, butt ends, cap arcs with
-// primitive ½(w·√(h² − w²) + h²·asin(w/h))) — see src/canvas/stroke_outline.h. A stroke
+// primitive ½(w·√(h² − w²) + h²·asin(w/h))) — see src/lines/stroke_outline.h. A stroke
 // that contains the whole canvas fills it. Measured against line_coverage_reference over
 // thousands of random segments (lengths 0–300 px, T 0.5–8): max |error| < 1e-4 (about
 // 1e-6 seen), total ink = length·T (+ πT²/4 for round caps) to 1e-3 relative
@@ -201,7 +201,7 @@ public:
     // Internal layout (for the drawer). Block side S = stamp_size (0: no table);
     // stamps[(((interval·2 + end)·kStampPhases + sy)·kStampPhases + sx)·S² + b·S + a];
     // stamp_axes per interval: first pixel (origin) and the cell from which it is one
-    // further (jump), for x then y — see src/canvas/line_tabulated.cpp.
+    // further (jump), for x then y — see src/lines/line_tabulated.cpp.
     static constexpr int kStampIntervals = 16, kStampCells = 24, kStampPhases = kStampCells + 2;
     float reach = 0;  // thickness/2 + √2/2: how far a stroke reaches pixel centres
     int stamp_size = 0;
@@ -270,7 +270,7 @@ float mix_intensity(float a, float b, float t);
 // (x0, y0) (n = max(|dx|, |dy|); a single pixel takes intensity0).
 void draw_line_gradient(canvas_t *canvas, int x0, int y0, int x1, int y1, float intensity0, float intensity1);
 
-// ---- reading and writing PNM images (src/canvas/pnm_io.cpp) -----------------------------
+// ---- reading and writing PNM images (src/canvas/file_io.cpp, src/canvas/pnm_read.cpp) -----------------------------
 
 // Reads a PGM (P2 ASCII, P5 binary) or PPM (P3, P6; converted to grey by Rec. 709
 // luminance Y = 0.2126 R + 0.7152 G + 0.0722 B on the linear values, no gamma) into a new

@@ -1,6 +1,6 @@
 // loaders.h — Wavefront OBJ and PLY meshes from files or memory (part of the renderer
-// module; renderer.h includes it). Implementations: src/renderer/obj_loader.cpp,
-// src/renderer/ply_loader.cpp, src/renderer/loader_common.cpp.
+// module; renderer.h includes it). Implementations: src/mesh/obj_loader.cpp,
+// src/mesh/ply_loader.cpp, src/mesh/loader_common.cpp.
 //
 // Every loader returns tiny3d::result<mesh>: the mesh (faces as stored in the file, edges
 // derived with mesh_derive_edges), or an error naming the file (`name` for the parse_*

@@ -60,7 +60,7 @@ inline std::vector<corner_triangle> mesh_triangles(const mesh &m) {
     return tris;
 }
 
-// ---- mesh utilities (src/renderer/mesh.cpp) -------------------------------------------
+// ---- mesh utilities (src/mesh/mesh.cpp) -------------------------------------------
 
 // Derives m.edges from the faces: every unique undirected edge once, stored with a < b and
 // sorted by (a, b). Sort-based, O(n log n) in the corner count. Degenerate corner pairs
@@ -111,7 +111,7 @@ bounding_sphere mesh_bounding_sphere(const mesh &m);
 // which face / corner / edge is wrong.
 status mesh_validate(const mesh &m);
 
-// ---- generators (src/renderer/generators.cpp) ------------------------------------------
+// ---- generators (src/mesh/generators.cpp) ------------------------------------------
 // Every generator computes its mesh from the definition (no pasted coordinate tables),
 // gives faces counter-clockwise seen from outside, shares positions between faces, and
 // derives the edges. Invalid parameters (counts below the stated minimum, non-positive or

@@ -1,6 +1,6 @@
 // pipeline.h — projection, viewport, clipping, frustum culling and wireframes (part of the
-// renderer module; renderer.h includes it). Implementations: src/renderer/vertex_projection.cpp,
-// src/renderer/clipping.cpp, src/renderer/wireframe.cpp.
+// renderer module; renderer.h includes it). Implementations: src/pipeline/vertex_projection.cpp,
+// src/pipeline/clipping.cpp, src/wireframe/wireframe.cpp.
 //
 // Stages, as data flows:
 //   model space --model--> world --view--> camera --proj--> clip space (x, y, z, w)
@@ -59,7 +59,7 @@ void render_wireframe(canvas_t *canvas, vec3_t *vertices, int vertex_count, int 
 
 namespace tiny3d {
 
-// ---- projection and viewport (src/renderer/vertex_projection.cpp) ----------------------------
+// ---- projection and viewport (src/pipeline/vertex_projection.cpp) ----------------------------
 
 struct screen_point {
     float x, y;     // pixels (viewport convention above)
@@ -78,7 +78,7 @@ screen_point clip_to_screen(vec4_t clip, int width, int height);
 // v (model space) through model_view_proj to the screen.
 screen_point project_point(vec3_t v, const mat4_t &model_view_proj, int width, int height);
 
-// ---- clipping (src/renderer/clipping.cpp) -------------------------------------------
+// ---- clipping (src/pipeline/clipping.cpp) -------------------------------------------
 
 // The visible part of a segment as parameters along it: points a + t·(b − a), t in
 // [t0, t1]; visible = false when nothing remains.
@@ -143,7 +143,7 @@ enum class cull_result { outside, intersecting, inside };
 // radius (an empty mesh) is outside.
 cull_result cull_sphere(const frustum &f, const bounding_sphere &s);
 
-// ---- wireframes (src/renderer/wireframe.cpp) ------------------------------------------
+// ---- wireframes (src/wireframe/wireframe.cpp) ------------------------------------------
 
 enum class line_method {
     faithful,  // the report's draw_line_f (additive splats). It has no intensity: every

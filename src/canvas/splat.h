@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "canvas.h"
-#include "line_clip.h"
+#include "../lines/line_clip.h"
 
 namespace tiny3d::detail {
 

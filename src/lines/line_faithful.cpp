@@ -4,7 +4,7 @@
 
 #include "canvas.h"
 #include "line_clip.h"
-#include "splat.h"
+#include "../canvas/splat.h"
 
 using tiny3d::detail::clip_parameter_range;
 
