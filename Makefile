@@ -37,8 +37,11 @@ DEMO_SRCS  := $(sort $(wildcard demo/*.cpp))
 DEMO_NAMES := $(DEMO_SRCS:demo/%.cpp=%)
 DEMO_BINS  := $(DEMO_NAMES:%=$(BUILD)/demo/%)
 
+# The benchmarks' own library (timing, CSV, charts, font): not part of libtiny3d.a.
 BENCH_COMMON_SRCS := $(sort $(wildcard tests/bench/common/*.cpp))
 BENCH_COMMON_OBJS := $(BENCH_COMMON_SRCS:%.cpp=$(BUILD)/obj/%.o)
+BENCH_LIB         := $(BUILD)/bench/libtiny3d_bench.a
+SAN_BENCH_LIB     := $(BUILD)/san/bench/libtiny3d_bench.a
 BENCH_SRCS := $(sort $(wildcard tests/bench/*.cpp))
 BENCH_BINS := $(BENCH_SRCS:tests/bench/%.cpp=$(BUILD)/bench/bin/%)
 
@@ -52,6 +55,14 @@ $(LIB): $(LIB_OBJS)
 	rm -f $@ && ar rcs $@ $^
 
 $(SAN_LIB): $(SAN_OBJS)
+	@mkdir -p $(@D)
+	rm -f $@ && ar rcs $@ $^
+
+$(BENCH_LIB): $(BENCH_COMMON_OBJS)
+	@mkdir -p $(@D)
+	rm -f $@ && ar rcs $@ $^
+
+$(SAN_BENCH_LIB): $(BENCH_COMMON_SRCS:%.cpp=$(BUILD)/san/obj/%.o)
 	@mkdir -p $(@D)
 	rm -f $@ && ar rcs $@ $^
 
@@ -71,6 +82,15 @@ $(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(LIB)
 $(BUILD)/san/tests/%: $(BUILD)/san/obj/tests/%.o $(SAN_LIB)
 	@mkdir -p $(@D)
 	$(CXX) $(STD) $(SANFLAGS) $< $(SAN_LIB) -o $@ $(LDLIBS)
+
+# chart_test tests the benchmarks' library (charts, font, CSV) too.
+$(BUILD)/tests/chart_test: $(BUILD)/obj/tests/chart_test.o $(BENCH_LIB) $(LIB)
+	@mkdir -p $(@D)
+	$(CXX) $(STD) $(OPT) $< $(BENCH_LIB) $(LIB) -o $@ $(LDLIBS)
+
+$(BUILD)/san/tests/chart_test: $(BUILD)/san/obj/tests/chart_test.o $(SAN_BENCH_LIB) $(SAN_LIB)
+	@mkdir -p $(@D)
+	$(CXX) $(STD) $(SANFLAGS) $< $(SAN_BENCH_LIB) $(SAN_LIB) -o $@ $(LDLIBS)
 
 tests: $(TEST_BINS) $(SAN_TESTS) $(DEMO_BINS)
 # `make test` and `make demo` build with one job per core even when called without -j.
@@ -101,9 +121,9 @@ demo:
 	@echo "frames written under $(BUILD)/frames/"
 
 # ---- benchmarks ----
-$(BUILD)/bench/bin/%: $(BUILD)/obj/tests/bench/%.o $(BENCH_COMMON_OBJS) $(LIB)
+$(BUILD)/bench/bin/%: $(BUILD)/obj/tests/bench/%.o $(BENCH_LIB) $(LIB)
 	@mkdir -p $(@D)
-	$(CXX) $(STD) $(OPT) $< $(BENCH_COMMON_OBJS) $(LIB) -o $@ $(LDLIBS)
+	$(CXX) $(STD) $(OPT) $< $(BENCH_LIB) $(LIB) -o $@ $(LDLIBS)
 
 bench: $(BENCH_BINS) $(BUILD)/bench/tools/summary
 	@set -e; mkdir -p $(BUILD)/bench; for b in $(BENCH_BINS); do \

@@ -1,4 +1,4 @@
-// canvas.h — the float canvas, sub-pixel splats, lines and PGM files.
+// canvas.h — the float canvas, sub-pixel splats, lines and image files (PGM, PPM, PNG).
 //
 // Conventions (pinned by tests/canvas_test.cpp):
 //  * A canvas is width × height intensities in 0..1, stored in ONE contiguous,
@@ -15,8 +15,10 @@
 #define TINY3D_CANVAS_H
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <new>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -287,6 +289,20 @@ enum class ppm_encoding { binary_p6, ascii_p3 };
 // Writes the grey canvas as a colour PPM (R = G = B = round(clamp(v)·255)), atomically
 // like save_pgm, with the same errors.
 status save_ppm(const canvas_t &canvas, const std::string &path, ppm_encoding encoding = ppm_encoding::binary_p6);
+
+// ---- writing PNG (src/canvas/png.cpp) ---------------------------------------------------
+// CRC-32 as used by PNG and gzip (polynomial 0xEDB88320 reflected, initial and final
+// xor 0xFFFFFFFF): crc32 of "123456789" is 0xCBF43926.
+std::uint32_t crc32(std::span<const std::uint8_t> bytes);
+// Adler-32 as used by zlib (sums modulo 65521): adler32 of "Wikipedia" is 0x11E60398.
+std::uint32_t adler32(std::span<const std::uint8_t> bytes);
+
+// The canvas as a PNG file image: 8-bit greyscale (colour type 0), no interlace, each row
+// with filter type 0, value = round(clamp(v, 0, 1) · 255) as in PGM; the zlib stream uses
+// stored (uncompressed) deflate blocks, so the file is about width × height bytes.
+std::vector<std::uint8_t> encode_png(const canvas_t &canvas);
+// Writes encode_png(canvas) atomically (see write_file_atomic); errors name the path.
+status save_png(const canvas_t &canvas, const std::string &path);
 
 }  // namespace tiny3d
 

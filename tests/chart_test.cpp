@@ -1,4 +1,5 @@
-// chart_test.cpp — font, axis mapping, chart layout, PNG bytes and the benchmark CSV.
+// chart_test.cpp — the benchmarks' library (font, axis mapping, chart layout, CSV) and
+// the library's PNG bytes. Linked with tests/bench/common (build/bench/libtiny3d_bench.a).
 #include <unistd.h>
 
 #include <cmath>
@@ -7,12 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "chart.h"
+#include "bench/common/bench.h"
+#include "bench/common/chart.h"
 #include "harness.h"
-
-// The benchmark helpers are not part of the library; compile them in to test the CSV
-// (tests/bench/common/bench.cpp is also linked into every benchmark program).
-#include "bench/common/bench.cpp"
 
 namespace {
 

@@ -13,7 +13,7 @@
 #include <array>
 #include <cmath>
 
-#include "chart.h"
+#include "canvas.h"
 
 namespace tiny3d {
 namespace {

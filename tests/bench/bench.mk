@@ -2,15 +2,15 @@
 #   make bench             every tests/bench/*.cpp program, then one summary table
 #                          (build/bench/summary.csv); not part of `make test`
 #   make bench-callgrind   instruction counts per variant (--quick runs under valgrind)
-#   make docs-charts       build/bench/*.pgm -> documentation/charts/*.png (our PNG writer)
+#   make docs-charts       build/bench/*.pgm -> documentation/charts/*.png (the library's PNG writer)
 #   make docs-tables       the tables in documentation/benchmarks.md from build/bench/*.csv
 BENCH_TOOL_SRCS := $(sort $(wildcard tests/bench/tools/*.cpp))
 BENCH_TOOLS     := $(BENCH_TOOL_SRCS:tests/bench/tools/%.cpp=$(BUILD)/bench/tools/%)
 BENCH_CALLGRIND ?= $(BENCH_BINS)
 
-$(BUILD)/bench/tools/%: $(BUILD)/obj/tests/bench/tools/%.o $(BENCH_COMMON_OBJS) $(LIB)
+$(BUILD)/bench/tools/%: $(BUILD)/obj/tests/bench/tools/%.o $(BENCH_LIB) $(LIB)
 	@mkdir -p $(@D)
-	$(CXX) $(STD) $(OPT) $< $(BENCH_COMMON_OBJS) $(LIB) -o $@ $(LDLIBS)
+	$(CXX) $(STD) $(OPT) $< $(BENCH_LIB) $(LIB) -o $@ $(LDLIBS)
 
 .PHONY: bench-callgrind docs-charts docs-tables
 bench-callgrind: $(BENCH_BINS)

@@ -7,7 +7,7 @@
 //   * prints a table (with each row's time as a ratio to the faithful row of its group),
 //   * writes OUT/<family>.csv (header line + one row per variant, no empty fields),
 //   * draws OUT/<family>.pgm: log-log chart of time (x) against error (y), one marker per
-//     row, drawn with the library's own chart code (include/chart.h).
+//     row, drawn with the benchmarks' chart code (common/chart.h).
 //
 //   int main(int argc, char **argv) {
 //       const bench::options o = bench::parse_options(argc, argv);

@@ -3,7 +3,6 @@
 #include <cstdio>
 
 #include "canvas.h"
-#include "chart.h"
 
 int main(int argc, char **argv) {
     if (argc < 3 || argc % 2 == 0) {

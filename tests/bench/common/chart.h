@@ -1,7 +1,8 @@
-// chart.h — text, charts and PNG output drawn with libtiny3d's own canvas.
+// chart.h — text and charts drawn with libtiny3d's own canvas and lines.
 //
-// Used by the benchmarks (tests/bench/) to draw "time against error" charts, and by
-// `make docs-charts` to convert them to PNG for the web. Everything is in namespace tiny3d.
+// Part of the benchmarks' own library (tests/bench/common, not libtiny3d.a): the
+// benchmarks draw their "time against error" charts with it; `make docs-charts` converts
+// the charts to PNG with the library's save_png (canvas.h). Everything is in namespace tiny3d.
 //
 // Coordinates are canvas pixels as in canvas.h: origin top-left, y down, pixel (x, y)
 // covers [x, x+1) × [y, y+1). Text positions are integer pixel corners.
@@ -23,7 +24,7 @@
 namespace tiny3d {
 
 // ---- the built-in bitmap font ---------------------------------------------------------
-// A 5 × 7 pixel font for printable ASCII (32..126), defined in code (src/canvas/font.cpp).
+// A 5 × 7 pixel font for printable ASCII (32..126), defined in code (tests/bench/common/font.cpp).
 // Any other character (each UTF-8 code point counts once) is drawn as a hollow box.
 inline constexpr int font_glyph_width = 5;   // ink columns per glyph
 inline constexpr int font_glyph_height = 7;  // ink rows per glyph
@@ -147,20 +148,6 @@ inline constexpr int chart_min_height = 160;
 // text stays inside the canvas. Fails (canvas untouched) when the canvas is smaller than
 // chart_min_width × chart_min_height or a given axis range is invalid.
 result<chart_layout> draw_chart(canvas_t &canvas, const chart_spec &spec);
-
-// ---- PNG -------------------------------------------------------------------------------
-// CRC-32 as used by PNG and gzip (polynomial 0xEDB88320 reflected, initial and final
-// xor 0xFFFFFFFF): crc32 of "123456789" is 0xCBF43926.
-std::uint32_t crc32(std::span<const std::uint8_t> bytes);
-// Adler-32 as used by zlib (sums modulo 65521): adler32 of "Wikipedia" is 0x11E60398.
-std::uint32_t adler32(std::span<const std::uint8_t> bytes);
-
-// The canvas as a PNG file image: 8-bit greyscale (colour type 0), no interlace, each row
-// with filter type 0, value = round(clamp(v, 0, 1) · 255) as in PGM; the zlib stream uses
-// stored (uncompressed) deflate blocks, so the file is about width × height bytes.
-std::vector<std::uint8_t> encode_png(const canvas_t &canvas);
-// Writes encode_png(canvas) atomically (see write_file_atomic); errors name the path.
-status save_png(const canvas_t &canvas, const std::string &path);
 
 }  // namespace tiny3d
 
