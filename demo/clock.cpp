@@ -2,7 +2,7 @@
 // radius 200 px, thickness 1.5, drawn twice on 512×512 canvases: with the report's
 // draw_line_f (clock_lines.pgm) and with the exact-coverage line (clock_lines_fast.pgm).
 //
-//   clock [--out DIR] [--size WxH]
+//   clock [--out DIR] [--size WxH] [--png]   (clock --help lists the options)
 #include <cmath>
 #include <string>
 
@@ -29,18 +29,23 @@ void draw_clock(canvas_t &canvas, DrawLine &&draw_line) {
 }  // namespace
 
 int main(int argc, char **argv) {
-    auto parsed = demo::parse(argc, argv, "clock", kSize, kSize, 1);
-    if (!parsed) return demo::fail("clock", parsed.message());
-    demo::options &o = *parsed;
-    if (tiny3d::status s = demo::check_no_rest(o, "clock [--out DIR] [--size WxH]"); !s) return demo::fail(o, s.message());
-    if (tiny3d::status s = demo::prepare_out_dir(o); !s) return demo::fail(o, s.message());
+    demo::command_line cli("clock", "",
+                           "The libtiny3d report's clock face: lines every 15 degrees from the centre, radius 200 px,\n"
+                           "thickness 1.5, drawn with the report's draw_line_f (clock_lines.pgm) and with the exact\n"
+                           "coverage line (clock_lines_fast.pgm).");
+    cli.add_out();
+    cli.add_size(kSize, kSize);
+    cli.add_png();
+    if (const int status = cli.parse(argc, argv); status >= 0) return status;
+    const demo::common_options &o = cli.common;
 
     auto faithful = tiny3d::make_canvas(o.width, o.height);
     auto fast = tiny3d::make_canvas(o.width, o.height);
-    if (!faithful) return demo::fail(o, faithful.message());
-    if (!fast) return demo::fail(o, fast.message());
+    if (!faithful) return cli.fail(faithful.message());
+    if (!fast) return cli.fail(fast.message());
+    if (tiny3d::status s = demo::prepare_out_dir(o); !s) return cli.fail(s.message());
 
-    demo::frame_timer timer("clock", 2);
+    demo::progress timer("clock", 2);
     timer.start();
     draw_clock(**faithful, [](canvas_t *c, float x0, float y0, float x1, float y1) {
         draw_line_f(c, x0, y0, x1, y1, kThickness);
@@ -51,9 +56,9 @@ int main(int argc, char **argv) {
         tiny3d::draw_line_coverage(c, x0, y0, x1, y1, kThickness);
     });
     timer.stop();
-    timer.report();
 
-    if (tiny3d::status s = demo::save_frame(**faithful, o.out_dir + "/clock_lines.pgm"); !s) return demo::fail(o, s.message());
-    if (tiny3d::status s = demo::save_frame(**fast, o.out_dir + "/clock_lines_fast.pgm"); !s) return demo::fail(o, s.message());
+    if (tiny3d::status s = timer.save(**faithful, o.out_dir + "/clock_lines.pgm", o.png); !s) return cli.fail(s.message());
+    if (tiny3d::status s = timer.save(**fast, o.out_dir + "/clock_lines_fast.pgm", o.png); !s) return cli.fail(s.message());
+    timer.finish();
     return 0;
 }

@@ -6,7 +6,7 @@
 // at thickness 1.2. Frame k depends only on k (the angle is taken modulo one turn), so
 // frame 0 and the frame one turn later are the same image (tests/math3d_test.cpp).
 //
-//   cube [--out DIR] [--frames A:B] [--size WxH]   → DIR/frame_000.pgm … frame_059.pgm
+//   cube [--out DIR] [--frames A:B] [--size WxH] [--png]   → DIR/frame_000.pgm … frame_059.pgm
 #include <cmath>
 #include <string>
 
@@ -51,25 +51,25 @@ void render_cube(canvas_t &canvas, float angle) {
 }  // namespace
 
 int main(int argc, char **argv) {
-    auto parsed = demo::parse(argc, argv, "cube", kSize, kSize, kFramesPerTurn);
-    if (!parsed) return demo::fail("cube", parsed.message());
-    demo::options &o = *parsed;
-    if (tiny3d::status s = demo::check_no_rest(o, "cube [--out DIR] [--frames A:B] [--size WxH]"); !s)
-        return demo::fail(o, s.message());
-    if (tiny3d::status s = demo::prepare_out_dir(o); !s) return demo::fail(o, s.message());
+    demo::command_line cli("cube", "",
+                           "The libtiny3d report's Task 2: a wireframe cube turning about the y axis, 60 frames for\n"
+                           "one turn (frame_000.pgm ... frame_059.pgm), drawn with the report's draw_line_f.");
+    cli.add_sequence_options(kFramesPerTurn, kSize, kSize);
+    if (const int status = cli.parse(argc, argv); status >= 0) return status;
+    const demo::common_options &o = cli.common;
 
     auto canvas = tiny3d::make_canvas(o.width, o.height);  // one canvas, cleared per frame
-    if (!canvas) return demo::fail(o, canvas.message());
+    if (!canvas) return cli.fail(canvas.message());
+    if (tiny3d::status s = demo::prepare_out_dir(o); !s) return cli.fail(s.message());
 
-    demo::frame_timer timer("cube", o.last_frame - o.first_frame + 1);
+    demo::progress timer("cube", o.frames_to_render());
     for (int frame = o.first_frame; frame <= o.last_frame; ++frame) {
         timer.start();
         canvas_clear(canvas->get(), 0.0f);
         render_cube(**canvas, frame_angle(frame));
         timer.stop();
-        if (tiny3d::status s = demo::save_frame(**canvas, demo::frame_path(o, frame)); !s)
-            return demo::fail(o, s.message());
+        if (tiny3d::status s = timer.save(**canvas, demo::frame_path(o, frame), o.png); !s) return cli.fail(s.message());
     }
-    timer.report();
+    timer.finish();
     return 0;
 }

@@ -7,9 +7,8 @@
 // pixel by pixel. --faithful-lambert lights the wireframes with the report's per-edge
 // Lambert (about half of the edges go black) instead of the face-normal model.
 //
-//   lighting [--out DIR] [--frames A:B] [--size WxH] [--fps F] [--faithful-lambert]
+//   lighting [--out DIR] [--frames A:B] [--size WxH] [--fps F] [--faithful-lambert] [--png]
 #include <cstdio>
-#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -54,20 +53,17 @@ std::vector<actor> cast() {
 }  // namespace
 
 int main(int argc, char **argv) {
-    const std::string usage = "lighting [--out DIR] [--frames A:B] [--size WxH] [--fps F] [--faithful-lambert]";
-    auto parsed = demo::parse(argc, argv, "lighting", DEFAULT_SIZE, DEFAULT_SIZE, FRAME_COUNT);
-    if (!parsed) return demo::fail("lighting", parsed.message());
-    demo::options &o = *parsed;
-    const bool faithful = demo::take_flag(o, "--faithful-lambert");
+    demo::command_line cli("lighting", "",
+                           "The lit, animated scene (the report's Task 4): the soccer ball and a torus (wireframes)\n"
+                           "and a Phong-shaded icosphere on closed Bezier loops, two lights plus ambient, 120 frames\n"
+                           "for one period; at the end the demo checks that the loop closes.");
+    bool faithful = false;
     double fps = DEFAULT_FPS;
-    if (auto v = demo::take_value(o, "--fps")) {
-        char *end = nullptr;
-        fps = std::strtod(v->c_str(), &end);
-        if (end == v->c_str() || *end != '\0' || !(fps > 0.0 && fps <= 1000.0))
-            return demo::fail(o, "--fps wants a number in (0, 1000], got '" + *v + "'");
-    }
-    if (tiny3d::status s = demo::check_no_rest(o, usage); !s) return demo::fail(o, s.message());
-    if (tiny3d::status s = demo::prepare_out_dir(o); !s) return demo::fail(o, s.message());
+    cli.add_sequence_options(FRAME_COUNT, DEFAULT_SIZE, DEFAULT_SIZE);
+    cli.number("--fps", fps, 0.001, 1000.0, "frames per second (default 30)");
+    cli.flag("--faithful-lambert", faithful, "light the wireframes with the report's per-edge Lambert");
+    if (const int status = cli.parse(argc, argv); status >= 0) return status;
+    const demo::common_options &o = cli.common;
 
     // One period = the whole sequence: every motion repeats after FRAME_COUNT frames.
     const double period = tiny3d::anim_clock::at_frame(FRAME_COUNT, fps).seconds;
@@ -82,41 +78,42 @@ int main(int argc, char **argv) {
     std::vector<tiny3d::motion> motions;
     for (const actor &a : cast()) {
         auto path = tiny3d::looped_path::through_points(a.loop);
-        if (!path) return demo::fail(o, path.message());
+        if (!path) return cli.fail(path.message());
         auto spin = tiny3d::orientation_loop::spin(a.spin_axis, a.spin_turns);
-        if (!spin) return demo::fail(o, spin.message());
+        if (!spin) return cli.fail(spin.message());
         motions.push_back({std::move(path.value()), period, a.path_offset, std::move(spin.value()), period, a.scale});
-        if (auto id = scene.add_object(a.shape, a.style); !id) return demo::fail(o, id.message());
+        if (auto id = scene.add_object(a.shape, a.style); !id) return cli.fail(id.message());
     }
 
     auto canvas = tiny3d::make_canvas(o.width, o.height);
-    if (!canvas) return demo::fail(o, canvas.message());
+    if (!canvas) return cli.fail(canvas.message());
+    if (tiny3d::status s = demo::prepare_out_dir(o); !s) return cli.fail(s.message());
     auto render_at = [&](double seconds, canvas_t &target) {
         for (std::size_t i = 0; i < motions.size(); ++i) scene.set_model(i, tiny3d::motion_model_at(motions[i], seconds));
         return scene.render(target);
     };
 
-    demo::frame_timer timer("lighting", o.last_frame - o.first_frame + 1);
+    demo::progress timer("lighting", o.frames_to_render());
     for (int frame = o.first_frame; frame <= o.last_frame; ++frame) {
         timer.start();
         const tiny3d::status s = render_at(tiny3d::anim_clock::at_frame(frame, fps).seconds, **canvas);
         timer.stop();
-        if (!s) return demo::fail(o, s.message());
-        if (tiny3d::status w = demo::save_frame(**canvas, demo::frame_path(o, frame)); !w) return demo::fail(o, w.message());
+        if (!s) return cli.fail(s.message());
+        if (tiny3d::status w = timer.save(**canvas, demo::frame_path(o, frame), o.png); !w) return cli.fail(w.message());
     }
-    timer.report();
+    timer.finish();
 
     // The loop closes: frame 0 and the instant one period later are the same image.
     auto again = tiny3d::make_canvas(o.width, o.height);
-    if (!again) return demo::fail(o, again.message());
-    if (auto s = render_at(tiny3d::anim_clock::at_frame(0, fps).seconds, **canvas); !s) return demo::fail(o, s.message());
+    if (!again) return cli.fail(again.message());
+    if (auto s = render_at(tiny3d::anim_clock::at_frame(0, fps).seconds, **canvas); !s) return cli.fail(s.message());
     if (auto s = render_at(tiny3d::anim_clock::at_frame(FRAME_COUNT, fps).seconds, **again); !s)
-        return demo::fail(o, s.message());
+        return cli.fail(s.message());
     const std::size_t pixels = static_cast<std::size_t>(o.width) * static_cast<std::size_t>(o.height);
     std::size_t differing = 0;
     for (std::size_t i = 0; i < pixels; ++i) differing += (*canvas)->data[i] != (*again)->data[i];
     if (differing != 0)
-        return demo::fail(o, "loop does not close: " + std::to_string(differing) + " pixels differ between frame 0 and frame " +
+        return cli.fail("loop does not close: " + std::to_string(differing) + " pixels differ between frame 0 and frame " +
                                  std::to_string(FRAME_COUNT));
     std::fprintf(stderr, "lighting: loop closes: frame %d (t = %.3f s) is pixel-identical to frame 0\n", FRAME_COUNT, period);
     return 0;

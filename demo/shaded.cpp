@@ -2,7 +2,7 @@
 // flat, Gouraud and Phong shading (left to right), two textured cubes (bottom row) mapped
 // affine (left) and perspective-correct (right), and a translucent sphere drifting in front
 // of them. 36 frames, 10° per frame, into build/frames/shaded/.
-//   shaded [--out DIR] [--frames A:B] [--size WxH] [--threads N]
+//   shaded [--out DIR] [--frames A:B] [--size WxH] [--threads N] [--png]
 #include <cmath>
 #include <string>
 #include <vector>
@@ -36,15 +36,14 @@ float radians(float degrees) { return degrees * static_cast<float>(M_PI) / 180.0
 }  // namespace
 
 int main(int argc, char **argv) {
-    auto parsed = demo::parse(argc, argv, "shaded", 960, 720, FRAMES);
-    if (!parsed) return demo::fail("shaded", parsed.message());
-    demo::options &o = *parsed;
-    int threads = 2;
-    if (auto t = demo::take_value(o, "--threads")) threads = std::atoi(t->c_str());
-    if (tiny3d::status s = demo::check_no_rest(o, "shaded [--out DIR] [--frames A:B] [--size WxH] [--threads N]"); !s)
-        return demo::fail(o, s.message());
-    if (threads < 1) return demo::fail(o, "--threads must be a positive integer");
-    if (tiny3d::status s = demo::prepare_out_dir(o); !s) return demo::fail(o, s.message());
+    demo::command_line cli("shaded", "",
+                           "Filled rendering: a torus (top row) and a soccer ball (middle row) in flat, Gouraud and\n"
+                           "Phong shading (left to right), two textured cubes mapped affine and perspective-correct\n"
+                           "(bottom row) and a translucent sphere in front: 36 frames, 10 degrees per frame.");
+    cli.add_sequence_options(FRAMES, 960, 720);
+    cli.add_threads(2);
+    if (const int status = cli.parse(argc, argv); status >= 0) return status;
+    const demo::common_options &o = cli.common;
 
     auto torus = smooth(tiny3d::make_torus(0.8f, 0.32f, 48, 24));
     auto ball = smooth(tiny3d::make_soccer_ball(0.95f));
@@ -52,23 +51,24 @@ int main(int argc, char **argv) {
     auto cube = tiny3d::make_raster_mesh(tiny3d::make_cube(0.85f), {});
     auto sphere = smooth(tiny3d::make_icosphere(3));
     for (const auto *m : {&torus, &ball, &ball_faceted, &cube, &sphere})
-        if (!*m) return demo::fail(o, m->message());
+        if (!*m) return cli.fail(m->message());
     const tiny3d::texture tex = checker();
     auto canvas = tiny3d::make_canvas(o.width, o.height);
-    if (!canvas) return demo::fail(o, canvas.message());
+    if (!canvas) return cli.fail(canvas.message());
+    if (tiny3d::status s = demo::prepare_out_dir(o); !s) return cli.fail(s.message());
 
     const light_t lights[2] = {{{1, 1, 1}, 0.85f}, {{-1, 0.2f, 0.4f}, 0.25f}};
     auto rig = tiny3d::make_light_rig(lights, 0.1f);
-    if (!rig) return demo::fail(o, rig.message());
+    if (!rig) return cli.fail(rig.message());
     const float aspect = static_cast<float>(o.width) / static_cast<float>(o.height);
     const mat4_t view_projection = mat4_multiply(tiny3d::mat4_perspective(radians(45), aspect, 0.1f, 100.0f),
                                                  tiny3d::mat4_look_at({0, 0, 9.5f}, {0, 0, 0}, {0, 1, 0}));
-    tiny3d::render_context ctx(threads);
-    demo::frame_timer timer("shaded", o.last_frame - o.first_frame + 1);
+    tiny3d::render_context ctx(o.threads);
+    demo::progress timer("shaded", o.frames_to_render());
     for (int frame = o.first_frame; frame <= o.last_frame; ++frame) {
         const float angle = radians(DEGREES_PER_FRAME * static_cast<float>(frame));
         timer.start();
-        if (tiny3d::status s = ctx.begin_frame(**canvas, 0.02f); !s) return demo::fail(o, s.message());
+        if (tiny3d::status s = ctx.begin_frame(**canvas, 0.02f); !s) return cli.fail(s.message());
         tiny3d::draw_params p;
         p.view_projection = view_projection;
         p.lights = *rig;
@@ -96,8 +96,8 @@ int main(int argc, char **argv) {
         ctx.draw(*sphere, p);
         ctx.end_frame();
         timer.stop();
-        if (tiny3d::status s = demo::save_frame(**canvas, demo::frame_path(o, frame)); !s) return demo::fail(o, s.message());
+        if (tiny3d::status s = timer.save(**canvas, demo::frame_path(o, frame), o.png); !s) return cli.fail(s.message());
     }
-    timer.report();
+    timer.finish();
     return 0;
 }

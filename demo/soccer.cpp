@@ -5,7 +5,7 @@
 // report's circular viewport), drawn far to near with anti-aliased coverage lines and
 // depth cueing (far edges dimmer); the circle's rim is drawn as a thin ring.
 //
-//   soccer [--out DIR] [--frames A:B] [--size WxH]   → DIR/frame_000.pgm … frame_059.pgm
+//   soccer [--out DIR] [--frames A:B] [--size WxH] [--png]   → DIR/frame_000.pgm … frame_059.pgm
 #include <cmath>
 #include <string>
 
@@ -44,14 +44,15 @@ void draw_rim(canvas_t &canvas) {
 }  // namespace
 
 int main(int argc, char **argv) {
-    auto parsed = demo::parse(argc, argv, "soccer", kSize, kSize, kFramesPerTurn);
-    if (!parsed) return demo::fail("soccer", parsed.message());
-    demo::options &o = *parsed;
-    if (tiny3d::status s = demo::check_no_rest(o, "soccer [--out DIR] [--frames A:B] [--size WxH]"); !s)
-        return demo::fail(o, s.message());
-    if (tiny3d::status s = demo::prepare_out_dir(o); !s) return demo::fail(o, s.message());
+    demo::command_line cli("soccer", "",
+                           "The libtiny3d report's Task 3: the soccer ball (truncated icosahedron, 90 edges) turning\n"
+                           "inside a circular viewport, anti-aliased edges with depth cueing, 60 frames for one turn.");
+    cli.add_sequence_options(kFramesPerTurn, kSize, kSize);
+    if (const int status = cli.parse(argc, argv); status >= 0) return status;
+    const demo::common_options &o = cli.common;
     auto canvas = tiny3d::make_canvas(o.width, o.height);
-    if (!canvas) return demo::fail(o, canvas.message());
+    if (!canvas) return cli.fail(canvas.message());
+    if (tiny3d::status s = demo::prepare_out_dir(o); !s) return cli.fail(s.message());
 
     const tiny3d::mesh ball = tiny3d::make_soccer_ball(1.0f);
     const tiny3d::bounding_sphere bounds = tiny3d::mesh_bounding_sphere(ball);
@@ -69,18 +70,18 @@ int main(int argc, char **argv) {
     options.bounds = &bounds;
     tiny3d::wireframe_workspace workspace;
 
-    demo::frame_timer timer("soccer", o.last_frame - o.first_frame + 1);
+    demo::progress timer("soccer", o.frames_to_render());
     for (int frame = o.first_frame; frame <= o.last_frame; ++frame) {
         timer.start();
         canvas_clear(canvas->get(), 0.0f);
         const mat4_t model = mat4_multiply(mat4_translate(0, 0, -distance),
                                            mat4_multiply(mat4_rotate_xyz(kTilt, 0, 0), tiny3d::mat4_rotate_y(frame_angle(frame))));
         if (tiny3d::status s = tiny3d::render_wireframe(**canvas, ball, mat4_multiply(proj, model), options, workspace); !s)
-            return demo::fail(o, s.message());
+            return cli.fail(s.message());
         draw_rim(**canvas);
         timer.stop();
-        if (tiny3d::status s = demo::save_frame(**canvas, demo::frame_path(o, frame)); !s) return demo::fail(o, s.message());
+        if (tiny3d::status s = timer.save(**canvas, demo::frame_path(o, frame), o.png); !s) return cli.fail(s.message());
     }
-    timer.report();
+    timer.finish();
     return 0;
 }

@@ -1,157 +1,397 @@
 // demo_cli.cpp — see demo_cli.h.
 #include "demo_cli.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <system_error>
 
+#include "chart.h"  // save_png
+
 namespace demo {
 namespace {
 
-bool parse_int(const std::string &s, int &out) {
-    if (s.empty()) return false;
-    char *end = nullptr;
-    errno = 0;
-    const long v = std::strtol(s.c_str(), &end, 10);
-    if (*end != '\0' || errno == ERANGE || v < -2147483647L || v > 2147483647L) return false;
-    out = int(v);
-    return true;
+std::string in_quotes(const std::string &text) { return "'" + text + "'"; }
+
+bool starts_with_space(const std::string &text) {
+    return !text.empty() && (text.front() == ' ' || text.front() == '\t' || text.front() == '\n');
 }
 
-tiny3d::error usage_error(const std::string &what) { return tiny3d::error{"", 0, -1, what}; }
+std::string range_text(double min, double max) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "%g..%g", min, max);
+    return buf;
+}
+
+// "A:B" → two integers.
+bool split_pair(const std::string &text, char separator, std::string &first, std::string &second) {
+    const auto at = text.find(separator);
+    if (at == std::string::npos) return false;
+    first = text.substr(0, at);
+    second = text.substr(at + 1);
+    return true;
+}
 
 }  // namespace
 
-tiny3d::result<options> parse(int argc, char **argv, const std::string &name, int default_width,
-                              int default_height, int frame_count) {
-    options o;
-    o.name = name;
-    o.out_dir = "build/frames/" + name;
-    o.width = default_width;
-    o.height = default_height;
-    o.frame_count = frame_count;
-    o.first_frame = 0;
-    o.last_frame = frame_count - 1;
+std::string parse_int(const std::string &option, const std::string &text, long min, long max, long &out) {
+    const std::string wanted = option + " wants an integer in " + std::to_string(min) + ".." + std::to_string(max) +
+                               ", got " + in_quotes(text);
+    if (text.empty() || starts_with_space(text)) return wanted;
+    char *end = nullptr;
+    errno = 0;
+    const long v = std::strtol(text.c_str(), &end, 10);
+    if (*end != '\0' || errno == ERANGE || v < min || v > max) return wanted;
+    out = v;
+    return "";
+}
+
+std::string parse_number(const std::string &option, const std::string &text, double min, double max, double &out) {
+    const std::string wanted = option + " wants a number in " + range_text(min, max) + ", got " + in_quotes(text);
+    if (text.empty() || starts_with_space(text)) return wanted;
+    char *end = nullptr;
+    errno = 0;
+    const double v = std::strtod(text.c_str(), &end);
+    // strtod accepts "nan", "inf" and hexadecimal floats; the range check refuses the first
+    // two, ERANGE refuses overflow (1e999) and underflow to a denormal.
+    if (*end != '\0' || errno == ERANGE || !std::isfinite(v) || v < min || v > max) return wanted;
+    out = v;
+    return "";
+}
+
+std::string parse_vec3(const std::string &option, const std::string &text, vec3_t &out) {
+    const std::string wanted = option + " wants X,Y,Z (three numbers), got " + in_quotes(text);
+    std::string x, yz, y, z;
+    if (!split_pair(text, ',', x, yz) || !split_pair(yz, ',', y, z)) return wanted;
+    double v[3];
+    const std::string parts[3] = {x, y, z};
+    for (int k = 0; k < 3; ++k)
+        if (!parse_number(option, parts[k], -1e30, 1e30, v[k]).empty()) return wanted;
+    out = vec3_t{float(v[0]), float(v[1]), float(v[2])};
+    return "";
+}
+
+command_line::command_line(std::string name, std::string synopsis, std::string description)
+    : name_(std::move(name)), synopsis_(std::move(synopsis)), description_(std::move(description)) {
+    add({"--help", "", "print this help and exit", false, false, nullptr});
+}
+
+command_line::option *command_line::find(const std::string &name) {
+    for (option &o : options_)
+        if (o.name == name) return &o;
+    return nullptr;
+}
+
+void command_line::add(option o) { options_.push_back(std::move(o)); }
+
+void command_line::add_out() {
+    common.out_dir = "build/frames/" + name_;
+    add({"--out", "DIR", "folder for the images, created if missing (default " + common.out_dir + ")", true, false,
+         [this](const std::string &v) -> std::string {
+             if (v.empty()) return "--out wants a folder, got ''";
+             common.out_dir = v;
+             return "";
+         }});
+}
+
+void command_line::add_size(int default_width, int default_height) {
+    common.width = default_width;
+    common.height = default_height;
+    add({"--size", "WxH",
+         "image size in pixels (default " + std::to_string(default_width) + "x" + std::to_string(default_height) + ")",
+         true, false, [this](const std::string &v) -> std::string {
+             const std::string wanted = "--size wants WxH (e.g. 640x480), got " + in_quotes(v);
+             std::string w_text, h_text;
+             long w = 0, h = 0;
+             if (!split_pair(v, 'x', w_text, h_text) && !split_pair(v, 'X', w_text, h_text)) return wanted;
+             if (!parse_int("--size", w_text, 1, 1 << 20, w).empty() ||
+                 !parse_int("--size", h_text, 1, 1 << 20, h).empty())
+                 return wanted;
+             if (tiny3d::status s = tiny3d::check_canvas_size(int(w), int(h)); !s)
+                 return "--size " + v + ": " + s.message();
+             common.width = int(w);
+             common.height = int(h);
+             return "";
+         }});
+}
+
+void command_line::add_frames(int frame_count) {
+    add_frames(std::function<int()>([frame_count] { return frame_count; }));
+}
+
+void command_line::add_frames(std::function<int()> frame_count) {
+    frame_count_ = std::move(frame_count);
+    add({"--frames", "A:B", "render only frames A to B (inclusive, 0-based; frame k is the same image in any range)",
+         true, false, [this](const std::string &v) -> std::string {
+             frames_text_ = v;
+             std::string a, b;
+             long first = 0, last = 0;
+             if (!split_pair(v, ':', a, b) || !parse_int("--frames", a, 0, 1L << 30, first).empty() ||
+                 !parse_int("--frames", b, 0, 1L << 30, last).empty())
+                 return "--frames wants A:B (e.g. 0:29), got " + in_quotes(v);
+             common.first_frame = int(first);
+             common.last_frame = int(last);
+             return "";
+         }});
+}
+
+void command_line::add_threads(int default_threads) {
+    common.threads = default_threads;
+    integer("--threads", common.threads, 1, 16, "worker threads (default " + std::to_string(default_threads) + ")");
+}
+
+void command_line::add_png() {
+    flag("--png", common.png, "write a PNG beside every PGM (same name, .png); the PGM is always written");
+}
+
+void command_line::add_sequence_options(int frame_count, int default_width, int default_height) {
+    add_out();
+    add_frames(frame_count);
+    add_size(default_width, default_height);
+    add_png();
+}
+
+void command_line::flag(const std::string &name, bool &target, const std::string &help) {
+    add({name, "", help, false, false, [&target](const std::string &) -> std::string {
+             target = true;
+             return "";
+         }});
+}
+
+void command_line::integer(const std::string &name, int &target, int min, int max, const std::string &help) {
+    add({name, "N", help, true, false, [&target, name, min, max](const std::string &v) {
+             long out = 0;
+             std::string e = parse_int(name, v, min, max, out);
+             if (e.empty()) target = int(out);
+             return e;
+         }});
+}
+
+void command_line::number(const std::string &name, double &target, double min, double max, const std::string &help) {
+    add({name, "X", help, true, false, [&target, name, min, max](const std::string &v) {
+             return parse_number(name, v, min, max, target);
+         }});
+}
+
+void command_line::number(const std::string &name, float &target, float min, float max, const std::string &help) {
+    add({name, "X", help, true, false, [&target, name, min, max](const std::string &v) {
+             double out = 0;
+             std::string e = parse_number(name, v, min, max, out);
+             if (e.empty()) target = float(out);
+             return e;
+         }});
+}
+
+void command_line::choice(const std::string &name, std::string &target, std::vector<std::string> choices,
+                          const std::string &help) {
+    std::string metavar;
+    for (const std::string &c : choices) metavar += (metavar.empty() ? "" : "|") + c;
+    add({name, metavar, help, true, false, [&target, name, choices, metavar](const std::string &v) -> std::string {
+             if (std::find(choices.begin(), choices.end(), v) == choices.end())
+                 return name + " wants one of " + metavar + ", got " + in_quotes(v);
+             target = v;
+             return "";
+         }});
+}
+
+void command_line::text(const std::string &name, const std::string &metavar, std::string &target,
+                        const std::string &help) {
+    add({name, metavar, help, true, false, [&target, name](const std::string &v) -> std::string {
+             if (v.empty()) return name + " wants a value, got ''";
+             target = v;
+             return "";
+         }});
+}
+
+void command_line::vector3(const std::string &name, vec3_t &target, bool &given, const std::string &help) {
+    add({name, "X,Y,Z", help, true, false, [&target, &given, name](const std::string &v) {
+             std::string e = parse_vec3(name, v, target);
+             if (e.empty()) given = true;
+             return e;
+         }});
+}
+
+void command_line::vector3_list(const std::string &name, std::vector<vec3_t> &target, const std::string &help) {
+    add({name, "X,Y,Z", help, true, true, [&target, name](const std::string &v) {
+             vec3_t p{};
+             std::string e = parse_vec3(name, v, p);
+             if (e.empty()) target.push_back(p);
+             return e;
+         }});
+}
+
+void command_line::custom(const std::string &name, const std::string &metavar, const std::string &help,
+                          std::function<std::string(const std::string &)> set, bool repeatable) {
+    add({name, metavar, help, !metavar.empty(), repeatable, std::move(set)});
+}
+
+void command_line::positional(const std::string &metavar, std::string &target, bool required) {
+    positionals_.push_back({metavar, &target, required});
+}
+
+std::string command_line::help() const {
+    std::string usage = "usage: " + name_;
+    if (!synopsis_.empty()) usage += " " + synopsis_;
+    usage += " [options]\n\n" + description_ + "\n\noptions:\n";
+    constexpr std::size_t help_column = 24, line_width = 92;
+    for (const option &o : options_) {
+        std::string line = "  " + o.name + (o.metavar.empty() ? "" : " " + o.metavar);
+        if (line.size() + 2 > help_column) {
+            usage += line + "\n";
+            line.clear();
+        }
+        line.resize(help_column, ' ');
+        // Word-wrapped help, continuation lines under the first.
+        std::string words = o.help + (o.repeatable ? " (repeatable)" : ""), word;
+        std::size_t at = 0;
+        bool first = true;
+        while (at < words.size()) {
+            const std::size_t space = std::min(words.find(' ', at), words.size());
+            word = words.substr(at, space - at);
+            at = space + 1;
+            if (!first && line.size() + 1 + word.size() > line_width) {
+                usage += line + "\n";
+                line.assign(help_column, ' ');
+                first = true;
+            }
+            line += (first ? "" : " ") + word;
+            first = false;
+        }
+        usage += line + "\n";
+    }
+    usage += "\nExit status: 0 done, 1 failed while running, 2 bad command line (nothing written).\n";
+    return usage;
+}
+
+int command_line::usage_error(const std::string &message) const {
+    std::fprintf(stderr, "%s: %s\n(%s --help lists the options)\n", name_.c_str(), message.c_str(), name_.c_str());
+    return EXIT_USAGE;
+}
+
+int command_line::fail(const std::string &message) const {
+    std::fprintf(stderr, "%s: %s\n", name_.c_str(), message.c_str());
+    return EXIT_FAILURE_RUN;
+}
+
+int command_line::parse(int argc, char **argv) {
+    for (int i = 1; i < argc; ++i)
+        if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
+            std::fputs(help().c_str(), stdout);
+            return 0;
+        }
+    std::vector<std::string> positional_values;
+    bool options_done = false;
     for (int i = 1; i < argc; ++i) {
-        std::string a = argv[i];
-        std::string key = a, value;
-        bool has_inline = false;
-        if (a.rfind("--", 0) == 0 && a.find('=') != std::string::npos) {
-            key = a.substr(0, a.find('='));
-            value = a.substr(a.find('=') + 1);
-            has_inline = true;
+        const std::string arg = argv[i];
+        if (options_done || arg.size() < 2 || arg[0] != '-' || (arg[1] != '-' && !std::isalpha((unsigned char)arg[1]))) {
+            positional_values.push_back(arg);  // "-5" and "-" are values, not options
+            continue;
         }
-        if (key == "--out" || key == "--frames" || key == "--size") {
-            if (!has_inline) {
-                if (i + 1 >= argc) return usage_error(key + " needs a value");
-                value = argv[++i];
-            }
-            if (key == "--out") {
-                if (value.empty()) return usage_error("--out needs a folder");
-                o.out_dir = value;
-            } else if (key == "--size") {
-                const auto x = value.find_first_of("xX");
-                int w = 0, h = 0;
-                if (x == std::string::npos || !parse_int(value.substr(0, x), w) ||
-                    !parse_int(value.substr(x + 1), h))
-                    return usage_error("--size wants WxH (e.g. 640x480), got '" + value + "'");
-                if (tiny3d::status s = tiny3d::check_canvas_size(w, h); !s) return usage_error("--size: " + s.message());
-                o.width = w;
-                o.height = h;
-            } else {
-                const auto colon = value.find(':');
-                int a0 = 0, b0 = 0;
-                if (colon == std::string::npos || !parse_int(value.substr(0, colon), a0) ||
-                    !parse_int(value.substr(colon + 1), b0))
-                    return usage_error("--frames wants A:B (e.g. 0:29), got '" + value + "'");
-                if (a0 < 0 || b0 < a0 || b0 >= frame_count)
-                    return usage_error("--frames " + value + ": the range must lie within 0:" +
-                                       std::to_string(frame_count - 1) + " with A <= B");
-                o.first_frame = a0;
-                o.last_frame = b0;
-            }
-        } else {
-            o.rest.push_back(a);
+        if (arg == "--") {
+            options_done = true;
+            continue;
+        }
+        const auto eq = arg.find('=');
+        const std::string key = arg.substr(0, eq);
+        option *o = find(key);
+        if (!o) return usage_error("unknown option " + in_quotes(key));
+        std::string value;
+        if (eq != std::string::npos) {
+            if (!o->takes_value) return usage_error(key + " takes no value, got " + in_quotes(arg));
+            value = arg.substr(eq + 1);
+        } else if (o->takes_value) {
+            if (i + 1 >= argc) return usage_error(key + " needs a value (" + o->metavar + ")");
+            value = argv[++i];
+        }
+        if (std::string e = o->set(value); !e.empty()) return usage_error(e);
+    }
+    std::size_t required = 0;
+    for (const positional_arg &p : positionals_) required += p.required;
+    if (positional_values.size() < required)
+        return usage_error("missing " + positionals_[positional_values.size()].metavar);
+    if (positional_values.size() > positionals_.size())
+        return usage_error("unexpected argument " + in_quotes(positional_values[positionals_.size()]));
+    for (std::size_t k = 0; k < positional_values.size(); ++k) *positionals_[k].target = positional_values[k];
+
+    if (frame_count_) {
+        common.frame_count = frame_count_();
+        if (frames_text_.empty()) {
+            common.first_frame = 0;
+            common.last_frame = common.frame_count - 1;
+        } else if (common.first_frame > common.last_frame || common.last_frame >= common.frame_count) {
+            return usage_error("--frames " + frames_text_ + ": the range must lie within 0:" +
+                               std::to_string(common.frame_count - 1) + " with A <= B");
         }
     }
-    return o;
+    return -1;
 }
 
-bool take_flag(options &o, const std::string &flag) {
-    auto it = std::find(o.rest.begin(), o.rest.end(), flag);
-    if (it == o.rest.end()) return false;
-    o.rest.erase(it);
-    return true;
-}
-
-std::optional<std::string> take_value(options &o, const std::string &key) {
-    for (std::size_t i = 0; i < o.rest.size(); ++i) {
-        const std::string &a = o.rest[i];
-        if (a.rfind(key + "=", 0) == 0) {
-            std::string v = a.substr(key.size() + 1);
-            o.rest.erase(o.rest.begin() + long(i));
-            return v;
-        }
-        if (a == key && i + 1 < o.rest.size()) {
-            std::string v = o.rest[i + 1];
-            o.rest.erase(o.rest.begin() + long(i), o.rest.begin() + long(i) + 2);
-            return v;
-        }
-    }
-    return std::nullopt;
-}
-
-tiny3d::status check_no_rest(const options &o, const std::string &usage) {
-    if (o.rest.empty()) return {};
-    return usage_error("unexpected argument '" + o.rest.front() + "'\nusage: " + usage);
-}
-
-std::string frame_path(const options &o, int frame, const std::string &prefix) {
-    char num[32];
-    std::snprintf(num, sizeof num, "%03d", frame);
-    return o.out_dir + "/" + prefix + num + ".pgm";
-}
-
-tiny3d::status prepare_out_dir(const options &o) {
+tiny3d::status prepare_out_dir(const common_options &o) {
     std::error_code ec;
     std::filesystem::create_directories(o.out_dir, ec);
     if (ec) return tiny3d::error{o.out_dir, 0, -1, "cannot create the output folder: " + ec.message()};
     return {};
 }
 
-tiny3d::status save_frame(const canvas_t &canvas, const std::string &path) {
-    tiny3d::status s = tiny3d::save_pgm(canvas, path);
-    if (s) std::printf("wrote %s\n", path.c_str());
-    return s;
+std::string frame_path(const common_options &o, int frame, const std::string &prefix) {
+    char num[32];
+    std::snprintf(num, sizeof num, "%03d", frame);
+    return o.out_dir + "/" + prefix + num + ".pgm";
 }
 
-void frame_timer::start() { t0_ = std::chrono::steady_clock::now(); }
+progress::progress(std::string name, int total)
+    : name_(std::move(name)), total_(total), terminal_(::isatty(STDOUT_FILENO) == 1),
+      began_(std::chrono::steady_clock::now()) {}
 
-void frame_timer::stop() {
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0_).count();
-    ms_.push_back(ms);
-    std::fprintf(stderr, "\r%s: frame %zu/%d  %.2f ms", name_.c_str(), ms_.size(), total_, ms);
-    if (int(ms_.size()) == total_) std::fprintf(stderr, "\n");
+void progress::start() { t0_ = std::chrono::steady_clock::now(); }
+
+void progress::stop() {
+    ms_.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0_).count());
 }
 
-void frame_timer::report() const {
+void progress::report_written(const std::string &path) {
+    if (!terminal_) {
+        std::printf("wrote %s\n", path.c_str());
+        return;
+    }
+    // \033[K clears the rest of the line left by a longer previous one.
+    std::printf("\r%s: frame %zu/%d  %.2f ms  wrote %s\033[K", name_.c_str(), ms_.size(), total_,
+                ms_.empty() ? 0.0 : ms_.back(), path.c_str());
+    std::fflush(stdout);
+    line_open_ = true;
+}
+
+tiny3d::status progress::save(const canvas_t &canvas, const std::string &pgm_path, bool png) {
+    if (tiny3d::status s = tiny3d::save_pgm(canvas, pgm_path); !s) return s;
+    report_written(pgm_path);
+    if (!png) return {};
+    std::string png_path = pgm_path;
+    if (png_path.size() > 4 && png_path.compare(png_path.size() - 4, 4, ".pgm") == 0) png_path.resize(png_path.size() - 4);
+    png_path += ".png";
+    if (tiny3d::status s = tiny3d::save_png(canvas, png_path); !s) return s;
+    report_written(png_path);
+    return {};
+}
+
+void progress::finish() {
+    if (line_open_) std::printf("\n");
+    std::fflush(stdout);
+    line_open_ = false;
     if (ms_.empty()) return;
     std::vector<double> s = ms_;
     std::sort(s.begin(), s.end());
     const double median = s.size() % 2 ? s[s.size() / 2] : 0.5 * (s[s.size() / 2 - 1] + s[s.size() / 2]);
-    std::fprintf(stderr, "%s: %zu frames, ms per frame min %.2f / median %.2f / max %.2f (%.1f / %.1f / %.1f fps)\n",
-                 name_.c_str(), s.size(), s.front(), median, s.back(), 1000.0 / s.front(), 1000.0 / median,
+    const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - began_).count();
+    std::fprintf(stderr,
+                 "%s: %zu frame%s in %.2f s (with saving); render ms per frame min %.2f / median %.2f / max %.2f "
+                 "(%.1f / %.1f / %.1f fps)\n",
+                 name_.c_str(), s.size(), s.size() == 1 ? "" : "s", total, s.front(), median, s.back(), 1000.0 / s.front(), 1000.0 / median,
                  1000.0 / s.back());
 }
-
-int fail(const std::string &demo_name, const std::string &message) {
-    std::fprintf(stderr, "%s: %s\n", demo_name.c_str(), message.c_str());
-    return 1;
-}
-
-int fail(const options &o, const std::string &message) { return fail(o.name, message); }
 
 }  // namespace demo
