@@ -11,7 +11,7 @@
 #include <filesystem>
 #include <system_error>
 
-#include "chart.h"  // save_png
+#include "canvas.h"  // save_pgm, save_png
 
 namespace demo {
 namespace {
