@@ -173,23 +173,58 @@ int clip_polygon(const clip_vertex *in, int n, unsigned planes, float guard, int
 
 // ---- textures -------------------------------------------------------------------------
 
-enum class texture_filter { nearest, bilinear };
+// nearest / bilinear: one lookup in the base level (bilinear is the faithful variant).
+// trilinear: bilinear in the two mipmap levels around the level of detail, blended
+// linearly (needs build_mipmaps; without levels it is bilinear in the base level). The
+// render context computes the level of detail per pixel from the screen-space
+// derivatives of (u, v) (texture_lod); texture_sample, which has no derivatives, treats
+// trilinear as bilinear.
+enum class texture_filter { nearest, bilinear, trilinear };
 enum class texture_wrap { repeat, clamp };
 
-// A grey texture: width × height texels in 0..1, row-major, row 0 = v near 0.
-// Texel (i, j) has its centre at u = (i + 0.5)/width, v = (j + 0.5)/height.
-struct texture {
+// One mipmap level: width × height texels, the same layout as the base level.
+struct texture_level {
     int width = 0, height = 0;
     std::vector<float> texels;
 };
 
-// A texture from a canvas (copied). Error if the canvas is empty.
+// A grey texture: width × height texels in 0..1, row-major, row 0 = v near 0.
+// Texel (i, j) has its centre at u = (i + 0.5)/width, v = (j + 0.5)/height (in every level
+// with that level's size). `mipmaps` holds levels 1, 2, … (level 0 is `texels`) once
+// build_mipmaps has run; change the texels and it must run again (stale levels are used as
+// they are).
+struct texture {
+    int width = 0, height = 0;
+    std::vector<float> texels;
+    std::vector<texture_level> mipmaps;
+};
+
+// A texture from a canvas (copied), with its mipmaps. Error if the canvas is empty.
 result<texture> texture_from_canvas(const canvas_t &canvas);
-// Loads a PGM (P2/P5) as a texture; errors name the file and problem.
+// Loads a PGM (P2/P5) as a texture, with its mipmaps; errors name the file and problem.
 result<texture> load_texture_pgm(const std::string &path);
 
-// Samples at (u, v) (1 = the full texture). repeat wraps u, v modulo 1; clamp holds the
-// edge texels. Non-finite u or v returns 0.
+// Builds (replaces) tex.mipmaps: level k + 1 has max(1, ⌊w_k / 2⌋) × max(1, ⌊h_k / 2⌋)
+// texels down to 1 × 1, each the exact box average of the level-k area it covers (the
+// texel footprint [i·r, (i + 1)·r) with r = w_k / w_{k+1}, overlapping texels weighted by
+// the overlap, per axis: a plain 2 × 2 mean for even sizes). Done once per texture,
+// O(texels), allocates. Error (levels untouched) when the size is ≤ 0 or texels.size()
+// differs from width · height.
+status build_mipmaps(texture &tex);
+
+// Level of detail λ = log2 ρ, ρ = max(|(∂u/∂x·w, ∂v/∂x·h)|, |(∂u/∂y·w, ∂v/∂y·h)|): texels of
+// the base level per pixel step along the screen axis that stretches most (OpenGL's
+// formula). Derivatives in texture units (1 = the whole texture) per pixel. λ ≤ 0 means
+// magnification. −∞ for zero derivatives, NaN when a derivative is not finite.
+float texture_lod(const texture &tex, float du_dx, float dv_dx, float du_dy, float dv_dy);
+
+// Trilinear lookup at (u, v) and level of detail `lod`: λ clamped to [0, last level]
+// (NaN → 0), bilinear in levels ⌊λ⌋ and ⌊λ⌋ + 1 blended by the fraction. Non-finite u or v
+// returns 0, as texture_sample.
+float texture_sample_trilinear(const texture &tex, float u, float v, float lod, texture_wrap wrap);
+
+// Samples at (u, v) (1 = the full texture) in the base level. repeat wraps u, v modulo 1;
+// clamp holds the edge texels. Non-finite u or v returns 0.
 float texture_sample(const texture &tex, float u, float v, texture_filter filter, texture_wrap wrap);
 
 // ---- meshes prepared for rasterization and the render context --------------------------

@@ -1,5 +1,5 @@
-// texture.cpp — grey textures: from a canvas (PGM files: texture_pgm.cpp); nearest and bilinear sampling
-// with repeat or clamp addressing.
+// texture.cpp — grey textures: from a canvas (PGM files: texture_pgm.cpp); nearest, bilinear
+// and trilinear sampling with repeat or clamp addressing (mipmaps: texture_mipmap.cpp).
 #include <cmath>
 
 #include "raster.h"
@@ -13,6 +13,8 @@ result<texture> texture_from_canvas(const canvas_t &canvas) {
     t.width = canvas.width;
     t.height = canvas.height;
     t.texels.assign(canvas.data, canvas.data + static_cast<std::size_t>(canvas.width) * canvas.height);
+    const status built = build_mipmaps(t);
+    if (!built) return built.err();
     return t;
 }
 
@@ -32,27 +34,65 @@ float reduce(float t, texture_wrap wrap) {
     return t < -1.0f ? -1.0f : (t > 2.0f ? 2.0f : t);  // clamp: beyond ±1 texture all edge texels
 }
 
-}  // namespace
-
-float texture_sample(const texture &tex, float u, float v, texture_filter filter, texture_wrap wrap) {
-    if (tex.width <= 0 || tex.height <= 0 || tex.texels.size() < static_cast<std::size_t>(tex.width) * tex.height ||
-        !std::isfinite(u) || !std::isfinite(v))
-        return 0.0f;
-    const float x = reduce(u, wrap) * static_cast<float>(tex.width);
-    const float y = reduce(v, wrap) * static_cast<float>(tex.height);
+// One level's texels (the base level or a mipmap), sampled bilinearly between the four
+// texel centres around (u, v).
+float bilinear(const float *texels, int width, int height, float u, float v, texture_wrap wrap) {
+    const float x = reduce(u, wrap) * static_cast<float>(width);
+    const float y = reduce(v, wrap) * static_cast<float>(height);
     auto texel = [&](int i, int j) {
-        return tex.texels[static_cast<std::size_t>(address(j, tex.height, wrap)) * tex.width +
-                          address(i, tex.width, wrap)];
+        return texels[static_cast<std::size_t>(address(j, height, wrap)) * width + address(i, width, wrap)];
     };
-    if (filter == texture_filter::nearest) return texel(static_cast<int>(std::floor(x)), static_cast<int>(std::floor(y)));
-    // Bilinear between the four texel centres around (x, y) (centres at i + 0.5).
-    const float fx = x - 0.5f, fy = y - 0.5f;
+    const float fx = x - 0.5f, fy = y - 0.5f;  // centres at i + 0.5
     const float x0 = std::floor(fx), y0 = std::floor(fy);
     const float tx = fx - x0, ty = fy - y0;
     const int i0 = static_cast<int>(x0), j0 = static_cast<int>(y0);
     const float top = texel(i0, j0) + (texel(i0 + 1, j0) - texel(i0, j0)) * tx;
     const float bottom = texel(i0, j0 + 1) + (texel(i0 + 1, j0 + 1) - texel(i0, j0 + 1)) * tx;
     return top + (bottom - top) * ty;
+}
+
+bool usable(const texture &tex, float u, float v) {
+    return tex.width > 0 && tex.height > 0 && tex.texels.size() >= static_cast<std::size_t>(tex.width) * tex.height &&
+           std::isfinite(u) && std::isfinite(v);
+}
+
+}  // namespace
+
+float texture_sample(const texture &tex, float u, float v, texture_filter filter, texture_wrap wrap) {
+    if (!usable(tex, u, v)) return 0.0f;
+    if (filter == texture_filter::nearest) {
+        const float x = reduce(u, wrap) * static_cast<float>(tex.width);
+        const float y = reduce(v, wrap) * static_cast<float>(tex.height);
+        const int i = address(static_cast<int>(std::floor(x)), tex.width, wrap);
+        const int j = address(static_cast<int>(std::floor(y)), tex.height, wrap);
+        return tex.texels[static_cast<std::size_t>(j) * tex.width + i];
+    }
+    return bilinear(tex.texels.data(), tex.width, tex.height, u, v, wrap);
+}
+
+float texture_lod(const texture &tex, float du_dx, float dv_dx, float du_dy, float dv_dy) {
+    const float w = static_cast<float>(tex.width), h = static_cast<float>(tex.height);
+    const float ax = du_dx * w, bx = dv_dx * h, ay = du_dy * w, by = dv_dy * h;
+    const float rho2 = std::fmax(ax * ax + bx * bx, ay * ay + by * by);
+    if (!std::isfinite(ax + bx + ay + by)) return NAN;
+    return 0.5f * std::log2(rho2);  // log2 √ρ²
+}
+
+float texture_sample_trilinear(const texture &tex, float u, float v, float lod, texture_wrap wrap) {
+    if (!usable(tex, u, v)) return 0.0f;
+    const int last = static_cast<int>(tex.mipmaps.size());
+    if (!(lod > 0.0f)) lod = 0.0f;  // also NaN
+    if (lod >= static_cast<float>(last)) lod = static_cast<float>(last);
+    const int k = static_cast<int>(lod);
+    const float t = lod - static_cast<float>(k);
+    auto level = [&](int l) {
+        if (l == 0) return bilinear(tex.texels.data(), tex.width, tex.height, u, v, wrap);
+        const texture_level &m = tex.mipmaps[static_cast<std::size_t>(l - 1)];
+        return bilinear(m.texels.data(), m.width, m.height, u, v, wrap);
+    };
+    const float a = level(k);
+    if (t == 0.0f || k == last) return a;
+    return a + (level(k + 1) - a) * t;
 }
 
 }  // namespace tiny3d
