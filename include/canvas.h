@@ -6,6 +6,12 @@
 //    as in the libtiny3d report: pixels[y] points at row y inside that block.
 //  * Origin top-left, x right, y down. Pixel (x, y) covers [x, x+1) × [y, y+1);
 //    its centre is (x + 0.5, y + 0.5).
+//  * EXCEPT the libtiny3d report's own functions — set_pixel_f and draw_line_f here,
+//    project_vertex and the 7-argument render_wireframe in pipeline.h — which keep the
+//    report's convention so that its programs get its pixels: integer coordinates are
+//    pixel CENTRES (pixel (x, y) is centred on (x, y)), and project_vertex maps NDC ±1 to
+//    0 and width − 1 (height − 1). A point at library coordinates (x, y) is at report
+//    coordinates (x − 0.5, y − 0.5).
 //  * Writes clamp to 0..1.
 //  * PGM output: 8-bit, value = round(clamp(v, 0, 1) · 255), no gamma. Binary P5 by
 //    default, ASCII P2 on request. Saving is atomic: a temporary file in the same
@@ -44,20 +50,25 @@ canvas_t *create_canvas(int width, int height);
 void destroy_canvas(canvas_t *canvas);  // nullptr is ignored
 void remove_canvas(canvas_t *canvas);   // the report's name for destroy_canvas
 
-// The report's bilinear splat: intensity is shared over the 2×2 pixels whose centres
-// surround (x, y), weights (1−fx)(1−fy), fx(1−fy), (1−fx)fy, fx·fy where
-// fx = x − 0.5 − floor(x − 0.5) (so a splat exactly at a pixel centre lands on that one
-// pixel only). Additive, each pixel clamped to 1; parts off the canvas are dropped.
-// Non-finite coordinates or intensity draw nothing.
+// The report's bilinear splat (report convention, above): with x0 = floor(x),
+// dx = x − x0 (likewise y0, dy), pixel (x0 + i, y0 + j) for i, j ∈ {0, 1} gains
+// intensity · (1 − |i − dx|) · (1 − |j − dy|) — so set_pixel_f(c, 3, 3, v) adds v to
+// pixel (3, 3) only, and (3.5, 3) splits it evenly between pixels (3, 3) and (4, 3).
+// Additive, each pixel clamped to 0..1 (the report clamps at 1 only; the two differ
+// only for a negative intensity); parts off the canvas are dropped. Non-finite
+// coordinates or intensity draw nothing.
 void set_pixel_f(canvas_t *canvas, float x, float y, float intensity);
 
 // The report's anti-aliased line, kept as its faithful variant: DDA samples every 0.5 px
 // from (x0, y0) to (x1, y1) (both ends included); at each sample a disc of diameter
-// `thickness` made of set_pixel_f(…, 1) splats on a 0.5 px grid. Coordinates in pixels
-// (pixel centres at +0.5). Known flaws, kept on purpose and measured by the benchmark:
-// thickness < 2 − √2 ≈ 0.586 draws nothing (no disc sample passes kx² + ky² ≤ T²/4),
-// thickness 1 puts about twice the true ink down, and the
-// cost grows with thickness². The line is clipped to the canvas first (margins of
+// `thickness` made of set_pixel_f(…, 1) splats on a 0.5 px grid. Coordinates in the
+// report's convention (above: integer coordinates are pixel centres); the report's
+// pixels bit for bit while the line stays on the canvas, to float rounding when it is
+// clipped. Known flaws, kept on purpose and measured by the benchmark: thickness
+// < 2 − √2 ≈ 0.586 draws nothing (no disc sample passes kx² + ky² ≤ T²/4); from there up
+// to T = 1 each sample is a single splat, offset (½ − T/2)·(1, 1) from the line, about
+// 2–2.5 times the true ink at 0.59–0.70; thickness 1 puts about twice the true ink down;
+// the cost grows with thickness². The line is clipped to the canvas first (margins of
 // thickness), so huge coordinates cost no more than a line across the canvas.
 void draw_line_f(canvas_t *canvas, float x0, float y0, float x1, float y1, float thickness);
 

@@ -15,9 +15,12 @@
 //    TOP edge (y = 0), −1 to the bottom edge (y = height):
 //        sx = (ndc_x + 1) / 2 · width,   sy = (1 − ndc_y) / 2 · height.
 //    The NDC origin therefore lands on (width/2, height/2), the boundary between the two
-//    middle pixels. The report mapped with (width − 1) and (height − 1) — NDC −1 to the
-//    centre of pixel 0 under our convention's reading, and a 1-px-smaller image; ours keeps
-//    a symmetric frustum centred and makes an image of size W·H cover exactly W×H pixels.
+//    middle pixels: a symmetric frustum stays centred and covers exactly W×H pixels.
+//  * The report's viewport (project_vertex, the 7-argument render_wireframe; canvas.h's
+//    report convention, integer coordinates are pixel centres), as the report's code:
+//        sx = (ndc_x·0.5 + 0.5)·(width − 1),   sy = (1 − (ndc_y·0.5 + 0.5))·(height − 1),
+//    NDC ±1 → the centres of the first and last pixels: the same picture as the library's
+//    viewport, shrunk by one pixel about the canvas centre.
 //  * Screen depth: NDC z remapped to [0, 1] (0 at the near plane, 1 at the far plane).
 #ifndef TINY3D_PIPELINE_H
 #define TINY3D_PIPELINE_H
@@ -35,8 +38,8 @@
 
 // ---- the libtiny3d report's API ------------------------------------------------------
 
-// Transforms v by proj·model and maps it to the screen (see the viewport convention
-// above). Returns 1 and writes *x_out, *y_out in pixels when the point is in front of the
+// Transforms v by model, then by proj (two products, as the report), divides by w and
+// maps to the screen by the REPORT's viewport (above). Returns 1 and writes *x_out, *y_out in pixels when the point is in front of the
 // camera (clip w > 0 and finite); returns 0 and leaves the outputs untouched when w ≤ 0
 // (at or behind the camera) or the result is not finite. Null output pointers are allowed
 // (nothing is written there). Points off the canvas (outside the frustum) still return 1.
@@ -50,7 +53,8 @@ bool clip_to_circular_viewport(canvas_t *c, float x, float y);
 
 // The report's wireframe: every edge (pairs of indices into vertices) transformed by
 // proj·model, clipped in clip space (cut at the near plane, never mirrored through w ≤ 0,
-// then at the frustum) and drawn with draw_line_f at thickness 1, intensity 1 (additive
+// then at the frustum), mapped by the report's viewport (above) and drawn with
+// draw_line_f at thickness 1, intensity 1 (additive
 // splats, so the drawing order does not change the image). Edges with an index outside
 // 0..vertex_count−1, null arrays, negative counts or a null canvas are skipped silently
 // (nothing is printed). Allocates nothing.
@@ -72,8 +76,16 @@ struct screen_point {
 inline float ndc_to_screen_x(float ndc_x, float width) { return (ndc_x + 1.0f) * 0.5f * width; }
 inline float ndc_to_screen_y(float ndc_y, float height) { return (1.0f - ndc_y) * 0.5f * height; }
 
+// The report's viewport (above), in its float operations.
+inline float report_ndc_to_screen_x(float ndc_x, int width) { return (ndc_x * 0.5f + 0.5f) * float(width - 1); }
+inline float report_ndc_to_screen_y(float ndc_y, int height) {
+    return (1.0f - (ndc_y * 0.5f + 0.5f)) * float(height - 1);
+}
+
 // Clip space → screen point (divides by w when w > 0).
 screen_point clip_to_screen(vec4_t clip, int width, int height);
+// The same by the report's viewport (x / w as the report divides, then report_ndc_to_screen).
+screen_point clip_to_report_screen(vec4_t clip, int width, int height);
 
 // v (model space) through model_view_proj to the screen.
 screen_point project_point(vec3_t v, const mat4_t &model_view_proj, int width, int height);
@@ -146,7 +158,9 @@ cull_result cull_sphere(const frustum &f, const bounding_sphere &s);
 // ---- wireframes (src/wireframe/wireframe.cpp) ------------------------------------------
 
 enum class line_method {
-    faithful,  // the report's draw_line_f (additive splats). It has no intensity: every
+    faithful,  // the report's draw_line_f (additive splats), handed this viewport's ends
+               // moved to the report's convention (x − 0.5, y − 0.5), so the line lies
+               // where the other methods draw it. It has no intensity: every
                // edge with ink > 0 is drawn at full ink (per-edge intensity and depth cueing
                // only decide which edges are skipped, ink ≤ 0)
     coverage,  // tiny3d::draw_line_coverage: exact area coverage, round caps, combined

@@ -33,9 +33,10 @@ TEST(create_canvas_rejects_bad_sizes) {
     CHECK(!tiny3d::make_canvas(-3, 3).ok());
 }
 
+// set_pixel_f keeps the report's convention: integer coordinates are pixel centres.
 TEST(splat_at_pixel_centre_hits_one_pixel) {
     canvas_t *c = create_canvas(4, 4);
-    set_pixel_f(c, 1.5f, 2.5f, 0.75f);
+    set_pixel_f(c, 1.0f, 2.0f, 0.75f);
     double sum = 0;
     for (int y = 0; y < 4; ++y)
         for (int x = 0; x < 4; ++x) sum += c->pixels[y][x];
@@ -46,8 +47,8 @@ TEST(splat_at_pixel_centre_hits_one_pixel) {
 
 TEST(splat_weights_are_bilinear_and_sum_to_intensity) {
     canvas_t *c = create_canvas(4, 4);
-    set_pixel_f(c, 1.75f, 1.25f, 0.5f);  // fx = 0.25 right of centre (1.5), fy = 0.25 above (1.5)
-    // sx = 1.25 -> x0 = 1, dx = .25 ; sy = 0.75 -> y0 = 0, dy = .75
+    set_pixel_f(c, 1.25f, 0.75f, 0.5f);  // 0.25 right of centre 1, 0.25 above centre 1
+    // x0 = 1, dx = .25 ; y0 = 0, dy = .75
     CHECK_NEAR(c->pixels[0][1], 0.5 * 0.75 * 0.25, 1e-7);
     CHECK_NEAR(c->pixels[0][2], 0.5 * 0.25 * 0.25, 1e-7);
     CHECK_NEAR(c->pixels[1][1], 0.5 * 0.75 * 0.75, 1e-7);
@@ -57,10 +58,10 @@ TEST(splat_weights_are_bilinear_and_sum_to_intensity) {
 
 TEST(splat_clamps_to_one) {
     canvas_t *c = create_canvas(2, 2);
-    for (int i = 0; i < 5; ++i) set_pixel_f(c, 0.5f, 0.5f, 0.4f);
+    for (int i = 0; i < 5; ++i) set_pixel_f(c, 0.0f, 0.0f, 0.4f);
     CHECK_EQ(c->pixels[0][0], 1.0f);
-    set_pixel_f(c, 1e30f, 0.5f, 1.0f);    // far off: ignored, no UB
-    set_pixel_f(c, 0.5f, NAN, 1.0f);      // NaN: ignored
+    set_pixel_f(c, 1e30f, 0.0f, 1.0f);    // far off: ignored, no UB
+    set_pixel_f(c, 0.0f, NAN, 1.0f);      // NaN: ignored
     CHECK_EQ(c->pixels[0][1], 0.0f);
     destroy_canvas(c);
 }

@@ -415,10 +415,11 @@ TEST(project_vertex_behind_on_camera_and_nan) {
     CHECK_EQ(project_vertex({1, 0, -5}, bad, proj, SIDE, SIDE, &x, &y), 0);
     CHECK_EQ(x, -7.0f);  // outputs untouched on failure
     CHECK_EQ(y, -7.0f);
-    // Exactly on the near plane, on the axis: the canvas centre.
+    // Exactly on the near plane, on the axis: the canvas centre (the report's viewport:
+    // pixel centres 0 … SIDE − 1, so the centre is (SIDE − 1)/2).
     CHECK_EQ(project_vertex({0, 0, -NEAR_PLANE}, id, proj, SIDE, SIDE, &x, &y), 1);
-    CHECK_NEAR(x, SIDE / 2.0, 1e-4);
-    CHECK_NEAR(y, SIDE / 2.0, 1e-4);
+    CHECK_NEAR(x, (SIDE - 1) / 2.0, 1e-4);
+    CHECK_NEAR(y, (SIDE - 1) / 2.0, 1e-4);
     CHECK_EQ(project_vertex({0, 0, -5}, id, proj, SIDE, SIDE, nullptr, nullptr), 1);
 }
 

@@ -293,6 +293,15 @@ TEST(faithful_line_known_failures) {
     CHECK_EQ(ink(*c), 0.0);
     draw_line_f(c.get(), 5.3f, 7.1f, 55.8f, 40.2f, 0.6f);
     CHECK(ink(*c) > 0.0);
+    // From 0.586 to 1 every sample is one whole splat, 2 per px of length: well over the
+    // true ink L·T + πT²/4 (about 2–2.5 times at 0.59–0.70, not nothing).
+    const segment thin{5.3f, 7.1f, 55.8f, 40.2f};
+    for (float t : {0.59f, 0.65f, 0.7f}) {
+        canvas_clear(c.get(), 0.0f);
+        draw_line_f(c.get(), thin.x0, thin.y0, thin.x1, thin.y1, t);
+        const double ratio = ink(*c) / true_ink(thin, t, tiny3d::line_cap::round);
+        CHECK_MSG(ratio > 1.8 && ratio < 3.0, "T = " + std::to_string(t) + ": ink / true ink " + std::to_string(ratio));
+    }
     canvas_clear(c.get(), 0.0f);
     // T = 1: about twice the true ink L·T + π/4 (each of the 0.5 px steps splats a whole
     // unit; only the clamp at 1 keeps it from being far more).

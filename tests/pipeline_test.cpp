@@ -28,6 +28,11 @@ ref_point ref_project(double x, double y, double z) {
     const double ndc_z = (-(f_plane + n_plane) / (f_plane - n_plane) * z - 2 * f_plane * n_plane / (f_plane - n_plane)) / -z;
     return {(ndc_x + 1) / 2 * W, (1 - ndc_y) / 2 * H, (ndc_z + 1) / 2};
 }
+// The report's viewport (project_vertex): NDC ±1 → 0 and W − 1 (pixel centres).
+ref_point ref_report_project(double x, double y, double z) {
+    const ref_point r = ref_project(x, y, z);
+    return {r.x / W * (W - 1), r.y / H * (H - 1), r.depth};
+}
 
 struct canvas_holder {
     canvas_ptr c;
@@ -60,20 +65,25 @@ wireframe_options plain_options() {
 TEST(project_known_points) {
     const mat4_t proj = test_proj(), id = mat4_identity();
     float x = -7, y = -7;
+    // project_vertex keeps the report's viewport: NDC ±1 → the centres of the first and
+    // last pixels (0 and W − 1), the axis → (W − 1)/2.
     CHECK_EQ(project_vertex({0, 0, -5}, id, proj, W, H, &x, &y), 1);
-    CHECK_NEAR(x, W / 2.0, 1e-4);
-    CHECK_NEAR(y, H / 2.0, 1e-4);
-    // Near-plane corners map to the canvas corners (pixel edges, not centres).
+    CHECK_NEAR(x, (W - 1) / 2.0, 1e-4);
+    CHECK_NEAR(y, (H - 1) / 2.0, 1e-4);
     CHECK_EQ(project_vertex({-1, 1, -1}, id, proj, W, H, &x, &y), 1);
     CHECK_NEAR(x, 0.0, 1e-4);
     CHECK_NEAR(y, 0.0, 1e-4);
     CHECK_EQ(project_vertex({1, -1, -1}, id, proj, W, H, &x, &y), 1);
-    CHECK_NEAR(x, double(W), 1e-4);
-    CHECK_NEAR(y, double(H), 1e-4);
+    CHECK_NEAR(x, double(W - 1), 1e-4);
+    CHECK_NEAR(y, double(H - 1), 1e-4);
     // Far-plane corner.
     CHECK_EQ(project_vertex({10, 10, -10}, id, proj, W, H, &x, &y), 1);
-    CHECK_NEAR(x, double(W), 1e-3);
+    CHECK_NEAR(x, double(W - 1), 1e-3);
     CHECK_NEAR(y, 0.0, 1e-3);
+    // The library's viewport: the same corners at the canvas edges.
+    CHECK_NEAR(project_point({-1, 1, -1}, proj, W, H).x, 0.0, 1e-4);
+    CHECK_NEAR(project_point({1, -1, -1}, proj, W, H).x, double(W), 1e-4);
+    CHECK_NEAR(project_point({1, -1, -1}, proj, W, H).y, double(H), 1e-4);
     // Behind the camera and at the eye: 0, outputs untouched.
     x = y = -7;
     CHECK_EQ(project_vertex({0, 0, 1}, id, proj, W, H, &x, &y), 0);
@@ -88,9 +98,10 @@ TEST(project_known_points) {
     for (int i = 0; i < 200; ++i) {
         const vec3_t p{u(rng), u(rng), depth(rng)};
         const ref_point r = ref_project(double(p.x) + 0.25, double(p.y) - 0.5, double(p.z) - 0.75);
+        const ref_point rr = ref_report_project(double(p.x) + 0.25, double(p.y) - 0.5, double(p.z) - 0.75);
         CHECK_EQ(project_vertex(p, model, proj, W, H, &x, &y), 1);
-        CHECK_NEAR(x, r.x, 1e-3);
-        CHECK_NEAR(y, r.y, 1e-3);
+        CHECK_NEAR(x, rr.x, 1e-3);
+        CHECK_NEAR(y, rr.y, 1e-3);
         const screen_point s = project_point(p, mat4_multiply(proj, model), W, H);
         CHECK(!s.behind);
         CHECK_NEAR(s.depth, r.depth, 1e-5);
@@ -308,7 +319,10 @@ TEST(per_edge_intensity_array_and_bad_inputs) {
     CHECK(!render_wireframe(*half, m, mat4_identity(), o, ws).ok());  // no adjacency
 }
 
-TEST(report_render_wireframe_skips_bad_edges_and_matches_mesh_form) {
+// The 7-argument form is the report's loop: per edge project_vertex on both ends (the
+// report's viewport), then draw_line_f at thickness 1 — bit for bit while no edge needs
+// clipping (the cube lies inside the frustum).
+TEST(report_render_wireframe_skips_bad_edges_and_matches_the_reports_loop) {
     const mesh cube = make_cube(1.0f);
     std::vector<vec3_t> verts = cube.positions;
     std::vector<std::array<int, 2>> pairs;
@@ -320,13 +334,12 @@ TEST(report_render_wireframe_skips_bad_edges_and_matches_mesh_form) {
     canvas_holder a(W, H), b(W, H);
     render_wireframe(&*a, verts.data(), int(verts.size()), reinterpret_cast<int(*)[2]>(pairs.data()),
                      int(pairs.size()), model, proj);
-    wireframe_options o;
-    o.method = line_method::faithful;
-    o.depth_sort = false;
-    wireframe_workspace ws;
-    wireframe_stats st;
-    CHECK(render_wireframe(*b, cube, mat4_multiply(proj, model), o, ws, &st).ok());
-    CHECK_EQ(st.edges_drawn, 12u);
+    for (const edge &e : cube.edges) {
+        float x0, y0, x1, y1;
+        CHECK_EQ(project_vertex(verts[e.a], model, proj, W, H, &x0, &y0), 1);
+        CHECK_EQ(project_vertex(verts[e.b], model, proj, W, H, &x1, &y1), 1);
+        draw_line_f(&*b, x0, y0, x1, y1, 1.0f);
+    }
     double diff = 0;
     for (int i = 0; i < W * H; ++i) diff = std::max(diff, double(std::fabs(a.c->data[i] - b.c->data[i])));
     CHECK_NEAR(diff, 0.0, 0.0);
@@ -335,6 +348,32 @@ TEST(report_render_wireframe_skips_bad_edges_and_matches_mesh_form) {
     render_wireframe(nullptr, verts.data(), 8, reinterpret_cast<int(*)[2]>(pairs.data()), 12, model, proj);
     render_wireframe(&*a, nullptr, 8, nullptr, 12, model, proj);
     render_wireframe(&*a, verts.data(), -1, reinterpret_cast<int(*)[2]>(pairs.data()), 12, model, proj);
+}
+
+// The mesh form's faithful method hands draw_line_f the library's ends minus 0.5, so its
+// line lies where the coverage line lies: the ink's centroid within 0.05 px of it.
+TEST(faithful_method_lines_up_with_the_coverage_method) {
+    const mesh m = single_edge({-0.6f, -0.3f, -2.0f}, {0.7f, 0.45f, -3.0f});
+    const mat4_t proj = test_proj();
+    double centroid[2][2];
+    const line_method methods[2] = {line_method::faithful, line_method::coverage};
+    for (int k = 0; k < 2; ++k) {
+        canvas_holder c(W, H);
+        wireframe_options o = plain_options();
+        o.method = methods[k];
+        wireframe_workspace ws;
+        CHECK(render_wireframe(*c, m, proj, o, ws).ok());
+        double sum = 0, sx = 0, sy = 0;
+        for (int y = 0; y < H; ++y)
+            for (int x = 0; x < W; ++x) {
+                const double v = c.c->pixels[y][x];
+                sum += v, sx += v * (x + 0.5), sy += v * (y + 0.5);
+            }
+        CHECK(sum > 10);
+        centroid[k][0] = sx / sum, centroid[k][1] = sy / sum;
+    }
+    CHECK_NEAR(centroid[0][0], centroid[1][0], 0.05);
+    CHECK_NEAR(centroid[0][1], centroid[1][1], 0.05);
 }
 
 TEST(hidden_back_edges_match_a_world_space_reference) {

@@ -13,18 +13,18 @@ namespace tiny3d::detail {
 
 inline float clamp01(float v) { return v < 0.0f ? 0.0f : (v > 1.0f ? 1.0f : v); }
 
-// Adds intensity·w to the 2×2 pixels around (x, y) with bilinear weights w (pixel centres
-// at i + 0.5), each clamped to 0..1; off-canvas parts and non-finite input are ignored.
+// The report's set_pixel_f in the report's convention (integer coordinates are pixel
+// centres): x0 = floor(x), dx = x − x0, and pixel (x0 + i, y0 + j), i, j ∈ {0, 1}, gains
+// intensity·(1 − |i − dx|)(1 − |j − dy|), clamped to 0..1; off-canvas parts and
+// non-finite input are ignored.
 inline void splat(canvas_t *c, float x, float y, float intensity) {
     if (!c || !std::isfinite(x) || !std::isfinite(y) || !std::isfinite(intensity)) return;
-    // Shift so that pixel centres (i + 0.5) sit on the integer lattice of the report's splat.
-    const float sx = x - 0.5f, sy = y - 0.5f;
     // Far off the canvas: nothing to do (also keeps the int conversion in range).
-    if (sx <= -2.0f || sy <= -2.0f || sx >= float(c->width) + 1.0f || sy >= float(c->height) + 1.0f) return;
-    const int x0 = floor_to_int(sx);
-    const int y0 = floor_to_int(sy);
-    const float dx = sx - float(x0);
-    const float dy = sy - float(y0);
+    if (x <= -2.0f || y <= -2.0f || x >= float(c->width) + 1.0f || y >= float(c->height) + 1.0f) return;
+    const int x0 = floor_to_int(x);
+    const int y0 = floor_to_int(y);
+    const float dx = x - float(x0);
+    const float dy = y - float(y0);
     for (int j = 0; j <= 1; ++j)
         for (int i = 0; i <= 1; ++i) {
             const int xi = x0 + i, yj = y0 + j;

@@ -27,8 +27,10 @@ vec4_t lerp4_d(const vec4_t &a, const vec4_t &b, double t) {
 }
 
 // Clips the clip-space segment a–b (near plane first, then the frustum) and maps the
-// visible part to the screen. False when nothing is left.
-bool clip_and_project(const vec4_t &a, const vec4_t &b, int width, int height, screen_segment &out) {
+// visible part to the screen (the library's viewport, or the report's). False when
+// nothing is left.
+bool clip_and_project(const vec4_t &a, const vec4_t &b, int width, int height, screen_segment &out,
+                      bool report_viewport = false) {
     const segment_clip c = clip_segment(a, b, clip_all);
     if (!c.visible) return false;
     // A clipped end is interpolated from the original end it is nearer to: from a far-off
@@ -39,8 +41,9 @@ bool clip_and_project(const vec4_t &a, const vec4_t &b, int width, int height, s
     auto end_at = [&](double t, double t_from_b) {
         return t <= 0.5 || !from_b.visible ? lerp4_d(a, b, t) : lerp4_d(b, a, t_from_b);
     };
-    const screen_point p = clip_to_screen(c.t0 > 0.0 ? end_at(c.t0, from_b.t1) : a, width, height);
-    const screen_point q = clip_to_screen(c.t1 < 1.0 ? end_at(c.t1, from_b.t0) : b, width, height);
+    const auto to_screen = report_viewport ? clip_to_report_screen : clip_to_screen;
+    const screen_point p = to_screen(c.t0 > 0.0 ? end_at(c.t0, from_b.t1) : a, width, height);
+    const screen_point q = to_screen(c.t1 < 1.0 ? end_at(c.t1, from_b.t0) : b, width, height);
     if (p.behind || q.behind) return false;  // only for matrices whose near plane allows w ≤ 0
     out = {p.x, p.y, q.x, q.y, 0.5f * (p.depth + q.depth)};
     return true;
@@ -98,8 +101,9 @@ void draw_segment(canvas_t &canvas, const screen_segment &s, line_method method,
         style.intensity = ink;
         draw_line_coverage(&canvas, s.x0, s.y0, s.x1, s.y1, thickness, style);
     } else {
-        // The report's line has no intensity: it always lays down full splats.
-        draw_line_f(&canvas, s.x0, s.y0, s.x1, s.y1, thickness);
+        // The report's line has no intensity: it always lays down full splats. It takes the
+        // report's coordinates (pixel centres on integers): the library's minus 0.5.
+        draw_line_f(&canvas, s.x0 - 0.5f, s.y0 - 0.5f, s.x1 - 0.5f, s.y1 - 0.5f, thickness);
     }
 }
 
@@ -420,14 +424,15 @@ void render_wireframe(canvas_t *canvas, vec3_t *vertices, int vertex_count, int 
                       mat4_t model, mat4_t proj) {
     if (!canvas || !canvas->data || !vertices || !edges || vertex_count <= 0 || edge_count <= 0) return;
     constexpr float report_thickness = 1.0f;
-    const mat4_t mvp = mat4_multiply(proj, model);
+    // Model, then projection, per vertex as the report's project_vertex does, so an edge
+    // that needs no clipping gets the report's end points bit for bit.
+    const auto to_clip = [&](const vec3_t &v) { return mat4_mul_vec4(proj, mat4_mul_vec4(model, vec4_from_vec3(v, 1.0f))); };
     for (int i = 0; i < edge_count; ++i) {
         const int a = edges[i][0], b = edges[i][1];
         if (a < 0 || a >= vertex_count || b < 0 || b >= vertex_count) continue;
         tiny3d::screen_segment s;
-        if (!tiny3d::clip_and_project(mat4_mul_vec4(mvp, vec4_from_vec3(vertices[a], 1.0f)),
-                                      mat4_mul_vec4(mvp, vec4_from_vec3(vertices[b], 1.0f)), canvas->width,
-                                      canvas->height, s))
+        if (!tiny3d::clip_and_project(to_clip(vertices[a]), to_clip(vertices[b]), canvas->width, canvas->height, s,
+                                      true))
             continue;
         draw_line_f(canvas, s.x0, s.y0, s.x1, s.y1, report_thickness);
     }

@@ -62,7 +62,11 @@ std::vector<method> methods_for(float t) {
     // Built once per thickness, as a program drawing many lines of one width would.
     const auto table = std::make_shared<tiny3d::line_table>(std::move(tiny3d::line_table::make(t).value()));
     return {
-        {"faithful DDA splat", "faithful", [t](canvas_t *c, const segment &s) { draw_line_f(c, s.x0, s.y0, s.x1, s.y1, t); }, false},
+        // draw_line_f takes the report's coordinates (integer = pixel centre): the segment's
+        // library coordinates minus 0.5, so it is measured against the same exact stroke.
+        {"faithful DDA splat", "faithful",
+         [t](canvas_t *c, const segment &s) { draw_line_f(c, s.x0 - 0.5f, s.y0 - 0.5f, s.x1 - 0.5f, s.y1 - 0.5f, t); },
+         false},
         {"exact reference", "reference",
          [t](canvas_t *c, const segment &s) {
              // The reference writes doubles; the timed work includes copying them out.

@@ -56,7 +56,7 @@ int main(int argc, char **argv) {
     /* a small picture: the lit edges of a triangle, drawn with set_pixel_f at pixel centres */
     canvas_t *canvas = create_canvas(16, 8);
     if (!canvas) return 1;
-    for (int x = 0; x < 16; x++) set_pixel_f(canvas, x + 0.5f, 3.5f, x / 15.0f);
+    for (int x = 0; x < 16; x++) set_pixel_f(canvas, x, 3, x / 15.0f);
     char path[1024];
     snprintf(path, sizeof path, "%s/own_helpers.pgm", dir);
     int status = save_canvas_as_pgm(canvas, path);
