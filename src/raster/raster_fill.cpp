@@ -71,8 +71,7 @@ triangle_edges triangle_setup_snapped(const std::int32_t Xs[3], const std::int32
         t.a[k] = -dy * RASTER_SUBPIXEL_ONE;
         t.b[k] = dx * RASTER_SUBPIXEL_ONE;
         t.c[k] = dx * (HALF_SUBPIXEL - Y[ia]) - dy * (HALF_SUBPIXEL - X[ia]);
-        const bool top_left = dy < 0 || (dy == 0 && dx > 0);
-        if (!top_left) t.c[k] -= 1;  // ties on right/bottom edges fall outside
+        if (!top_left_edge(dx, dy)) t.c[k] -= 1;  // ties on right/bottom edges fall outside
     }
     const std::int64_t min_X = std::min({X[0], X[1], X[2]}), max_X = std::max({X[0], X[1], X[2]});
     const std::int64_t min_Y = std::min({Y[0], Y[1], Y[2]}), max_Y = std::max({Y[0], Y[1], Y[2]});
@@ -217,8 +216,7 @@ fast_setup setup_fast_triangle(const std::int32_t X[3], const std::int32_t Y[3],
         const int ia = k == 2 ? 0 : k + 1, ib = k == 0 ? 2 : k - 1;  // edge opposite vertex k
         dx[k] = s * (X[ib] - X[ia]);
         dy[k] = s * (Y[ib] - Y[ia]);
-        const bool top_left = dy[k] < 0 || (dy[k] == 0 && dx[k] > 0);
-        e[k] = dx[k] * (cy - Y[ia]) - dy[k] * (cx - X[ia]) - (top_left ? 0 : 1);
+        e[k] = dx[k] * (cy - Y[ia]) - dy[k] * (cx - X[ia]) - (top_left_edge(dx[k], dy[k]) ? 0 : 1);
     }
     int first = 0, last = max_y - min_y;
     for (int k = 0; k < 3; ++k)

@@ -15,7 +15,8 @@
 
 namespace tiny3d::detail {
 
-// Rounds a screen coordinate to the nearest 1/16 pixel (ties to even), in sub-pixel units.
+// Rounds a screen coordinate to the nearest 1/16 pixel (ties to even), in sub-pixel units
+// (std::lrint, which GCC -O2 compiles to a library call; cvtss2si is one instruction).
 // Needs |x| ≤ RASTER_MAX_COORD (then x·16 fits in 32 bits).
 inline std::int32_t snap_coord(float x) {
 #ifdef __SSE2__
@@ -42,6 +43,15 @@ inline bool facing_culled(std::int64_t area2, cull_mode cull) {
     const bool front_facing = area2 < 0;
     return (cull == cull_mode::back && !front_facing) || (cull == cull_mode::front && front_facing);
 }
+
+// Edge k of a snapped triangle is the edge opposite vertex k, from vertex a = k + 1 to
+// b = k − 1 (mod 3), oriented by s = sign(snapped_area2) so that the inside is positive:
+//   E(P) = dx·(Py − ya) − dy·(Px − xa) − (top_left_edge(dx, dy) ? 0 : 1)   (sub-pixel units),
+// dx = s·(xb − xa), dy = s·(yb − ya). Every triangle setup uses this ONE top-left fill rule
+// (raster.h): bias 0 on a top edge (dy = 0, dx > 0) or a left edge (dy < 0), else 1, so
+// that a pixel centre exactly on a right or bottom edge falls outside and "inside" is
+// E ≥ 0 for every edge.
+inline bool top_left_edge(std::int64_t dx, std::int64_t dy) { return dy < 0 || (dy == 0 && dx > 0); }
 
 // triangle_setup on already snapped, usable vertices (sub-pixel units): same result.
 triangle_edges triangle_setup_snapped(const std::int32_t X[3], const std::int32_t Y[3], pixel_rect clip,

@@ -1,0 +1,123 @@
+// render_context_impl.h — the render context's state (render_context::impl) and the
+// per-pixel path's triangle, shared by raster_context.cpp (the draw's steps) and
+// raster_pixel_path.cpp (Phong, textures, translucency). Not installed.
+#ifndef TINY3D_RENDER_CONTEXT_IMPL_H
+#define TINY3D_RENDER_CONTEXT_IMPL_H
+
+#include <cstdint>
+#include <vector>
+
+#include "../parallel/worker_pool.h"
+#include "raster_internal.h"
+#include "render_bands.h"
+#include "vertex_transform.h"
+
+namespace tiny3d {
+
+namespace detail {
+
+// Guard band: the x/y clip planes sit at |x|, |y| ≤ guard·w, chosen so that the whole band
+// spans fewer pixels than the 32-bit fill allows; never tighter than the frustum itself.
+inline constexpr float GUARD_SPAN_PIXELS = 2000.0f;
+inline constexpr float MAX_GUARD = 4.0f;
+
+// A triangle for the per-pixel path (Phong, textures, translucency).
+struct generic_triangle {
+    screen_vertex v[3];
+    float attr[3][ATTR_COUNT];
+    float mean_depth;
+    std::uint32_t state;     // index into the frame's draw states
+    std::uint32_t sequence;  // submission order among the translucent ones (sort tie-break)
+};
+
+// The per-pixel path's triangle from screen vertices and clipped vertices' attributes.
+generic_triangle make_generic_triangle(const screen_vertex v[3], const clip_vertex *const c[3], std::uint32_t state);
+
+// Draws rows [y0, y1) of g with its draw's parameters p onto target and depth: per pixel
+// depth test, (perspective-correct) attributes, Phong or interpolated Gouraud intensity,
+// texture, then opaque write (colour and depth) or "over" blend with p.alpha (colour only).
+void draw_generic_rows(canvas_t &target, zbuffer &depth, const draw_params &p, const generic_triangle &g, int y0,
+                       int y1);
+
+// What a thread does with one cluster chunk of the draw: skip it, or walk it (and whether it
+// counts the chunk's culled triangles).
+struct chunk_walk {
+    bool walk, counts;
+};
+
+}  // namespace detail
+
+struct render_context::impl {
+    explicit impl(int threads) : pool(threads) {}
+
+    parallel::worker_pool pool;
+    canvas_t *target = nullptr;
+    zbuffer depth;
+    bool pending_clear = false;
+    float clear_intensity = 0.0f;
+    float guard = 1.0f;
+    frame_stats stats;
+
+    // What one thread produced for the current draw. Aligned to a cache line of its own: the
+    // vector headers and stats are written per triangle, and two threads writing one line
+    // (false sharing) made the two-thread setup slower than one thread's.
+    struct alignas(detail::CACHE_LINE) segment {
+        std::vector<detail::xvertex> vertices;  // every vertex of the draw, transformed by this thread
+        std::vector<vec4_t> clip;               // their clip-space positions
+        std::vector<float> vertex_attr;         // ATTR_COUNT per vertex (generic path only)
+        std::vector<detail::fast_triangle> fast;
+        std::vector<triangle_edges> wide;
+        std::vector<detail::generic_triangle> generic;
+        std::vector<std::uint32_t> bins[detail::MAX_BANDS];  // fast-triangle indices per band
+        std::vector<detail::chunk_walk> chunks;              // this draw's cluster chunks, as decided
+        frame_stats stats;
+    };
+    segment segments[detail::MAX_THREADS];
+    std::vector<draw_params> states;                    // this frame's draw calls
+    std::vector<detail::generic_triangle> translucent;  // queued for end_frame
+    detail::band_layout bands;
+    detail::band_claims claims;
+
+    void clear_band(int b) {
+        const int y0 = bands.y0(b), y1 = bands.y0(b + 1);
+        if (y0 >= y1) return;
+        detail::fill_floats(target->pixels[y0], static_cast<std::size_t>(y1 - y0) * target->width, clear_intensity);
+        depth.clear_rows(y0, y1, 1.0f);
+    }
+
+    // The steps of draw (raster_context.cpp).
+    void grow_segments(std::size_t vertex_count, bool generic);
+    void set_up_and_draw(int thread, const raster_mesh &m, const draw_params &p, const detail::vertex_job &job,
+                         std::uint32_t state, const detail::cluster_view *view);
+    void draw_band(int band, const segment &from, const draw_params &p);
+    void queue_translucent();
+    void gather_stats();
+
+    void transform(const raster_mesh &m, const draw_params &p, const detail::vertex_job &job, detail::vertex_set set,
+                   segment &out) {
+        detail::transform_vertices(m, p, job, guard, set, out.vertices.data(), out.clip.data(), out.vertex_attr.data());
+    }
+    void setup(const raster_mesh &m, const draw_params &p, const detail::vertex_job &job, std::uint32_t state, int thread,
+               const detail::cluster_view *clusters, segment &out);
+    void setup_range(const raster_mesh &m, const draw_params &p, std::uint32_t state, bool generic, int thread,
+                     bool counts_all, std::size_t first, std::size_t last, segment &out);
+    // Appends a fast triangle and its band bins (skips empty ones).
+    void add_fast(const triangle_edges &t, const float depth_at[3], const float shade[3], segment &out) {
+        detail::fast_triangle f;
+        if (!detail::make_fast_triangle(t, depth_at, shade, static_cast<std::int32_t>(out.wide.size()), f)) return;
+        if (f.wide >= 0) out.wide.push_back(t);
+        bin_fast(f, out);
+    }
+    // Appends a set-up fast triangle and its band bins.
+    void bin_fast(const detail::fast_triangle &f, segment &out) {
+        const std::uint32_t index = static_cast<std::uint32_t>(out.fast.size());
+        out.fast.push_back(f);
+        for (int b = bands.of(f.min_y); b <= bands.of(f.max_y); ++b) out.bins[b].push_back(index);
+    }
+    void emit(const clip_vertex *poly, int n, const draw_params &p, std::uint32_t state, bool generic, bool count,
+              segment &out);
+};
+
+}  // namespace tiny3d
+
+#endif

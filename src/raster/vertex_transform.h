@@ -1,0 +1,97 @@
+// vertex_transform.h — the render context's vertex stage: every vertex of a draw to clip
+// space, outcode, snapped screen position, window depth and shading (the per-pixel path's
+// attributes too). Not installed. The kernels: a portable reference (vertex_transform.cpp)
+// and SSE2 ones (vertex_kernels_sse2.h), chosen in transform_vertices.
+#ifndef TINY3D_VERTEX_TRANSFORM_H
+#define TINY3D_VERTEX_TRANSFORM_H
+
+#include <cstddef>
+#include <cstdint>
+
+#include "lighting.h"
+#include "raster_internal.h"
+
+namespace tiny3d::detail {
+
+// A transformed vertex: what the triangle walk reads, 20 bytes (the clip-space position,
+// which only clipping needs, is kept in an array of its own, so that the walk's vertex
+// reads and the transform's writes are 2.6× smaller).
+struct xvertex {
+    std::int32_t snapped_x, snapped_y;  // screen position in 1/16 px, valid when `snapped`
+    float depth;                        // window depth 0.5·z/w + 0.5, valid when outcode has no CLIP_NEAR bit
+    float shade;                        // Gouraud intensity (or 0)
+    std::uint8_t outcode;
+    bool snapped;                       // screen position usable (snap_vertex succeeded)
+};
+
+// Per-vertex attributes of the generic (per-pixel) path, in clip_vertex::attr order.
+enum attr_slot { ATTR_PX, ATTR_PY, ATTR_PZ, ATTR_NX, ATTR_NY, ATTR_NZ, ATTR_U, ATTR_V, ATTR_SHADE, ATTR_COUNT };
+static_assert(ATTR_COUNT <= CLIP_MAX_ATTRIBUTES);
+
+// The per-draw constants of the vertex transform.
+struct vertex_job {
+    mat4_t mvp;
+    normal_transform nt;
+    float half_w, half_h;
+    bool gouraud, generic;
+    bool directional_gouraud;  // Gouraud with directional lights only (no position needed)
+};
+
+// The vertices one transform() call handles: 0..count−1, or list[0..count).
+struct vertex_set {
+    const std::uint32_t *list;
+    std::size_t count;
+    std::uint32_t operator[](std::size_t k) const { return list ? list[k] : static_cast<std::uint32_t>(k); }
+};
+
+// Clip space → screen: pixels, window depth 0.5·z/w + 0.5 and 1/w (for w > 0).
+inline screen_vertex to_screen(vec4_t c, float half_w, float half_h) {
+    const float inv_w = 1.0f / c.w;
+    return {(c.x * inv_w + 1.0f) * half_w, (1.0f - c.y * inv_w) * half_h, 0.5f * c.z * inv_w + 0.5f, inv_w};
+}
+
+// M·(p, 1) and its xyz part.
+inline vec4_t mul(const mat4_t &m, vec3_t p) {
+    return {m.m[0] * p.x + m.m[4] * p.y + m.m[8] * p.z + m.m[12], m.m[1] * p.x + m.m[5] * p.y + m.m[9] * p.z + m.m[13],
+            m.m[2] * p.x + m.m[6] * p.y + m.m[10] * p.z + m.m[14], m.m[3] * p.x + m.m[7] * p.y + m.m[11] * p.z + m.m[15]};
+}
+
+inline vec3_t mul3(const mat4_t &m, vec3_t p) {
+    const vec4_t r = mul(m, p);
+    return {r.x, r.y, r.z};
+}
+
+// ---- the portable reference kernels (the SSE2 ones match them bit for bit) ----
+
+// One vertex: clip = M·p, outcode, and for a vertex not outside the near plane its window
+// depth and snapped screen position.
+inline void project_one(const mat4_t &m, vec3_t position, float guard, float half_w, float half_h, xvertex &x,
+                        vec4_t &clip) {
+    clip = mul(m, position);
+    x.outcode = static_cast<std::uint8_t>(clip_outcode(clip, guard));
+    x.snapped = false;
+    if (!(x.outcode & CLIP_NEAR)) {
+        const screen_vertex screen = to_screen(clip, half_w, half_h);
+        x.depth = screen.z;
+        x.snapped = snap_vertex(screen, x.snapped_x, x.snapped_y);
+    }
+}
+
+// Gouraud intensity of one vertex lit by directional lights only (no position needed).
+inline float shade_directional_one(const light_rig &rig, const normal_transform &nt, vec3_t normal) {
+    return shade_gouraud_vertex(rig, {0, 0, 0}, apply_normal_transform(nt, normal));
+}
+
+// The per-draw constants for drawing with `p` through `mvp` (= view_projection · model) on a
+// width × height target; `generic`: the per-pixel path's attributes are wanted.
+vertex_job make_vertex_job(const draw_params &p, const mat4_t &mvp, bool generic, int width, int height);
+
+// Transforms the vertices `set` of `m`: writes vertices[i] and clip[i] (clip-space position)
+// for each i of the set, and vertex_attr[i·ATTR_COUNT ..] when job.generic; x/y planes of the
+// outcode at |x|, |y| ≤ guard·w. Arrays sized for the mesh's vertex count.
+void transform_vertices(const raster_mesh &m, const draw_params &p, const vertex_job &job, float guard, vertex_set set,
+                        xvertex *vertices, vec4_t *clip, float *vertex_attr);
+
+}  // namespace tiny3d::detail
+
+#endif
