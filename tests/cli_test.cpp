@@ -13,7 +13,7 @@ using namespace program_runner;
 
 namespace {
 
-const std::vector<std::string> programs = {"clock", "cube", "lighting", "ply_render", "shaded", "soccer",
+const std::vector<std::string> programs = {"clock", "cube", "lighting", "ply_render", "render", "shaded", "soccer",
                                            "wireframe"};
 
 bool built(const std::string &program) {

@@ -67,6 +67,10 @@ TEST(wireframe_tabulated_in_two_halves_equals_one_run) {
 // Filled and shaded frames with two worker threads: the split must not change a pixel.
 TEST(shaded_in_two_halves_equals_one_run) { check_halves_equal_full_run("shaded", {"--threads", "2"}); }
 
+TEST(render_in_two_halves_equals_one_run) {
+    check_halves_equal_full_run("render", {"tests/data/cube_quads.obj", "--turntable", "6"});
+}
+
 TEST(bad_frame_ranges_fail_with_a_message) {
     const std::string program = demo_path("cube");
     CHECK_MSG(fs::exists(program), program + " is not built");

@@ -120,10 +120,6 @@ void command_line::add_size(int default_width, int default_height) {
          }});
 }
 
-void command_line::add_frames(int frame_count) {
-    add_frames(std::function<int()>([frame_count] { return frame_count; }));
-}
-
 void command_line::add_frames(std::function<int()> frame_count) {
     frame_count_ = std::move(frame_count);
     add({"--frames", "A:B", "render only frames A to B (inclusive, 0-based; frame k is the same image in any range)",
@@ -150,8 +146,12 @@ void command_line::add_png() {
 }
 
 void command_line::add_sequence_options(int frame_count, int default_width, int default_height) {
+    add_sequence_options(std::function<int()>([frame_count] { return frame_count; }), default_width, default_height);
+}
+
+void command_line::add_sequence_options(std::function<int()> frame_count, int default_width, int default_height) {
     add_out();
-    add_frames(frame_count);
+    add_frames(std::move(frame_count));
     add_size(default_width, default_height);
     add_png();
 }

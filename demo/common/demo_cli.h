@@ -75,12 +75,12 @@ public:
     // --frames A:B over a sequence of frame_count frames (default: all of them). When the
     // length depends on other options, pass a function: it is called once every option has
     // been parsed, and the range is checked against its value.
-    void add_frames(int frame_count);
     void add_frames(std::function<int()> frame_count);
     void add_threads(int default_threads);
     void add_png();
     // What a program writing a sequence of frames takes: --out, --frames, --size, --png.
     void add_sequence_options(int frame_count, int default_width, int default_height);
+    void add_sequence_options(std::function<int()> frame_count, int default_width, int default_height);
 
     // ---- a program's own options ----
     void flag(const std::string &name, bool &target, const std::string &help);

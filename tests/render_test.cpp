@@ -1,0 +1,230 @@
+// render_test.cpp — the render program (demo/render.cpp) run as a user runs it: frame counts
+// and names, pixels against hand-computed shading (a cube face seen head-on in orthographic
+// projection, lit by a light given on the command line), textures, the auto-framed
+// turntable keeping a mesh inside every frame, hidden-line against wireframe, --info's
+// counts, and bad command lines (exit 2) and bad files (exit 1) writing nothing.
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "harness.h"
+#include "program_runner.h"
+#include "renderer.h"
+
+using namespace program_runner;
+
+namespace {
+
+const std::string cube_obj = "tests/data/cube_quads.obj";  // side 2, uvs and normals
+constexpr int background = 10;                               // round(0.04 · 255)
+
+bool render_built() {
+    const bool ok = fs::exists(demo_path("render"));
+    CHECK_MSG(ok, demo_path("render") + " is not built (make test builds the demos first)");
+    return ok;
+}
+
+// Runs render with `args` and --out DIR/out; returns the result (files in DIR/out).
+run_result render(const temp_dir &dir, std::vector<std::string> args) {
+    args.insert(args.end(), {"--out", (dir.path / "out").string()});
+    return run(demo_path("render"), args, dir.path);
+}
+
+pgm_image frame(const temp_dir &dir, const std::string &name) { return parse_pgm(file_bytes(dir.path / "out" / name)); }
+
+// A mesh as OBJ text (positions and faces only).
+std::string obj_text(const tiny3d::mesh &m) {
+    std::string text;
+    char line[128];
+    for (const vec3_t &p : m.positions) {
+        std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\n", p.x, p.y, p.z);
+        text += line;
+    }
+    for (std::size_t f = 0; f < m.face_count(); ++f) {
+        text += "f";
+        for (std::uint32_t k = m.face_start[f]; k < m.face_start[f + 1]; ++k) text += " " + std::to_string(m.indices[k] + 1);
+        text += "\n";
+    }
+    return text;
+}
+
+void write_file(const fs::path &path, const std::string &bytes) {
+    std::FILE *f = std::fopen(path.string().c_str(), "wb");
+    CHECK(f != nullptr);
+    if (!f) return;
+    std::fwrite(bytes.data(), 1, bytes.size(), f);
+    std::fclose(f);
+}
+
+// The cube's +z face head-on: eye on +z, orthographic, one frame.
+const std::vector<std::string> head_on = {cube_obj, "--eye", "0,0,10", "--target", "0,0,0", "--ortho", "--turntable", "1",
+                                          "--size", "64x64"};
+
+std::vector<std::string> with(std::vector<std::string> a, const std::vector<std::string> &more) {
+    a.insert(a.end(), more.begin(), more.end());
+    return a;
+}
+
+}  // namespace
+
+TEST(default_turntable_writes_36_frames_of_the_default_size) {
+    if (!render_built()) return;
+    temp_dir dir;
+    const run_result r = render(dir, {cube_obj, "--size", "40x30"});
+    CHECK_MSG(r.exit_code == 0, r.err);
+    const auto files = files_in(dir.path / "out");
+    CHECK_EQ(files.size(), std::size_t{36});
+    CHECK(files.count("frame_000.pgm") == 1 && files.count("frame_035.pgm") == 1);
+    const pgm_image img = frame(dir, "frame_017.pgm");
+    CHECK_EQ(img.width, 40);
+    CHECK_EQ(img.height, 30);
+}
+
+TEST(flat_gouraud_phong_give_the_lambert_value_on_a_face_seen_head_on) {
+    if (!render_built()) return;
+    // I = ambient + intensity · n·L: n = +z (towards the camera), L from the command line
+    // in the camera's frame. Light along the view axis: 0.25 + 0.5 · 1 = 0.75 → 191.
+    // Light at 45° to the right: 0.25 + 0.5 · cos 45° = 0.60355 → 154.
+    const struct {
+        const char *light;
+        int expected;
+    } cases[] = {{"0,0,1,0.5", 191}, {"1,0,1,0.5", 154}, {"0,0,-1,0.5", 64}};  // from behind: ambient only
+    for (const char *mode : {"flat", "gouraud", "phong"})
+        for (const auto &c : cases) {
+            temp_dir dir;
+            const run_result r = render(dir, with(head_on, {"--mode", mode, "--light", c.light, "--ambient", "0.25"}));
+            CHECK_MSG(r.exit_code == 0, r.err);
+            const pgm_image img = frame(dir, "frame_000.pgm");
+            CHECK_EQ(img.width, 64);
+            if (img.width != 64) continue;
+            // The face spans the middle ±1 of a view ±√3/0.85 high: pixels ~16..47.
+            for (const int p : {24, 32, 40}) CHECK_EQ(int(img.at(p, 32)), c.expected);
+            CHECK_EQ(int(img.at(0, 0)), background);
+            CHECK_EQ(int(img.at(63, 63)), background);
+        }
+}
+
+TEST(two_lights_without_intensity_share_the_default_total) {
+    if (!render_built()) return;
+    // Two lights along the view axis, 0.85 split evenly: 0.1 (ambient) + 0.85 = 0.95 → 242.
+    temp_dir dir;
+    const run_result r = render(dir, with(head_on, {"--mode", "flat", "--light", "0,0,1", "--light=0,0,2"}));
+    CHECK_MSG(r.exit_code == 0, r.err);
+    const pgm_image img = frame(dir, "frame_000.pgm");
+    CHECK(img.width == 64 && int(img.at(32, 32)) == 242);
+}
+
+TEST(texture_multiplies_the_shading) {
+    if (!render_built()) return;
+    temp_dir dir;
+    // 4 × 1 texels 0.2 0.2 1 1: bilinear gives exactly 0.2 for u in [1/8, 3/8] and 1 for
+    // u in [5/8, 7/8]; the face maps u along +x.
+    write_file(dir.path / "tex.pgm", std::string("P5\n4 1\n255\n") + char(51) + char(51) + char(255) + char(255));
+    const run_result r = render(dir, with(head_on, {"--mode", "flat", "--light", "0,0,1,0.5", "--ambient", "0.25",
+                                                    "--texture", (dir.path / "tex.pgm").string()}));
+    CHECK_MSG(r.exit_code == 0, r.err);
+    const pgm_image img = frame(dir, "frame_000.pgm");
+    CHECK_EQ(img.width, 64);
+    if (img.width != 64) return;
+    CHECK_EQ(int(img.at(24, 32)), 38);   // round(0.75 · 0.2 · 255) = round(38.25)
+    CHECK_EQ(int(img.at(40, 32)), 191);  // 0.75 · 1
+}
+
+TEST(auto_framing_keeps_the_mesh_inside_every_frame) {
+    if (!render_built()) return;
+    temp_dir dir;
+    // A torus knot moved far off the origin and stretched: the framing follows its bounds.
+    tiny3d::mesh knot = tiny3d::make_torus_knot(2, 3, 60, 8, 0.25f, 1.0f);
+    for (vec3_t &p : knot.positions) p = vec3_t{p.x * 3.0f + 500.0f, p.y - 40.0f, p.z * 0.5f};
+    write_file(dir.path / "knot.obj", obj_text(knot));
+    for (const char *projection : {"--fov=40", "--ortho"}) {
+        const run_result r = render(dir, {(dir.path / "knot.obj").string(), projection, "--turntable", "6", "--size", "80x60"});
+        CHECK_MSG(r.exit_code == 0, r.err);
+        for (int f = 0; f < 6; ++f) {
+            char name[32];
+            std::snprintf(name, sizeof name, "frame_%03d.pgm", f);
+            const pgm_image img = frame(dir, name);
+            CHECK_EQ(img.width, 80);
+            if (img.width != 80) continue;
+            int lit = 0, border_lit = 0;
+            for (int y = 0; y < 60; ++y)
+                for (int x = 0; x < 80; ++x) {
+                    const bool on = img.at(x, y) != background;
+                    lit += on;
+                    border_lit += on && (x == 0 || y == 0 || x == 79 || y == 59);
+                }
+            CHECK_EQ(border_lit, 0);
+            CHECK_MSG(lit > 80 * 60 / 50, std::string(projection) + " " + name + ": only " + std::to_string(lit) + " px lit");
+        }
+    }
+}
+
+TEST(hidden_line_leaves_out_the_back_face_that_wireframe_draws) {
+    if (!render_built()) return;
+    // Perspective from z = 10, fov 40°, 160 px: the back face's right edge (x = 1, z = −1)
+    // projects to column (1 + (1/11)/tan 20°)/2 · 160 = 99.98, inside the front face (whose
+    // edge is at column 104.4). Row 80 is the middle.
+    const std::vector<std::string> view = {cube_obj, "--eye", "0,0,10", "--target", "0,0,0", "--turntable", "1",
+                                           "--size", "160x160"};
+    temp_dir wire_dir, hidden_dir;
+    CHECK_EQ(render(wire_dir, with(view, {"--mode", "wireframe"})).exit_code, 0);
+    CHECK_EQ(render(hidden_dir, with(view, {"--mode", "hidden-line", "--lines", "tabulated"})).exit_code, 0);
+    const pgm_image wire = frame(wire_dir, "frame_000.pgm"), hidden = frame(hidden_dir, "frame_000.pgm");
+    CHECK(wire.width == 160 && hidden.width == 160);
+    if (wire.width != 160 || hidden.width != 160) return;
+    CHECK(std::max(wire.at(99, 80), wire.at(100, 80)) > 40);  // depth-cued: the far edges are dimmer
+    CHECK_EQ(int(hidden.at(99, 80)), background);
+    CHECK_EQ(int(hidden.at(100, 80)), background);
+    CHECK(std::max(hidden.at(104, 80), hidden.at(105, 80)) > 100);  // the front face's edge
+}
+
+TEST(info_prints_counts_and_bounds_and_renders_nothing) {
+    if (!render_built()) return;
+    temp_dir dir;
+    const run_result r = render(dir, {cube_obj, "--info"});
+    CHECK_EQ(r.exit_code, 0);
+    for (const char *line : {"vertices   8\n", "faces      6\n", "triangles  12\n", "edges      12\n",
+                             "bounds     min (-1, -1, -1)  max (1, 1, 1)\n", "uvs        yes", "warnings   "})
+        CHECK_MSG(r.out.find(line) != std::string::npos, std::string("missing '") + line + "' in:\n" + r.out);
+    CHECK(!fs::exists(dir.path / "out"));
+    const run_result ply = render(dir, {"tests/data/tetra_ascii.ply", "--info"});
+    CHECK_EQ(ply.exit_code, 0);
+    CHECK(ply.out.find("faces      4\n") != std::string::npos && ply.out.find("edges      6\n") != std::string::npos);
+}
+
+TEST(bad_command_lines_exit_2_and_bad_files_exit_1_writing_nothing) {
+    if (!render_built()) return;
+    const std::vector<std::vector<std::string>> usage_errors = {
+        {cube_obj, "--mode", "splat"},          {cube_obj, "--turntable", "0"},
+        {cube_obj, "--turntable", "4", "--frames", "0:4"}, {cube_obj, "--frames", "0:36"},
+        {cube_obj, "--light", "0,0,0"},         {cube_obj, "--light", "1,2"},
+        {cube_obj, "--light", "1,2,3,nan"},     {cube_obj, "--fov", "180"},
+        {cube_obj, "--eye", "1,2,3x"},          {cube_obj, "--up", "0,0,0"},
+        {cube_obj, "--ambient", "1e999"},       {cube_obj, "--threads", "0"},
+        {cube_obj, "--mode", "wireframe", "--texture", "t.pgm"}, {},
+        {cube_obj, "other.obj"},
+    };
+    for (const auto &args : usage_errors) {
+        temp_dir dir;
+        const run_result r = render(dir, args);
+        std::string line;
+        for (const std::string &a : args) line += " " + a;
+        CHECK_MSG(r.exit_code == 2, "render" + line + ": exit " + std::to_string(r.exit_code) + ": " + r.err);
+        CHECK_MSG(!fs::exists(dir.path / "out"), "render" + line + " wrote files");
+    }
+    temp_dir dir;
+    write_file(dir.path / "bad.obj", "v 0 0 0\nv 1 0 0\nf 1 2 7\n");
+    const std::vector<std::vector<std::string>> run_errors = {
+        {"/nonexistent.obj"},
+        {(dir.path / "bad.obj").string()},
+        {"tests/data/tetra_ascii.ply", "--texture", cube_obj},                 // a mesh without uvs
+        {cube_obj, "--texture", (dir.path / "missing.pgm").string()},
+    };
+    for (const auto &args : run_errors) {
+        const run_result r = render(dir, args);
+        CHECK_MSG(r.exit_code == 1, "render " + args[0] + ": exit " + std::to_string(r.exit_code) + ": " + r.err);
+        CHECK_MSG(!r.err.empty(), "no message");
+        CHECK(!fs::exists(dir.path / "out"));
+    }
+}
