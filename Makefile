@@ -109,7 +109,8 @@ $(BUILD)/demo/%: $(BUILD)/obj/demo/%.o $(DEMO_COMMON_OBJS) $(LIB)
 demos: $(DEMO_BINS)
 # How `make demo` runs each demo; a demo that needs more than --out sets DEMO_ARGS_<name>.
 DEMO_ARGS_wireframe  = tests/data/cube_quads.obj
-DEMO_ARGS_ply_render = tests/data/tetra_ascii.ply 90 45 -135 $(BUILD)/frames/ply_render/ply_render.pgm
+DEMO_ARGS_render     = tests/data/torus_binary.ply
+DEMO_ARGS_ply_render = tests/data/torus_binary.ply 0 60 20 $(BUILD)/frames/ply_render/ply_render.pgm
 DEMO_NO_OUT          = ply_render
 define run-demo
 	@echo "demo: $(1)"; mkdir -p $(BUILD)/frames/$(1); $(BUILD)/demo/$(1) $(DEMO_ARGS_$(1)) $(if $(filter $(1),$(DEMO_NO_OUT)),,--out $(BUILD)/frames/$(1))

@@ -166,6 +166,31 @@ TEST(program_writes_ppm_and_pgm_and_rejects_bad_input) {
         std::fclose(f);
         std::remove(out.c_str());
     }
+    // The binary torus of `make demo` at --size 64x64: background corners, every lit pixel
+    // 155 + (i mod 100), and many triangles' greys (the colour rule shows).
+    const std::string pgm = "/tmp/tiny3d_ply_render_test.pgm";
+    CHECK_EQ(std::system((exe + " tests/data/torus_binary.ply 0 60 20 " + pgm + " --size 64x64 >/dev/null 2>&1").c_str()), 0);
+    result<canvas_ptr> image = load_pgm(pgm);
+    CHECK_MSG(image.ok(), image.message());
+    if (image) {
+        const canvas_t &c = **image;
+        CHECK(c.width == 64 && c.height == 64);
+        CHECK_EQ(c.pixels[0][0], 0.0f);
+        bool seen[256] = {};
+        int distinct = 0, wrong = 0;
+        for (int y = 0; y < c.height; ++y)
+            for (int x = 0; x < c.width; ++x) {
+                const int v = int(std::lround(c.pixels[y][x] * 255.0f));
+                if (v != 0 && (v < 155 || v > 254)) ++wrong;
+                if (v != 0 && !seen[v]) {
+                    seen[v] = true;
+                    ++distinct;
+                }
+            }
+        CHECK_EQ(wrong, 0);
+        CHECK_MSG(distinct >= 30, std::to_string(distinct) + " distinct greys");
+        std::remove(pgm.c_str());
+    }
     CHECK(std::system((exe + " tests/data/tetra_ascii.ply 90 45 >/dev/null 2>&1").c_str()) != 0);
     CHECK(std::system((exe + " tests/data/tetra_ascii.ply 90 x -135 /tmp/x.pgm >/dev/null 2>&1").c_str()) != 0);
     CHECK(std::system((exe + " /nonexistent.ply 0 0 0 /tmp/x.pgm >/dev/null 2>&1").c_str()) != 0);
