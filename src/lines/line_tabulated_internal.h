@@ -1,8 +1,10 @@
 // line_tabulated_internal.h — internal: what the tabulated line's kernels share (the
 // stroke set-up, the row walk, where an end's correction comes from, the end block) and
 // the kernels' entry points. The geometry and the table are described in
-// line_tabulated.cpp, which also holds the portable and SSE2 kernels and chooses among
-// them and line_tabulated_avx512.cpp.
+// line_tabulated.cpp, which also sets strokes up and chooses the kernel (the one place:
+// draw_prepared and draw_lines_tabulated, by line_table::simd()); the kernels are
+// line_tabulated_portable.cpp (the reference), line_tabulated_sse2.cpp and
+// line_tabulated_avx512.cpp.
 // Everything here is baseline code: the AVX-512 kernel includes this before its target
 // region opens, so these inline functions are never emitted as AVX-512 copies.
 #ifndef TINY3D_LINE_TABULATED_INTERNAL_H
