@@ -1,4 +1,5 @@
-// animation.h — Bezier paths, constant-speed motion, looped timelines, orientation.
+// animation.h — Bezier paths, constant-speed motion, looped timelines, frame timing,
+// orientation.
 //
 // Conventions (pinned by tests/animation_test.cpp):
 //  * Time is in seconds on one clock (tiny3d::anim_clock); objects are placed by time, not
@@ -12,6 +13,7 @@
 #ifndef TINY3D_ANIMATION_H
 #define TINY3D_ANIMATION_H
 
+#include <cstddef>
 #include <span>
 #include <vector>
 
@@ -122,6 +124,58 @@ struct anim_clock {
 // t/P − floor(t/P) ∈ [0, 1) for a loop of period P > 0 seconds; P ≤ 0 or non-finite
 // input gives 0.
 double loop_phase(double seconds, double period_s);
+
+// ---- frame timing ----------------------------------------------------------------------
+
+// Frame times in seconds, fed by the caller: from a clock (frame_clock::steady_seconds())
+// while rendering, or from any sequence of timestamps (tests, offline renders). Two ways:
+//   tick(t)       a frame ends at timestamp t; its time is t minus the previous tick (the
+//                 first tick only starts the clock) — frame-to-frame intervals, as a
+//                 display loop measures them;
+//   add_frame(d)  a frame took d seconds (e.g. render time measured around the work).
+// rolling_fps() is over the last `window` frames (60 by default, as a display counter
+// would): their count divided by their summed time. summary() covers every frame since
+// construction or reset(). Every frame time is kept (8 bytes a frame); reserve() ahead
+// and recording allocates nothing.
+struct frame_summary {
+    std::size_t frames = 0;
+    double min_s = 0, median_s = 0, max_s = 0;  // median of an even count: mean of the middle two
+    double mean_s = 0, total_s = 0;
+};
+
+class frame_clock {
+public:
+    static constexpr std::size_t DEFAULT_WINDOW = 60;
+    explicit frame_clock(std::size_t window = DEFAULT_WINDOW) : window_(window ? window : 1) {}
+
+    // Error (nothing recorded) for a non-finite timestamp or one before the previous tick.
+    status tick(double timestamp_s);
+    // Error (nothing recorded) for a negative or non-finite duration.
+    status add_frame(double seconds);
+    void reserve(std::size_t frames) { frames_.reserve(frames); }
+    void reset();  // forgets every frame and the last tick
+
+    std::size_t frame_count() const { return frames_.size(); }
+    std::size_t window() const { return window_; }
+    double last_frame_seconds() const { return frames_.empty() ? 0.0 : frames_.back(); }
+    const std::vector<double> &frame_seconds() const { return frames_; }
+    // Mean frame time over the last min(window, frame_count()) frames; 0 with no frames.
+    double rolling_mean_seconds() const;
+    // 1 / rolling_mean_seconds(); 0 with no frames or when they all took 0 s.
+    double rolling_fps() const { return fps(rolling_mean_seconds()); }
+    // Min / median / max / mean / total over every frame (all 0 with none). Sorts a copy.
+    frame_summary summary() const;
+
+    static double fps(double frame_seconds) { return frame_seconds > 0.0 ? 1.0 / frame_seconds : 0.0; }
+    // A monotonic clock in seconds (arbitrary origin) to feed tick() or time add_frame().
+    static double steady_seconds();
+
+private:
+    std::vector<double> frames_;
+    std::size_t window_;
+    double last_tick_ = 0.0;
+    bool ticked_ = false;
+};
 
 // ---- orientation -----------------------------------------------------------------------
 

@@ -215,6 +215,87 @@ TEST(loop_phase_and_clock) {
     CHECK_EQ(tiny3d::anim_clock::at_frame(30, 30).seconds, tiny3d::anim_clock::at_frame(60, 60).seconds);
 }
 
+// ---- frame clock: fed timestamps, no real timing -------------------------------------------
+
+TEST(frame_clock_ticks_give_intervals_rolling_fps_and_summary) {
+    // Intervals exact in binary, so every expected value is exact.
+    tiny3d::frame_clock clock;
+    CHECK_EQ(clock.rolling_fps(), 0.0);  // nothing yet
+    CHECK(clock.tick(10.0).ok());        // the first tick only starts the clock
+    CHECK_EQ(clock.frame_count(), std::size_t(0));
+    for (double t : {10.03125, 10.0625, 10.125, 10.25}) CHECK(clock.tick(t).ok());
+    CHECK_EQ(clock.frame_count(), std::size_t(4));
+    CHECK(clock.frame_seconds() == (std::vector<double>{0.03125, 0.03125, 0.0625, 0.125}));
+    CHECK_EQ(clock.last_frame_seconds(), 0.125);
+    CHECK_EQ(clock.rolling_mean_seconds(), 0.0625);  // 4 frames in 0.25 s
+    CHECK_EQ(clock.rolling_fps(), 16.0);
+    const tiny3d::frame_summary s = clock.summary();
+    CHECK_EQ(s.frames, std::size_t(4));
+    CHECK_EQ(s.min_s, 0.03125);
+    CHECK_EQ(s.max_s, 0.125);
+    CHECK_EQ(s.median_s, 0.046875);  // even count: mean of 0.03125 and 0.0625
+    CHECK_EQ(s.total_s, 0.25);
+    CHECK_EQ(s.mean_s, 0.0625);
+    // A window of 2 sees the last two frames only: 2 / (0.0625 + 0.125).
+    tiny3d::frame_clock narrow(2);
+    for (double t : {10.0, 10.03125, 10.0625, 10.125, 10.25}) CHECK(narrow.tick(t).ok());
+    CHECK_NEAR(narrow.rolling_fps(), 2.0 / 0.1875, 1e-12);
+    CHECK_EQ(narrow.summary().median_s, 0.046875);  // the summary still covers every frame
+    // Odd count: the middle one.
+    CHECK(narrow.add_frame(1.0).ok());
+    CHECK_EQ(narrow.summary().median_s, 0.0625);
+    CHECK_EQ(narrow.summary().max_s, 1.0);
+}
+
+TEST(frame_clock_rolling_fps_follows_a_change_of_rate) {
+    // 100 frames at 30 fps, then 100 at 60 fps; timestamps from frame numbers (no drift).
+    tiny3d::frame_clock clock;  // window 60
+    clock.reserve(200);
+    const double *storage = clock.frame_seconds().data();
+    CHECK(clock.tick(0.0).ok());
+    for (int k = 1; k <= 100; ++k) CHECK(clock.tick(k / 30.0).ok());
+    CHECK_NEAR(clock.rolling_fps(), 30.0, 1e-9);
+    for (int k = 1; k <= 30; ++k) CHECK(clock.tick(100 / 30.0 + k / 60.0).ok());
+    // The window holds 30 frames of 1/30 s and 30 of 1/60 s: mean 0.025 s, 40 fps.
+    CHECK_NEAR(clock.rolling_mean_seconds(), 0.025, 1e-12);
+    CHECK_NEAR(clock.rolling_fps(), 40.0, 1e-9);
+    for (int k = 31; k <= 100; ++k) CHECK(clock.tick(100 / 30.0 + k / 60.0).ok());
+    CHECK_NEAR(clock.rolling_fps(), 60.0, 1e-9);
+    const tiny3d::frame_summary s = clock.summary();
+    CHECK_EQ(s.frames, std::size_t(200));
+    CHECK_NEAR(s.min_s, 1 / 60.0, 1e-12);
+    CHECK_NEAR(s.max_s, 1 / 30.0, 1e-12);
+    CHECK_NEAR(s.median_s, 0.5 * (1 / 60.0 + 1 / 30.0), 1e-12);  // 100 of each
+    CHECK_NEAR(s.total_s, 100 / 30.0 + 100 / 60.0, 1e-12);
+    CHECK_EQ(clock.frame_seconds().data(), storage);  // reserved: recording did not reallocate
+    CHECK_NEAR(tiny3d::frame_clock::fps(s.median_s), 40.0, 1e-9);
+}
+
+TEST(frame_clock_refuses_bad_times_and_resets) {
+    tiny3d::frame_clock clock;
+    CHECK(!clock.tick(std::nan("")).ok());
+    CHECK(clock.tick(5.0).ok());
+    const tiny3d::status back = clock.tick(4.5);  // time going backwards
+    CHECK(!back.ok() && back.message().find("before the previous") != std::string::npos);
+    CHECK(!clock.tick(INFINITY).ok());
+    CHECK_EQ(clock.frame_count(), std::size_t(0));  // nothing recorded by the refusals
+    CHECK(clock.tick(5.0).ok());                    // an equal timestamp: a frame of 0 s
+    CHECK_EQ(clock.frame_count(), std::size_t(1));
+    CHECK_EQ(clock.rolling_fps(), 0.0);  // all frames took 0 s: no rate
+    CHECK(!clock.add_frame(-0.001).ok());
+    CHECK(!clock.add_frame(INFINITY).ok());
+    CHECK(clock.add_frame(0.5).ok());
+    CHECK_EQ(clock.rolling_fps(), 4.0);  // 2 frames in 0.5 s
+    clock.reset();
+    CHECK_EQ(clock.frame_count(), std::size_t(0));
+    CHECK_EQ(clock.summary().frames, std::size_t(0));
+    CHECK_EQ(clock.summary().max_s, 0.0);
+    CHECK(clock.tick(1.0).ok());  // after reset the first tick starts the clock again
+    CHECK_EQ(clock.frame_count(), std::size_t(0));
+    CHECK_EQ(tiny3d::frame_clock(0).window(), std::size_t(1));
+    CHECK_EQ(tiny3d::frame_clock::fps(0.0), 0.0);
+}
+
 TEST(orientation_slerp_takes_the_short_way_and_stays_unit) {
     // Keys: identity and a 160° turn about z given as its NEGATED quaternion (the same
     // rotation). The short way turns +80° at the midpoint, not −100°.

@@ -346,12 +346,15 @@ std::string frame_path(const common_options &o, int frame, const std::string &pr
 
 progress::progress(std::string name, int total)
     : name_(std::move(name)), total_(total), terminal_(::isatty(STDOUT_FILENO) == 1),
-      began_(std::chrono::steady_clock::now()) {}
+      began_s_(tiny3d::frame_clock::steady_seconds()) {
+    clock_.reserve(std::size_t(std::max(total, 0)));
+}
 
-void progress::start() { t0_ = std::chrono::steady_clock::now(); }
+void progress::start() { frame_began_s_ = tiny3d::frame_clock::steady_seconds(); }
 
 void progress::stop() {
-    ms_.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0_).count());
+    // A steady clock never runs backwards, so the difference is a valid frame time.
+    (void)clock_.add_frame(tiny3d::frame_clock::steady_seconds() - frame_began_s_);
 }
 
 void progress::report_written(const std::string &path) {
@@ -360,8 +363,9 @@ void progress::report_written(const std::string &path) {
         return;
     }
     // \033[K clears the rest of the line left by a longer previous one.
-    std::printf("\r%s: frame %zu/%d  %.2f ms  wrote %s\033[K", name_.c_str(), ms_.size(), total_,
-                ms_.empty() ? 0.0 : ms_.back(), path.c_str());
+    std::printf("\r%s: frame %zu/%d  %.2f ms (%.1f fps over the last %zu)  wrote %s\033[K", name_.c_str(),
+                clock_.frame_count(), total_, 1000.0 * clock_.last_frame_seconds(), clock_.rolling_fps(),
+                std::min(clock_.frame_count(), clock_.window()), path.c_str());
     std::fflush(stdout);
     line_open_ = true;
 }
@@ -382,16 +386,15 @@ void progress::finish() {
     if (line_open_) std::printf("\n");
     std::fflush(stdout);
     line_open_ = false;
-    if (ms_.empty()) return;
-    std::vector<double> s = ms_;
-    std::sort(s.begin(), s.end());
-    const double median = s.size() % 2 ? s[s.size() / 2] : 0.5 * (s[s.size() / 2 - 1] + s[s.size() / 2]);
-    const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - began_).count();
+    const tiny3d::frame_summary s = clock_.summary();
+    if (s.frames == 0) return;
+    using tiny3d::frame_clock;
+    const double total = frame_clock::steady_seconds() - began_s_;
     std::fprintf(stderr,
                  "%s: %zu frame%s in %.2f s (with saving); render ms per frame min %.2f / median %.2f / max %.2f "
                  "(%.1f / %.1f / %.1f fps)\n",
-                 name_.c_str(), s.size(), s.size() == 1 ? "" : "s", total, s.front(), median, s.back(), 1000.0 / s.front(), 1000.0 / median,
-                 1000.0 / s.back());
+                 name_.c_str(), s.frames, s.frames == 1 ? "" : "s", total, 1000.0 * s.min_s, 1000.0 * s.median_s,
+                 1000.0 * s.max_s, frame_clock::fps(s.min_s), frame_clock::fps(s.median_s), frame_clock::fps(s.max_s));
 }
 
 }  // namespace demo

@@ -24,11 +24,11 @@
 #ifndef TINY3D_DEMO_CLI_H
 #define TINY3D_DEMO_CLI_H
 
-#include <chrono>
 #include <functional>
 #include <string>
 #include <vector>
 
+#include "animation.h"
 #include "canvas.h"
 #include "math3d.h"
 #include "tiny3d_result.h"
@@ -154,15 +154,15 @@ public:
     void report_written(const std::string &path);
     // Ends the progress line and prints the summary (nothing when no frame was timed).
     void finish();
-    const std::vector<double> &milliseconds() const { return ms_; }
+    const tiny3d::frame_clock &clock() const { return clock_; }  // the render time of each frame
 
 private:
     std::string name_;
     int total_;
     bool terminal_;
     bool line_open_ = false;
-    std::chrono::steady_clock::time_point began_, t0_;
-    std::vector<double> ms_;
+    double began_s_, frame_began_s_ = 0.0;
+    tiny3d::frame_clock clock_;
 };
 
 }  // namespace demo
