@@ -26,6 +26,7 @@
 #include <new>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "tiny3d_result.h"
@@ -324,6 +325,26 @@ namespace tiny3d {
 // error names the path and the reason. Existing non-regular files (devices, FIFOs) are
 // written in place. Used by every image writer in the library.
 status write_file_atomic(const std::string &path, const void *data, std::size_t size);
+
+// The largest file read_file_bytes reads unless told otherwise: 2 GiB.
+inline constexpr std::uint64_t max_read_file_bytes = std::uint64_t(1) << 31;
+
+// Checks the first bytes of a file (up to read_file_probe_bytes, or the whole file if
+// shorter) before the rest is read; an error stops the read (e.g. a text loader refusing
+// NUL bytes, so a 500 MB file of zeros fails after 64 KiB, not after 500 MB).
+using file_probe = status (*)(std::string_view first_bytes, const std::string &path);
+inline constexpr std::size_t read_file_probe_bytes = std::size_t(1) << 16;
+
+// Reads a whole regular file into memory, the one file reader of the library (meshes,
+// PNM images, textures). The file is opened non-blocking and its type and size checked
+// with fstat BEFORE anything is read or allocated: a FIFO, a device (e.g. /dev/zero or a
+// symlink to it), a socket or a directory is refused ("… is a FIFO: expected a regular
+// file"), and a file above `max_bytes` fails at once with its size in the message (a 3 GB
+// sparse file costs no memory). `probe`, if given, judges the first bytes first. Errors
+// name the path and the reason; reading retries interrupted calls; a file that shrinks
+// while being read gives what was there.
+result<std::string> read_file_bytes(const std::string &path, std::uint64_t max_bytes = max_read_file_bytes,
+                                    file_probe probe = nullptr);
 
 }  // namespace tiny3d
 

@@ -5,9 +5,10 @@
 // face f uses corners face_start[f] .. face_start[f+1]−1, and corner k refers to
 // position indices[k]. Optional per-corner attributes (texture coordinates, normals,
 // as OBJ's v/vt/vn gives them) are parallel to `indices`, so nothing is duplicated for
-// seams. Edges (unique undirected pairs of position indices, each shared edge once) are
-// derived once from the faces by tiny3d::mesh_derive_edges. Faces are counter-clockwise
-// seen from outside (front facing).
+// seams. Free line segments that belong to no face (OBJ `l` polylines) are `lines`.
+// Edges (unique undirected pairs of position indices, each shared edge once) are derived
+// once from the faces and the lines by tiny3d::mesh_derive_edges. Faces are
+// counter-clockwise seen from outside (front facing).
 #ifndef TINY3D_MESH_H
 #define TINY3D_MESH_H
 
@@ -37,6 +38,7 @@ struct mesh {
     std::vector<vec2> corner_uvs;              // empty, or one per corner
     std::vector<vec3_t> corner_normals;        // empty, or one per corner
     std::vector<edge> edges;                   // derived: unique undirected edges
+    std::vector<edge> lines;                   // free segments (no face), a < b
 
     std::size_t face_count() const { return face_start.empty() ? 0 : face_start.size() - 1; }
     std::uint32_t face_size(std::size_t f) const { return face_start[f + 1] - face_start[f]; }
@@ -50,21 +52,24 @@ struct mesh {
 // A triangle as three corner indices (into mesh::indices and the corner attributes).
 using corner_triangle = std::array<std::uint32_t, 3>;
 
-// Fan-triangulates every face (corner k0, k_i, k_{i+1}), keeping the winding.
-inline std::vector<corner_triangle> mesh_triangles(const mesh &m) {
-    std::vector<corner_triangle> tris;
-    for (std::size_t f = 0; f < m.face_count(); ++f) {
-        const std::uint32_t s = m.face_start[f], e = m.face_start[f + 1];
-        for (std::uint32_t k = s + 1; k + 1 < e; ++k) tris.push_back({s, k, k + 1});
-    }
-    return tris;
-}
+// Triangulates every face, keeping the winding; corner k_i of a face is its i-th corner.
+// Triangles are listed face by face, n − 2 for a face of n corners (none for a face of
+// fewer than 3). Convex faces (the usual triangles and quads) give the fan
+// (k0, k_i, k_{i+1}). Other faces — concave, or non-planar ones whose fan folds — are
+// triangulated by ear clipping in the face's best plane (the projection along its Newell
+// normal), so every triangle lies inside the polygon and their areas sum to the polygon's
+// (the shoelace area for planar faces). Collinear and repeated corners give zero-area
+// triangles. A self-intersecting face, or a non-convex one of more than
+// mesh_ear_clip_max_corners corners (ear clipping costs O(n²)), falls back to the fan.
+// Out-of-range indices are not checked here (see mesh_validate).
+inline constexpr std::uint32_t mesh_ear_clip_max_corners = 4096;
+std::vector<corner_triangle> mesh_triangles(const mesh &m);
 
 // ---- mesh utilities (src/mesh/mesh.cpp) -------------------------------------------
 
-// Derives m.edges from the faces: every unique undirected edge once, stored with a < b and
-// sorted by (a, b). Sort-based, O(n log n) in the corner count. Degenerate corner pairs
-// (a == b, e.g. a repeated index) give no edge. Replaces any previous m.edges.
+// Derives m.edges from the faces and m.lines: every unique undirected edge once, stored
+// with a < b and sorted by (a, b). Sort-based, O(n log n) in the corner count. Degenerate
+// corner pairs (a == b, e.g. a repeated index) give no edge. Replaces any previous m.edges.
 void mesh_derive_edges(mesh &m);
 
 // Unit normal of every face by Newell's method (the polygon's vector area, exact for planar
@@ -107,7 +112,7 @@ bounding_sphere mesh_bounding_sphere(const mesh &m);
 
 // Checks the mesh's invariants: face_start starts at 0, is non-decreasing and ends at
 // indices.size(); every face has ≥ 3 corners; every index < positions.size(); corner
-// attribute arrays are empty or one per corner; every edge index in range. The error says
+// attribute arrays are empty or one per corner; every edge and line index in range. The error says
 // which face / corner / edge is wrong.
 status mesh_validate(const mesh &m);
 

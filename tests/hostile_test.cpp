@@ -20,6 +20,7 @@
 
 #include "alloc_tracker.h"
 #include "harness.h"
+#include "temp_folder.h"
 #include "tiny3d.h"
 
 namespace {
@@ -61,29 +62,6 @@ std::size_t largest_allocation_during(Parse &&parse) {
     parse();
     return alloc_tracker::largest();
 }
-
-// A private temporary folder, removed (with the files the test names) at the end.
-struct temp_folder {
-    std::string path;
-    std::vector<std::string> files;
-    temp_folder() {
-        char name[] = "/tmp/tiny3d_hostile_XXXXXX";
-        path = ::mkdtemp(name) ? name : "/tmp";
-    }
-    std::string file(const std::string &leaf, const std::string &bytes) {
-        const std::string p = path + "/" + leaf;
-        if (std::FILE *f = std::fopen(p.c_str(), "wb")) {
-            std::fwrite(bytes.data(), 1, bytes.size(), f);
-            std::fclose(f);
-        }
-        files.push_back(p);
-        return p;
-    }
-    ~temp_folder() {
-        for (const std::string &f : files) std::remove(f.c_str());
-        ::rmdir(path.c_str());
-    }
-};
 
 // The perspective used by the renderer cases: 90° vertical field of view, near 1, far 100.
 mat4_t projection() { return tiny3d::mat4_perspective(float(M_PI / 2), 1.0f, 1.0f, 100.0f); }
@@ -145,7 +123,7 @@ TEST(obj_indices_beyond_64_bits_and_out_of_range_are_errors) {
         "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -9223372036854775808\n",
         "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99999999999999999999999\n",
         "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 0\n",
-        "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/9 2 3\n",
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/9 2 3\n",
         "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2\n",
         "v 0 0 nan\n",
         "v 0 0 1e39\n",

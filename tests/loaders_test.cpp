@@ -159,17 +159,18 @@ TEST(obj_file_on_disk) {
 
 TEST(obj_malformed_files_name_the_line) {
     EXPECT_LINE_ERROR(parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n", "a.obj"), 4, "out of range");
-    EXPECT_LINE_ERROR(parse_obj("v 0 0 0\nv 1 0 0\n\nf 1 2 0\n", "a.obj"), 4, "bad face corner");
+    EXPECT_LINE_ERROR(parse_obj("v 0 0 0\nv 1 0 0\n\nf 1 2 0\n", "a.obj"), 4, "index 0 in '0': OBJ indices start at 1");
     EXPECT_LINE_ERROR(parse_obj("v 0 0 0\nv 1 0 0\nf 1 2\n", "a.obj"), 3, "2 corners");
     EXPECT_LINE_ERROR(parse_obj("v 0 0 0\nv 1 x 0\n", "a.obj"), 2, "bad number");
     EXPECT_LINE_ERROR(parse_obj("v 0 0\n", "a.obj"), 1, "needs 3");
     EXPECT_LINE_ERROR(parse_obj("v nan 0 0\n", "a.obj"), 1, "bad number");
     EXPECT_LINE_ERROR(parse_obj("v 1e39 0 0\n", "a.obj"), 1, "bad number");
     EXPECT_LINE_ERROR(parse_obj("v 0 0 0\nf -1 -2 -3\n", "a.obj"), 2, "before the first");
-    EXPECT_LINE_ERROR(parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\n# c\nf 1/1 2/1 3/1\n", "a.obj"), 5, "texture index");
-    EXPECT_LINE_ERROR(parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1//2 2//1 3//1\n", "a.obj"), 4, "normal index");
+    EXPECT_LINE_ERROR(parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\n# c\nf 1/1 2/1 3/2\n", "a.obj"), 6,
+                      "texture index 2 out of range: the file has 1 texture coordinate");
+    EXPECT_LINE_ERROR(parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//2 2//1 3//1\n", "a.obj"), 5, "normal index 2");
     EXPECT_LINE_ERROR(parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/1/1/1 2 3\n", "a.obj"), 4, "bad face corner");
-    EXPECT_LINE_ERROR(parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/ 2 3\n", "a.obj"), 4, "bad face corner");
+    EXPECT_LINE_ERROR(parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf /1 2 3\n", "a.obj"), 4, "position index is missing");
     EXPECT_LINE_ERROR(parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99999999999999999999\n", "a.obj"), 4,
                       "bad face corner");
     const result<mesh> r = parse_obj("v 0 0 0\nf 1 1 2\n", "named.obj");
@@ -218,7 +219,9 @@ TEST(ply_malformed_ascii_names_the_line) {
     EXPECT_LINE_ERROR(parse_ply(head + "0 0 0\n1 0 0\n0 1 0\n2 0 1\n", "a.ply"), 13, "2 corners");
     EXPECT_LINE_ERROR(parse_ply(head + "0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n", "a.ply"), 13, "out of range");
     EXPECT_LINE_ERROR(parse_ply(head + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n7\n", "a.ply"), 14, "after the last element");
-    EXPECT_LINE_ERROR(parse_ply(head + "0 0 0\n1 0 0\n0 1 0\n3 0 1\n", "a.ply"), 14, "end of file");
+    EXPECT_LINE_ERROR(parse_ply(head + "0 0 0\n1 0 0\n0 1 0\n3 0 1\n", "a.ply"), 13, "line has 3 values, the header declares 4");
+    EXPECT_LINE_ERROR(parse_ply(head + "0.0000000 0 0\n1.0000000 0 0\n", "a.ply"), 12,
+                      "unexpected end of file: element 'vertex' has 3 entries, the data ends after 2");
     EXPECT_LINE_ERROR(parse_ply(head + "0 0 0\n1 inf 0\n0 1 0\n3 0 1 2\n", "a.ply"), 11, "bad number");
     EXPECT_LINE_ERROR(parse_ply("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nend_header\n1 2\n",
                                 "a.ply"),

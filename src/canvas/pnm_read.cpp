@@ -1,10 +1,5 @@
 // pnm_read.cpp — reading PGM (P2, P5) and PPM (P3, P6, converted to grey) into a canvas.
-#include <sys/stat.h>
-
-#include <cerrno>
 #include <cstdint>
-#include <cstdio>
-#include <cstring>
 #include <string>
 
 #include "canvas.h"
@@ -86,35 +81,18 @@ private:
     long line_ = 1;
 };
 
-result<std::string> read_whole_file(const std::string &path) {
-    std::FILE *f = std::fopen(path.c_str(), "rb");
-    if (!f) return error{path, 0, -1, std::string("cannot open: ") + std::strerror(errno)};
-    struct stat st {};
-    if (::fstat(fileno(f), &st) != 0 || S_ISDIR(st.st_mode)) {
-        std::fclose(f);
-        return error{path, 0, -1, "cannot read: not a regular file"};
-    }
-    if (st.st_size > kMaxPnmBytes) {
-        std::fclose(f);
-        return error{path, 0, -1, "file too large for a canvas (" + std::to_string(st.st_size) + " bytes)"};
-    }
-    std::string bytes(std::size_t(st.st_size), '\0');
-    const std::size_t got = bytes.empty() ? 0 : std::fread(bytes.data(), 1, bytes.size(), f);
-    const bool failed = std::ferror(f) != 0;
-    std::fclose(f);
-    if (failed) return error{path, 0, -1, "read error"};
-    bytes.resize(got);
-    return bytes;
+// The magic number, checked before the rest of the file is read.
+status probe_magic(std::string_view b, const std::string &path) {
+    if (b.size() >= 2 && b[0] == 'P' && (b[1] == '2' || b[1] == '3' || b[1] == '5' || b[1] == '6')) return {};
+    return error{path, 1, -1, "not a PGM/PPM file: the magic number must be P2, P3, P5 or P6"};
 }
 
 }  // namespace
 
 result<canvas_ptr> load_pgm(const std::string &path) {
-    result<std::string> file = read_whole_file(path);
+    result<std::string> file = read_file_bytes(path, kMaxPnmBytes, probe_magic);
     if (!file) return file.err();
     const std::string &bytes = *file;
-    if (bytes.size() < 2 || bytes[0] != 'P' || (bytes[1] != '2' && bytes[1] != '3' && bytes[1] != '5' && bytes[1] != '6'))
-        return error{path, 1, -1, "not a PGM/PPM file: the magic number must be P2, P3, P5 or P6"};
     const bool binary = bytes[1] == '5' || bytes[1] == '6';
     const int channels = (bytes[1] == '3' || bytes[1] == '6') ? 3 : 1;
 

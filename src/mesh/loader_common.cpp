@@ -1,12 +1,10 @@
-// loader_common.cpp — file reading, number parsing and dispatch shared by the loaders.
+// loader_common.cpp — number parsing, text checks, warnings and file dispatch shared by
+// the loaders.
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <cstring>
-#include <memory>
 
 #include "loader_util.h"
 #include "loaders.h"
@@ -31,7 +29,22 @@ bool parse_whole(std::string_view token, T &out) {
     return ec == std::errc() && ptr == last;
 }
 
+constexpr std::string_view utf8_bom = "\xEF\xBB\xBF";
+
+// 1-based line of byte `offset` (LF, CRLF and CR alone each end a line).
+long line_of(std::string_view text, std::size_t offset) {
+    line_splitter lines(text);
+    std::string_view line;
+    while (lines.next(line) && lines.offset() <= offset) {
+    }
+    return lines.line_number();
+}
+
 }  // namespace
+
+std::string count_of(std::uint64_t n, const char *singular, const char *plural) {
+    return std::to_string(n) + " " + (n == 1 ? singular : plural);
+}
 
 bool parse_finite_float(std::string_view token, float &out) {
     return parse_whole(token, out) && std::isfinite(out);
@@ -39,16 +52,8 @@ bool parse_finite_float(std::string_view token, float &out) {
 bool parse_finite_double(std::string_view token, double &out) {
     return parse_whole(token, out) && std::isfinite(out);
 }
+bool parse_any_double(std::string_view token, double &out) { return parse_whole(token, out); }
 bool parse_int64(std::string_view token, long long &out) { return parse_whole(token, out); }
-
-bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' || c == '\f'; }
-
-std::string_view next_token(std::string_view line, std::size_t &pos) {
-    while (pos < line.size() && is_space(line[pos])) ++pos;
-    const std::size_t start = pos;
-    while (pos < line.size() && !is_space(line[pos])) ++pos;
-    return line.substr(start, pos - start);
-}
 
 std::string quote(std::string_view token) {
     constexpr std::size_t max_shown = 32;
@@ -58,45 +63,94 @@ std::string quote(std::string_view token) {
     return s + "'";
 }
 
+std::string_view skip_utf8_bom(std::string_view text) {
+    return text.substr(0, utf8_bom.size()) == utf8_bom ? text.substr(utf8_bom.size()) : text;
+}
+
+status check_text(std::string_view text, const std::string &name, const char *what) {
+    // UTF-16: a byte-order mark (FF FE / FE FF), or ASCII text with every other byte 0.
+    const bool bom16 = text.size() >= 2 && ((text[0] == '\xFF' && text[1] == '\xFE') || (text[0] == '\xFE' && text[1] == '\xFF'));
+    const bool zero_pairs = text.size() >= 2 && ((text[0] == '\0') != (text[1] == '\0'));
+    if (bom16 || zero_pairs) return at_line(name, 1, std::string("UTF-16 text: ") + what + " must be UTF-8 (or ASCII); save it as UTF-8");
+    if (const void *nul = std::memchr(text.data(), '\0', text.size()))
+        return at_line(name, line_of(text, std::size_t(static_cast<const char *>(nul) - text.data())),
+                       std::string("NUL byte in text: ") + what + " is text (is this a binary file?)");
+    return {};
+}
+
+status diagnostics::warn(error w, std::string_view kind) {
+    if (options_.strict) return w;
+    group *g = nullptr;
+    if (!kind.empty()) {
+        const auto [it, fresh] = groups_.try_emplace(std::string(kind), group{SIZE_MAX, 0});
+        if (!fresh) {
+            ++it->second.repeats;
+            return {};
+        }
+        g = &it->second;
+    }
+    if (warnings_.size() >= options_.max_warnings) {
+        ++not_listed_;
+        return {};
+    }
+    if (g) g->listed = warnings_.size();
+    warnings_.push_back(std::move(w));
+    return {};
+}
+
+loaded_mesh diagnostics::finish(mesh &&m) {
+    for (const auto &[kind, g] : groups_)
+        if (g.listed != SIZE_MAX && g.repeats > 0)
+            warnings_[g.listed].reason += " (" + std::to_string(g.repeats) + " more like it)";
+    loaded_mesh out{std::move(m), std::move(warnings_), not_listed_};
+    return out;
+}
+
 }  // namespace loader
 
-result<std::string> read_file_bytes(const std::string &path) {
-    constexpr long long max_file_bytes = 1LL << 31;
-    auto fail = [&](const std::string &why) { return error{path, 0, -1, why}; };
-    std::unique_ptr<std::FILE, int (*)(std::FILE *)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
-    if (!f) return fail(std::string("cannot open: ") + std::strerror(errno));
-    std::string bytes;
-    char chunk[1 << 16];
-    for (;;) {
-        const std::size_t n = std::fread(chunk, 1, sizeof chunk, f.get());
-        if (n > 0) {
-            if (static_cast<long long>(bytes.size() + n) > max_file_bytes) return fail("file larger than 2 GiB");
-            bytes.append(chunk, n);
-        }
-        if (n < sizeof chunk) break;
-    }
-    if (std::ferror(f.get())) return fail(std::string("read error: ") + std::strerror(errno));
-    return bytes;
+namespace {
+
+// The mesh of a load, warnings dropped.
+result<mesh> geometry_of(result<loaded_mesh> &&r) {
+    if (!r) return r.err();
+    return std::move(r.value().geometry);
 }
 
-result<mesh> load_obj(const std::string &path) {
-    result<std::string> bytes = read_file_bytes(path);
+// Checks a text file's first bytes before the rest is read.
+status probe_obj(std::string_view first_bytes, const std::string &path) {
+    return loader::check_text(first_bytes, path, "an OBJ file");
+}
+status probe_ply(std::string_view first_bytes, const std::string &path) {
+    if (first_bytes.substr(0, 3) == "ply" && (first_bytes.size() == 3 || loader::is_space(first_bytes[3]))) return {};
+    return loader::at_line(path, 1, "not a PLY file (its first line must be 'ply')");
+}
+
+}  // namespace
+
+result<mesh> parse_obj(std::string_view text, const std::string &name) { return geometry_of(parse_obj(text, name, {})); }
+result<mesh> parse_ply(std::string_view bytes, const std::string &name) { return geometry_of(parse_ply(bytes, name, {})); }
+
+result<loaded_mesh> load_obj(const std::string &path, const load_options &options) {
+    result<std::string> bytes = read_file_bytes(path, max_read_file_bytes, probe_obj);
     if (!bytes) return bytes.err();
-    return parse_obj(bytes.value(), path);
+    return parse_obj(bytes.value(), path, options);
 }
+result<mesh> load_obj(const std::string &path) { return geometry_of(load_obj(path, {})); }
 
-result<mesh> load_ply(const std::string &path) {
-    result<std::string> bytes = read_file_bytes(path);
+result<loaded_mesh> load_ply(const std::string &path, const load_options &options) {
+    result<std::string> bytes = read_file_bytes(path, max_read_file_bytes, probe_ply);
     if (!bytes) return bytes.err();
-    return parse_ply(bytes.value(), path);
+    return parse_ply(bytes.value(), path, options);
 }
+result<mesh> load_ply(const std::string &path) { return geometry_of(load_ply(path, {})); }
 
-result<mesh> load_mesh(const std::string &path) {
+result<loaded_mesh> load_mesh(const std::string &path, const load_options &options) {
     std::string ext = path.size() >= 4 ? path.substr(path.size() - 4) : std::string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    if (ext == ".obj") return load_obj(path);
-    if (ext == ".ply") return load_ply(path);
-    return error{path, 0, -1, "unknown mesh format (expected a .obj or .ply file)"};
+    if (ext == ".obj") return load_obj(path, options);
+    if (ext == ".ply") return load_ply(path, options);
+    return error{path, 0, -1, "unknown mesh format: expected a file ending in .obj or .ply"};
 }
+result<mesh> load_mesh(const std::string &path) { return geometry_of(load_mesh(path, {})); }
 
 }  // namespace tiny3d

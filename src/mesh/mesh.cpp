@@ -1,5 +1,5 @@
 // mesh.cpp — mesh utilities: unique edges, face / vertex normals, edge adjacency, bounds,
-// validation. See include/mesh.h.
+// validation. See include/mesh.h. Triangulation: triangulate.cpp.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -7,6 +7,7 @@
 #include <string>
 
 #include "mesh.h"
+#include "mesh_internal.h"
 
 namespace tiny3d {
 
@@ -33,12 +34,6 @@ vec3_t unit_or_zero(vec3_t v) {
 
 bool finite3(vec3_t v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-bool face_in_range(const mesh &m, std::size_t f) {
-    for (std::uint32_t k = m.face_start[f]; k < m.face_start[f + 1]; ++k)
-        if (m.indices[k] >= m.positions.size()) return false;
-    return true;
-}
-
 // Calls fn(a, b) for every corner pair (k, k+1 wrapping) of face f.
 template <class Fn>
 void for_each_face_edge(const mesh &m, std::size_t f, Fn &&fn) {
@@ -48,13 +43,35 @@ void for_each_face_edge(const mesh &m, std::size_t f, Fn &&fn) {
 
 }  // namespace
 
+std::array<double, 3> newell_vector(const mesh &m, std::size_t f) {
+    // Newell: n = Σ (p_k × p_{k+1}) is twice the polygon's vector area. Summed in double:
+    // products of float coordinates never overflow or underflow there (1e30·1e30 and
+    // 1e-30·1e-30 both fit), so huge and tiny faces keep their normal.
+    double sx = 0.0, sy = 0.0, sz = 0.0;
+    for_each_face_edge(m, f, [&](std::uint32_t a, std::uint32_t b) {
+        const vec3_t &p = m.positions[a], &q = m.positions[b];
+        sx += double(p.y) * q.z - double(p.z) * q.y;
+        sy += double(p.z) * q.x - double(p.x) * q.z;
+        sz += double(p.x) * q.y - double(p.y) * q.x;
+    });
+    return {sx, sy, sz};
+}
+
+bool face_in_range(const mesh &m, std::size_t f) {
+    for (std::uint32_t k = m.face_start[f]; k < m.face_start[f + 1]; ++k)
+        if (m.indices[k] >= m.positions.size()) return false;
+    return true;
+}
+
 void mesh_derive_edges(mesh &m) {
     std::vector<std::uint64_t> keys;
-    keys.reserve(m.indices.size());
+    keys.reserve(m.indices.size() + m.lines.size());
     for (std::size_t f = 0; f < m.face_count(); ++f)
         for_each_face_edge(m, f, [&](std::uint32_t a, std::uint32_t b) {
             if (a != b) keys.push_back(edge_key(a, b));
         });
+    for (const edge &l : m.lines)
+        if (l.a != l.b) keys.push_back(edge_key(l.a, l.b));
     std::sort(keys.begin(), keys.end());
     keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
     m.edges.resize(keys.size());
@@ -66,18 +83,9 @@ std::vector<vec3_t> mesh_face_normals(const mesh &m) {
     std::vector<vec3_t> normals(m.face_count(), vec3_t{0.0f, 0.0f, 0.0f});
     for (std::size_t f = 0; f < m.face_count(); ++f) {
         if (!face_in_range(m, f)) continue;
-        // Newell: n = Σ (p_k × p_{k+1}) / 2 is the polygon's vector area. Summed in double:
-        // products of float coordinates never overflow or underflow there (1e30·1e30 and
-        // 1e-30·1e-30 both fit), so huge and tiny faces keep their normal.
-        double sx = 0.0, sy = 0.0, sz = 0.0;
-        for_each_face_edge(m, f, [&](std::uint32_t a, std::uint32_t b) {
-            const vec3_t &p = m.positions[a], &q = m.positions[b];
-            sx += double(p.y) * q.z - double(p.z) * q.y;
-            sy += double(p.z) * q.x - double(p.x) * q.z;
-            sz += double(p.x) * q.y - double(p.y) * q.x;
-        });
-        const double len = std::sqrt(sx * sx + sy * sy + sz * sz);
-        if (len > 0.0 && std::isfinite(len)) normals[f] = {float(sx / len), float(sy / len), float(sz / len)};
+        const std::array<double, 3> n = newell_vector(m, f);
+        const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        if (len > 0.0 && std::isfinite(len)) normals[f] = {float(n[0] / len), float(n[1] / len), float(n[2] / len)};
     }
     return normals;
 }
@@ -187,6 +195,9 @@ status mesh_validate(const mesh &m) {
     for (std::size_t e = 0; e < m.edges.size(); ++e)
         if (m.edges[e].a >= m.positions.size() || m.edges[e].b >= m.positions.size())
             return fail("mesh: edge " + std::to_string(e) + " refers to a position out of range");
+    for (std::size_t l = 0; l < m.lines.size(); ++l)
+        if (m.lines[l].a >= m.positions.size() || m.lines[l].b >= m.positions.size())
+            return fail("mesh: line " + std::to_string(l) + " refers to a position out of range");
     return {};
 }
 
