@@ -3,6 +3,7 @@
 #   make demo     build and run every demo, frames under build/frames/<demo>/
 #   make test     build and run every test, then again under ASan + UBSan
 #   make bench    speed-vs-accuracy benchmarks, CSV + charts under build/bench/
+#   make install  headers, libtiny3d.a and tiny3d.pc under PREFIX (default /usr/local), DESTDIR honoured
 #   make clean
 # BUILD=dir puts everything in another folder (several checkouts or people at once).
 
@@ -155,6 +156,32 @@ $(BUILD)/fuzz/fuzz_%: tests/fuzz/fuzz_%.cpp $(BUILD)/fuzz/libtiny3d.a
 .PHONY: fuzz
 fuzz: $(FUZZ_BINS)
 	bash tests/fuzz/run_fuzz.sh $(BUILD) $(FUZZ_SECONDS) $(FUZZ_BINS)
+
+# ---- install: headers, libtiny3d.a and the pkg-config file tiny3d.pc ----
+#   make install [PREFIX=/usr/local] [DESTDIR=staging-root]    (and make uninstall)
+# Headers go to $(INCLUDEDIR)/tiny3d/ (compile with -I that folder: #include "tiny3d.h"),
+# the library to $(LIBDIR), tiny3d.pc to $(PKGCONFIGDIR). The .pc names the final paths
+# (PREFIX); DESTDIR only prefixes where the files are copied (packaging, staged installs).
+PREFIX       ?= /usr/local
+LIBDIR       ?= $(PREFIX)/lib
+INCLUDEDIR   ?= $(PREFIX)/include
+PKGCONFIGDIR ?= $(LIBDIR)/pkgconfig
+TINY3D_VERSION := 0.9.0
+PUBLIC_HEADERS := $(patsubst include/%,%,$(sort $(shell find include -name '*.h')))
+
+.PHONY: install uninstall
+install: $(LIB)
+	install -d $(DESTDIR)$(INCLUDEDIR)/tiny3d $(DESTDIR)$(LIBDIR) $(DESTDIR)$(PKGCONFIGDIR)
+	for h in $(PUBLIC_HEADERS); do install -D -m 644 include/$$h $(DESTDIR)$(INCLUDEDIR)/tiny3d/$$h || exit 1; done
+	install -m 644 $(LIB) $(DESTDIR)$(LIBDIR)/libtiny3d.a
+	printf '%s\n' 'prefix=$(PREFIX)' 'libdir=$(LIBDIR)' 'includedir=$(INCLUDEDIR)' '' \
+	  'Name: tiny3d' 'Description: libtiny3d, a small C++20 software 3D renderer (static library)' \
+	  'Version: $(TINY3D_VERSION)' 'Cflags: -std=c++20 -I$${includedir}/tiny3d' \
+	  'Libs: -L$${libdir} -ltiny3d -pthread' > $(DESTDIR)$(PKGCONFIGDIR)/tiny3d.pc
+
+uninstall:
+	rm -rf $(DESTDIR)$(INCLUDEDIR)/tiny3d
+	rm -f $(DESTDIR)$(LIBDIR)/libtiny3d.a $(DESTDIR)$(PKGCONFIGDIR)/tiny3d.pc
 
 clean:
 	rm -rf $(BUILD)
