@@ -140,7 +140,8 @@ tiny3d::result<tiny3d::light_rig> make_lights(const settings &s, const camera &c
     return tiny3d::make_light_rig(lights, s.ambient);
 }
 
-int print_info(const settings &s, const tiny3d::mesh &m) {
+int print_info(const settings &s, const tiny3d::loaded_mesh &loaded) {
+    const tiny3d::mesh &m = loaded.geometry;
     const tiny3d::bounding_box box = tiny3d::mesh_bounding_box(m);
     const tiny3d::bounding_sphere sphere = tiny3d::mesh_bounding_sphere(m);
     std::printf("file       %s\n", s.path.c_str());
@@ -148,6 +149,7 @@ int print_info(const settings &s, const tiny3d::mesh &m) {
     std::printf("faces      %zu\n", m.face_count());
     std::printf("triangles  %zu\n", tiny3d::mesh_triangles(m).size());
     std::printf("edges      %zu\n", m.edges.size());
+    if (!m.lines.empty()) std::printf("lines      %zu (segments outside any face)\n", m.lines.size());
     std::printf("uvs        %s\n", m.corner_uvs.empty() ? "no" : "yes (per corner)");
     std::printf("normals    %s\n", m.corner_normals.empty() ? "no (computed from the faces)" : "yes (per corner)");
     if (m.positions.empty()) {
@@ -158,8 +160,10 @@ int print_info(const settings &s, const tiny3d::mesh &m) {
         std::printf("sphere     centre (%g, %g, %g)  radius %g\n", sphere.center.x, sphere.center.y, sphere.center.z,
                     sphere.radius);
     }
-    // Loader warnings: the loaders report none yet (hook: list them here once they do).
-    std::printf("warnings   none\n");
+    const std::size_t warnings = loaded.warnings.size() + loaded.warnings_not_listed;
+    std::printf("warnings   %s\n", warnings == 0 ? "none" : std::to_string(warnings).c_str());
+    for (const tiny3d::load_warning &w : loaded.warnings) std::printf("  %s\n", w.message().c_str());
+    if (loaded.warnings_not_listed > 0) std::printf("  (%zu more not listed)\n", loaded.warnings_not_listed);
     return 0;
 }
 
@@ -218,13 +222,19 @@ int main(int argc, char **argv) {
     if (const int status = cli.parse(argc, argv); status >= 0) return status;
     if (s.up_given && !(tiny3d::vec3_length(s.up) > 0.0f)) return cli.usage_error("--up must not be zero, got '0,0,0'");
     const demo::common_options &o = cli.common;
-    const bool edges_only = s.mode == "wireframe" || s.mode == "hidden-line";
-    if (edges_only && !s.texture_path.empty()) return cli.usage_error("--texture needs a filled --mode, not '" + s.mode + "'");
+    if ((s.mode == "wireframe" || s.mode == "hidden-line") && !s.texture_path.empty())
+        return cli.usage_error("--texture needs a filled --mode, not '" + s.mode + "'");
 
-    auto loaded = tiny3d::load_mesh(s.path);
+    auto loaded = tiny3d::load_mesh(s.path, tiny3d::load_options{});
     if (!loaded) return cli.fail(loaded.message());
-    const tiny3d::mesh &m = *loaded;
-    if (s.info) return print_info(s, m);
+    if (s.info) return print_info(s, *loaded);
+    for (const tiny3d::load_warning &w : loaded->warnings) std::fprintf(stderr, "render: warning: %s\n", w.message().c_str());
+    const tiny3d::mesh &m = loaded->geometry;
+    if (m.face_count() == 0 && !m.edges.empty() && s.mode != "wireframe") {
+        std::fprintf(stderr, "render: %s has lines but no faces: drawing them as a wireframe\n", s.path.c_str());
+        s.mode = "wireframe";
+    }
+    const bool edges_only = s.mode == "wireframe" || s.mode == "hidden-line";
 
     const tiny3d::bounding_sphere bounds = tiny3d::mesh_bounding_sphere(m);
     if (!(bounds.radius > 0.0f) || (edges_only ? m.edges.empty() : m.face_count() == 0))

@@ -179,7 +179,7 @@ TEST(hidden_line_leaves_out_the_back_face_that_wireframe_draws) {
     CHECK(std::max(hidden.at(104, 80), hidden.at(105, 80)) > 100);  // the front face's edge
 }
 
-TEST(info_prints_counts_and_bounds_and_renders_nothing) {
+TEST(info_prints_counts_bounds_and_warnings_and_renders_nothing) {
     if (!render_built()) return;
     temp_dir dir;
     const run_result r = render(dir, {cube_obj, "--info"});
@@ -191,6 +191,21 @@ TEST(info_prints_counts_and_bounds_and_renders_nothing) {
     const run_result ply = render(dir, {"tests/data/tetra_ascii.ply", "--info"});
     CHECK_EQ(ply.exit_code, 0);
     CHECK(ply.out.find("faces      4\n") != std::string::npos && ply.out.find("edges      6\n") != std::string::npos);
+    CHECK(ply.out.find("warnings   none\n") != std::string::npos);
+    // The loader's warnings, each with file and line; a lines-only file is drawn as a wireframe.
+    const std::string lines_obj = (dir.path / "lines.obj").string();
+    write_file(lines_obj, "v 0 0 0\nv 1 0 0\nv 1 1 0\nl 1 2 3 1\nfrobnicate 3\n");
+    const run_result warned = render(dir, {lines_obj, "--info"});
+    CHECK_EQ(warned.exit_code, 0);
+    CHECK_MSG(warned.out.find("warnings   1\n  " + lines_obj + ":5: ") != std::string::npos, warned.out);
+    CHECK(warned.out.find("lines      3") != std::string::npos);
+    const run_result drawn = render(dir, {lines_obj, "--turntable", "1", "--size", "32x32"});
+    CHECK_MSG(drawn.exit_code == 0, drawn.err);
+    CHECK(drawn.err.find(lines_obj + ":5: ") != std::string::npos && drawn.err.find("wireframe") != std::string::npos);
+    const pgm_image img = frame(dir, "frame_000.pgm");
+    int lit = 0;
+    for (const unsigned char v : img.pixels) lit += v > background + 20;
+    CHECK(img.width == 32 && lit > 20);
 }
 
 TEST(bad_command_lines_exit_2_and_bad_files_exit_1_writing_nothing) {
