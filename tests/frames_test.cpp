@@ -71,6 +71,43 @@ TEST(render_in_two_halves_equals_one_run) {
     check_halves_equal_full_run("render", {"tests/data/cube_quads.obj", "--turntable", "6"});
 }
 
+TEST(lighting_in_two_halves_equals_one_run) { check_halves_equal_full_run("lighting", {"--fps", "10"}); }
+
+// The lighting demo places everything by time: frame k at f fps shows t = k / f, so
+// frame 10 at 30 fps and frame 20 at 60 fps (t = 1/3 s) are the same bytes, frame 10 at
+// 60 fps (t = 1/6 s) is not, and the loop's length in frames is period · fps.
+TEST(lighting_frames_are_placed_by_time) {
+    const std::string program = demo_path("lighting");
+    CHECK_MSG(fs::exists(program), program + " is not built");
+    if (!fs::exists(program)) return;
+    temp_dir at30, at60, logs;
+    const auto render = [&](const fs::path &out, const std::string &fps, const std::string &frames) {
+        const run_result r =
+            run(program, {"--out", out.string(), "--size", frame_size, "--fps", fps, "--frames", frames}, logs.path);
+        CHECK_MSG(r.exit_code == 0, "lighting --fps " + fps + " --frames " + frames + " failed: " + r.err);
+    };
+    render(at30.path, "30", "10:10");
+    render(at60.path, "60", "20:20");
+    render(at60.path, "60", "10:10");
+    const auto a = files_in(at30.path), b = files_in(at60.path);
+    CHECK(a.count("frame_010.pgm") && b.count("frame_020.pgm") && b.count("frame_010.pgm"));
+    if (!a.count("frame_010.pgm") || !b.count("frame_020.pgm") || !b.count("frame_010.pgm")) return;
+    CHECK(parse_pgm(a.at("frame_010.pgm")).width == 96);
+    CHECK_MSG(a.at("frame_010.pgm") == b.at("frame_020.pgm"), "frame 10 at 30 fps differs from frame 20 at 60 fps");
+    CHECK_MSG(a.at("frame_010.pgm") != b.at("frame_010.pgm"), "frame 10 is the same at 30 and 60 fps");
+    // A 4 s loop: 60 frames at 15 fps (0..59), 240 at 60 fps; a 2 s loop at 15 fps: 30.
+    temp_dir out;
+    CHECK_EQ(run(program, {"--out", out.path.string(), "--size", frame_size, "--fps", "15", "--frames", "59:59"}, logs.path)
+                 .exit_code,
+             0);
+    CHECK_EQ(run(program, {"--out", out.path.string(), "--fps", "15", "--frames", "60:60"}, logs.path).exit_code, 2);
+    CHECK_EQ(run(program, {"--out", out.path.string(), "--fps", "15", "--period", "2", "--frames", "30:30"}, logs.path)
+                 .exit_code,
+             2);
+    CHECK_EQ(run(program, {"--out", out.path.string(), "--fps", "60", "--frames", "240:240"}, logs.path).exit_code, 2);
+    CHECK_EQ(files_in(out.path).size(), std::size_t(1));  // only frame 59; the refused runs wrote nothing
+}
+
 TEST(bad_frame_ranges_fail_with_a_message) {
     const std::string program = demo_path("cube");
     CHECK_MSG(fs::exists(program), program + " is not built");
