@@ -17,12 +17,18 @@ constexpr float kThickness = 1.5f;
 constexpr int kStepDegrees = 15;
 constexpr double kPi = 3.14159265358979323846;
 
+// The report's spokes, computed as its main.c does (float radians from a double product,
+// cosf / sinf), so clock_lines.pgm is the report's image bit for bit. `offset` moves them
+// into another pixel convention: 0 for draw_line_f (integer coordinates are pixel
+// centres, the report's), 0.5 for the library's lines (pixel centres at +0.5), so both
+// images show the same spokes on the same pixels.
 template <class DrawLine>
-void draw_clock(canvas_t &canvas, DrawLine &&draw_line) {
-    const float cx = float(canvas.width) / 2, cy = float(canvas.height) / 2;  // as in the report
+void draw_clock(canvas_t &canvas, float offset, DrawLine &&draw_line) {
+    const float cx = float(canvas.width) / 2.0f, cy = float(canvas.height) / 2.0f;  // as in the report
     for (int degrees = 0; degrees < 360; degrees += kStepDegrees) {
-        const double angle = degrees * kPi / 180.0;  // radians in the library, degrees here
-        draw_line(&canvas, cx, cy, cx + kRadius * float(std::cos(angle)), cy + kRadius * float(std::sin(angle)));
+        const float rad = float(degrees * kPi / 180.0f);
+        const float x = cx + kRadius * std::cos(rad), y = cy + kRadius * std::sin(rad);
+        draw_line(&canvas, cx + offset, cy + offset, x + offset, y + offset);
     }
 }
 
@@ -47,12 +53,12 @@ int main(int argc, char **argv) {
 
     demo::progress timer("clock", 2);
     timer.start();
-    draw_clock(**faithful, [](canvas_t *c, float x0, float y0, float x1, float y1) {
+    draw_clock(**faithful, 0.0f, [](canvas_t *c, float x0, float y0, float x1, float y1) {
         draw_line_f(c, x0, y0, x1, y1, kThickness);
     });
     timer.stop();
     timer.start();
-    draw_clock(**fast, [](canvas_t *c, float x0, float y0, float x1, float y1) {
+    draw_clock(**fast, 0.5f, [](canvas_t *c, float x0, float y0, float x1, float y1) {
         tiny3d::draw_line_coverage(c, x0, y0, x1, y1, kThickness);
     });
     timer.stop();

@@ -1,12 +1,16 @@
 // soccer.cpp — the libtiny3d report's Task 3 demo: the soccer ball (truncated icosahedron,
-// 60 vertices, 90 edges) turning inside a circular viewport, 60 frames per full turn about
-// the y axis (frame k at angle 2π·k/60, so frame 60 would equal frame 0), 512×512 default.
-// Edges are clipped in clip space, then to the circle inscribed in the canvas (the
-// report's circular viewport), drawn far to near with anti-aliased coverage lines and
-// depth cueing (far edges dimmer); the circle's rim is drawn as a thin ring.
+// 60 vertices, 90 edges, from the report's generate_soccer_ball) turning inside a circular
+// viewport, 60 frames per full turn about the y axis (frame k at angle 2π·k/60, so frame 60
+// would equal frame 0), 512×512 default. By default edges are clipped in clip space, then
+// to the circle inscribed in the canvas (the report's circular viewport), drawn far to near
+// with anti-aliased coverage lines and depth cueing (far edges dimmer). With --report the
+// ball is drawn as the report's demo drew it: its 7-argument render_wireframe
+// (project_vertex, draw_line_f at thickness 1, the report's pixels). Either way the
+// circle's rim is drawn as a thin ring.
 //
-//   soccer [--out DIR] [--frames A:B] [--size WxH] [--png]   → DIR/frame_000.pgm … frame_059.pgm
+//   soccer [--out DIR] [--frames A:B] [--size WxH] [--report] [--png]   → DIR/frame_000.pgm … frame_059.pgm
 #include <cmath>
+#include <cstdint>
 #include <string>
 
 #include "common/demo_cli.h"
@@ -24,6 +28,14 @@ constexpr float kFarInk = 0.3f;         // depth cue: ink of the farthest edges
 constexpr float kRimThickness = 1.0f;
 constexpr float kRimInk = 0.5f;
 constexpr int kRimSegments = 180;
+
+// generate_soccer_ball's arrays, freed when it goes.
+struct report_ball {
+    vec3_t *vertices = nullptr;
+    int (*edges)[2] = nullptr;
+    int vertex_count = 0, edge_count = 0;
+    ~report_ball() { free_soccer_ball(vertices, edges); }
+};
 
 float frame_angle(int frame) { return float(2.0 * M_PI * (frame % kFramesPerTurn) / kFramesPerTurn); }
 
@@ -47,14 +59,24 @@ int main(int argc, char **argv) {
     demo::command_line cli("soccer", "",
                            "The libtiny3d report's Task 3: the soccer ball (truncated icosahedron, 90 edges) turning\n"
                            "inside a circular viewport, anti-aliased edges with depth cueing, 60 frames for one turn.");
+    bool report_lines = false;
     cli.add_sequence_options(kFramesPerTurn, kSize, kSize);
+    cli.flag("--report", report_lines, "draw the ball with the report's render_wireframe (draw_line_f, its pixels)");
     if (const int status = cli.parse(argc, argv); status >= 0) return status;
     const demo::common_options &o = cli.common;
     auto canvas = tiny3d::make_canvas(o.width, o.height);
     if (!canvas) return cli.fail(canvas.message());
     if (tiny3d::status s = demo::prepare_out_dir(o); !s) return cli.fail(s.message());
 
-    const tiny3d::mesh ball = tiny3d::make_soccer_ball(1.0f);
+    // The report's generator: 60 positions and 90 edges as plain arrays (the same ball as
+    // tiny3d::make_soccer_ball, whose faces the wireframe does not need).
+    report_ball arrays;
+    if (!generate_soccer_ball(&arrays.vertices, &arrays.vertex_count, &arrays.edges, &arrays.edge_count))
+        return cli.fail("out of memory");
+    tiny3d::mesh ball;
+    ball.positions.assign(arrays.vertices, arrays.vertices + arrays.vertex_count);
+    for (int i = 0; i < arrays.edge_count; ++i)
+        ball.edges.push_back({std::uint32_t(arrays.edges[i][0]), std::uint32_t(arrays.edges[i][1])});
     const tiny3d::bounding_sphere bounds = tiny3d::mesh_bounding_sphere(ball);
     const mat4_t proj = tiny3d::mat4_perspective(kFovY, float(o.width) / float(o.height), 0.1f, 100.0f);
     // Distance at which the bounding sphere's silhouette (half-angle asin(R/d)) spans
@@ -76,8 +98,12 @@ int main(int argc, char **argv) {
         canvas_clear(canvas->get(), 0.0f);
         const mat4_t model = mat4_multiply(mat4_translate(0, 0, -distance),
                                            mat4_multiply(mat4_rotate_xyz(kTilt, 0, 0), tiny3d::mat4_rotate_y(frame_angle(frame))));
-        if (tiny3d::status s = tiny3d::render_wireframe(**canvas, ball, mat4_multiply(proj, model), options, workspace); !s)
+        if (report_lines) {
+            render_wireframe(canvas->get(), arrays.vertices, arrays.vertex_count, arrays.edges, arrays.edge_count, model, proj);
+        } else if (tiny3d::status s = tiny3d::render_wireframe(**canvas, ball, mat4_multiply(proj, model), options, workspace);
+                   !s) {
             return cli.fail(s.message());
+        }
         draw_rim(**canvas);
         timer.stop();
         if (tiny3d::status s = timer.save(**canvas, demo::frame_path(o, frame), o.png); !s) return cli.fail(s.message());

@@ -60,6 +60,7 @@ void check_halves_equal_full_run(const std::string &demo, const std::vector<std:
 
 TEST(cube_in_two_halves_equals_one_run) { check_halves_equal_full_run("cube", {}); }
 TEST(soccer_in_two_halves_equals_one_run) { check_halves_equal_full_run("soccer", {}); }
+TEST(soccer_report_lines_in_two_halves_equals_one_run) { check_halves_equal_full_run("soccer", {"--report"}); }
 TEST(wireframe_in_two_halves_equals_one_run) { check_halves_equal_full_run("wireframe", {"tests/data/cube_quads.obj"}); }
 TEST(wireframe_tabulated_in_two_halves_equals_one_run) {
     check_halves_equal_full_run("wireframe", {"tests/data/cube_quads.obj", "--lines", "tabulated"});

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "harness.h"
+#include "program_runner.h"
 #include "renderer.h"
 
 namespace {
@@ -189,6 +190,41 @@ TEST(the_reports_clock_equals_the_reports_bit_for_bit) {
     CHECK(ink(r) > 24 * 200 * 2.0);  // 24 spokes of 200 px, ≥ 2 px of ink per px of length
     // The centre pixel (256, 256) is where every spoke starts: full.
     CHECK_EQ(c->pixels[256][256], 1.0f);
+}
+
+// The clock demo's clock_lines.pgm is the report's clock_lines.pgm: the transcription's
+// image, written as 8-bit round(v · 255), byte for byte (build/demo/clock, as make test
+// builds the demos first).
+TEST(the_clock_demo_writes_the_reports_image) {
+    using namespace program_runner;
+    const std::string program = demo_path("clock");
+    CHECK_MSG(fs::exists(program), program + " is not built (make test builds the demos first)");
+    if (!fs::exists(program)) return;
+    temp_dir out, logs;
+    const run_result r = run(program, {"--out", out.path.string()}, logs.path);
+    CHECK_MSG(r.exit_code == 0, "clock failed: " + r.err);
+    const pgm_image img = parse_pgm(file_bytes(out.path / "clock_lines.pgm"));
+    CHECK_EQ(img.width, 512);
+    CHECK_EQ(img.height, 512);
+    if (img.width != 512 || img.height != 512) return;
+    report::canvas expected(512, 512);
+    report::clock_lines(&expected, 512, 512, report::draw_line_f);
+    long differing = 0;
+    for (std::size_t i = 0; i < expected.data.size(); ++i) {
+        const float v = expected.data[i];  // 0..1: the report clamps at 1, nothing is negative
+        differing += img.pixels[i] != (unsigned char)std::lround(v * 255.0f);
+    }
+    CHECK_EQ(differing, 0L);
+    // The exact-coverage image shows the same spokes on the same pixels: its ink centroid
+    // is the canvas centre (256.5, 256.5 in the library's coordinates = pixel 256's centre).
+    const pgm_image fast = parse_pgm(file_bytes(out.path / "clock_lines_fast.pgm"));
+    CHECK_EQ(fast.width, 512);
+    if (fast.width != 512) return;
+    double sum = 0, sx = 0, sy = 0;
+    for (int y = 0; y < 512; ++y)
+        for (int x = 0; x < 512; ++x) sum += fast.at(x, y), sx += fast.at(x, y) * (x + 0.5), sy += fast.at(x, y) * (y + 0.5);
+    CHECK_NEAR(sx / sum, 256.5, 0.02);
+    CHECK_NEAR(sy / sum, 256.5, 0.02);
 }
 
 TEST(random_lines_inside_the_canvas_equal_the_reports_bit_for_bit) {
