@@ -4,7 +4,7 @@
 // (pkg-config pointed at the staged tiny3d.pc, PKG_CONFIG_SYSROOT_DIR = the staging root).
 // On a machine without pkg-config the staged tiny3d.pc is read by hand instead: its
 // variables expanded, its Cflags and Libs used for the same build. Each built program must
-// run and write its image. TINY3D_TEST_WITHOUT_PKG_CONFIG=1 in the environment tests
+// run and write its image; make uninstall then removes what make install copied. TINY3D_TEST_WITHOUT_PKG_CONFIG=1 in the environment tests
 // that path on a machine that has pkg-config.
 #include <algorithm>
 #include <cstdio>
@@ -130,9 +130,9 @@ TEST(readme_program_builds_against_the_tree_and_from_a_staged_install) {
 
     // 2. make install into a staging root.
     const fs::path stage = dir.path / "stage";
-    r = run_shell("env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL make --no-print-directory -s install BUILD=" +
-                      shell_quoted(build_dir()) + " PREFIX=" + prefix + " DESTDIR=" + shell_quoted(stage.string()),
-                  dir.path);
+    const std::string make = "env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL make --no-print-directory -s BUILD=" +
+                             shell_quoted(build_dir()) + " PREFIX=" + prefix + " DESTDIR=" + shell_quoted(stage.string());
+    r = run_shell(make + " install", dir.path);
     CHECK_MSG(r.exit_code == 0, "make install failed: " + r.err);
     const fs::path root = stage / "opt/tiny3d";
     for (const char *file : {"include/tiny3d/tiny3d.h", "include/tiny3d/canvas.h", "include/tiny3d/compat/math_alias.h",
@@ -170,4 +170,10 @@ TEST(readme_program_builds_against_the_tree_and_from_a_staged_install) {
     r = run_shell(build, dir.path);
     CHECK_MSG(r.exit_code == 0, build + "\n" + r.err);
     if (r.exit_code == 0) check_program_runs(dir.path / "prog_installed", dir.path / "run_installed");
+
+    // 5. make uninstall removes every installed file.
+    r = run_shell(make + " uninstall", dir.path);
+    CHECK_MSG(r.exit_code == 0, "make uninstall failed: " + r.err);
+    for (const char *file : {"include/tiny3d", "lib/libtiny3d.a", "lib/pkgconfig/tiny3d.pc"})
+        CHECK_MSG(!fs::exists(root / file), std::string(file) + " left after make uninstall");
 }
