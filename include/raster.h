@@ -349,6 +349,20 @@ struct frame_stats {
     std::size_t backface_by_cluster = 0;  // of culled_backface: in chunks skipped whole (clusters)
 };
 
+// Samples per pixel of a frame's filled triangles (render_context::begin_frame).
+//  x1: one sample at the pixel centre (the aliased image; the fastest).
+//  x4, x8, x16: multisampling. Coverage is decided at each sample of a fixed pattern (the
+//    4-sample rotated grid, the standard 8- and 16-sample patterns; offsets on the 1/16 px
+//    snapping grid) by the same snapped edge functions and top-left rule as x1, so a mesh
+//    that shares edges covers every SAMPLE exactly once; depth is interpolated and tested
+//    per sample; the shading (intensity, texture, Phong) is evaluated once per pixel per
+//    triangle, at the pixel centre; the pixel is the mean of its samples (box resolve).
+enum class sample_count : int { x1 = 1, x4 = 4, x8 = 8, x16 = 16 };
+
+// "1", "4", "8" or "16", optionally followed by 'x' ("4x"); an error naming the text
+// otherwise (for command lines).
+result<sample_count> parse_sample_count(const std::string &text);
+
 // Owns every reusable buffer (depth, transformed vertices, triangle setups, the
 // translucent queue) and a worker pool of threads − 1 threads created once. A frame:
 //   begin_frame(canvas) → draw(...)* → end_frame().
@@ -365,14 +379,21 @@ public:
     render_context &operator=(const render_context &) = delete;
 
     int threads() const;
-    // Clears colour to clear_intensity and depth to 1. Error if the canvas is invalid.
-    status begin_frame(canvas_t &target, float clear_intensity = 0.0f);
+    // Clears colour to clear_intensity and depth to 1 and sets the frame's samples per pixel
+    // (sample_count above). Error if the canvas is invalid. With x4/x8/x16, every draw of the
+    // frame goes to per-sample colour and depth buffers (grown once to the largest frame,
+    // 8·samples bytes per pixel, kept); end_frame() resolves them into the canvas (the mean
+    // of the samples) and depth() (the nearest sample's depth), so the canvas holds the
+    // frame only after end_frame(). x1 frames are exactly as without this setting. The image
+    // is identical for every thread count in every mode.
+    status begin_frame(canvas_t &target, float clear_intensity = 0.0f, sample_count samples = sample_count::x1);
     // Transforms, culls, clips, shades and rasterizes (opaque) or queues (alpha < 1) the
     // mesh. Needs begin_frame first (otherwise does nothing). Triangles with a NaN or
     // infinite vertex (from a position or a non-finite matrix) are skipped, like zero-area
     // ones; the rest of the mesh is drawn (tests/hostile_test.cpp).
     void draw(const raster_mesh &mesh, const draw_params &params);
-    // Draws the queued translucent triangles back to front.
+    // Draws the queued translucent triangles back to front (blended per sample when
+    // multisampling) and resolves a multisampled frame.
     void end_frame();
     const zbuffer &depth() const;
     const frame_stats &stats() const;

@@ -3,8 +3,10 @@
 // watertightness, thread-count invariance).
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <vector>
 
+#include "../src/raster/msaa.h"
 #include "harness.h"
 #include "raster_reference.h"
 #include "renderer.h"
@@ -196,4 +198,294 @@ TEST(reference_rejects_bad_input) {
     CHECK(!render_reference(*canvas, std::span<const reference_draw>(&d, 1)).ok());
     d.mesh = nullptr;
     CHECK(!render_reference(*canvas, std::span<const reference_draw>(&d, 1)).ok());
+}
+
+// ---- multisampling ------------------------------------------------------------------------
+
+namespace {
+
+constexpr sample_count MODES[] = {sample_count::x1, sample_count::x4, sample_count::x8, sample_count::x16};
+
+// A small Scene S: the icosphere (or any mesh) at the origin, camera at (0, 0, 3), fov 45°,
+// Gouraud Lambert with one directional light, turned by `angle` about +y.
+struct small_scene {
+    raster_mesh mesh;
+    draw_params params;
+};
+
+small_scene make_small_scene(const mesh &m, float angle) {
+    small_scene s;
+    s.mesh = make_raster_mesh(m, mesh_vertex_normals(m)).value();
+    const light_t light = {{1, 1, 1}, 1.0f};
+    s.params.lights = make_light_rig(std::span<const light_t>(&light, 1), 0.1f).value();
+    s.params.view_projection = mat4_multiply(mat4_perspective(static_cast<float>(45 * M_PI / 180), 1.0f, 0.1f, 100.0f),
+                                             mat4_look_at({0, 0, 3}, {0, 0, 0}, {0, 1, 0}));
+    s.params.model = mat4_rotate_y(angle);
+    return s;
+}
+
+void render(const small_scene &s, canvas_t &c, sample_count n, int threads, float clear = 0.0f) {
+    render_context ctx(threads);
+    CHECK(ctx.begin_frame(c, clear, n).ok());
+    ctx.draw(s.mesh, s.params);
+    ctx.end_frame();
+}
+
+struct image_error {
+    double all_mean = 0, edge_mean = 0, edge_max = 0;
+    int edge_pixels = 0;
+};
+
+// Error in grey levels (0–255) against the reference, over all pixels and over the
+// silhouette pixels: those whose exact coverage by the object (the reference of the same
+// scene drawn flat white on black) is strictly between 0 and 1.
+image_error error_against(const canvas_t &image, const canvas_t &reference, const canvas_t &coverage) {
+    image_error e;
+    const int n = image.width * image.height;
+    for (int i = 0; i < n; ++i) {
+        const double d = 255.0 * std::fabs(static_cast<double>(image.data[i]) - reference.data[i]);
+        e.all_mean += d / n;
+        if (coverage.data[i] > 1e-3f && coverage.data[i] < 1 - 1e-3f) {
+            e.edge_mean += d;
+            e.edge_max = std::max(e.edge_max, d);
+            ++e.edge_pixels;
+        }
+    }
+    if (e.edge_pixels) e.edge_mean /= e.edge_pixels;
+    return e;
+}
+
+}  // namespace
+
+TEST(msaa_error_against_the_reference_per_mode) {
+    constexpr int S = 64;
+    const small_scene scene = make_small_scene(make_icosphere(3), 0.3f);
+    small_scene white = scene;
+    white.params.lights = constant_light(1.0f);
+    white.params.shade = shading::flat;
+    canvas_ptr reference = make_canvas(S, S).value(), coverage = make_canvas(S, S).value();
+    const reference_draw d{&scene.mesh, scene.params}, dw{&white.mesh, white.params};
+    CHECK(render_reference(*reference, std::span<const reference_draw>(&d, 1), 0.0f, 8).ok());
+    CHECK(render_reference(*coverage, std::span<const reference_draw>(&dw, 1), 0.0f, 8).ok());
+    // Upper bounds on the silhouette mean (grey levels), measured 1×: ~30, 4×: ~10, 8×: ~7,
+    // 16×: ~5 against this 64-sample reference (whose own error is ~2).
+    const double edge_bound[] = {40, 14, 10, 7};
+    double previous = 1e9;
+    for (int m = 0; m < 4; ++m) {
+        canvas_ptr c = make_canvas(S, S).value();
+        render(scene, *c, MODES[m], 1);
+        const image_error e = error_against(*c, *reference, *coverage);
+        CHECK(e.edge_pixels > 100);
+        CHECK(e.edge_mean < edge_bound[m]);
+        CHECK(e.edge_mean < previous);  // more samples, less error
+        CHECK(e.all_mean < edge_bound[m] / 3);
+        std::printf("  %2dx: silhouette %.2f (max %.1f, %d px), all %.3f\n", static_cast<int>(MODES[m]), e.edge_mean,
+                    e.edge_max, e.edge_pixels, e.all_mean);
+        previous = e.edge_mean;
+    }
+}
+
+TEST(msaa_images_do_not_depend_on_the_thread_count) {
+    constexpr int S = 96;
+    for (const mesh &m : {make_icosphere(3), make_torus_knot(2, 3, 60, 8)}) {
+        const small_scene scene = make_small_scene(m, 0.5f);
+        for (sample_count n : MODES) {
+            canvas_ptr one = make_canvas(S, S).value();
+            render(scene, *one, n, 1, 0.2f);
+            for (int threads : {2, 3}) {
+                canvas_ptr c = make_canvas(S, S).value();
+                render(scene, *c, n, threads, 0.2f);
+                int differ = 0;
+                for (int i = 0; i < S * S; ++i) differ += c->data[i] != one->data[i];
+                CHECK_EQ(differ, 0);
+            }
+        }
+    }
+}
+
+// Several draws in one frame (Gouraud sphere, a textured Phong quad through it, a clipped
+// quad crossing the near plane, a translucent torus knot): every mode, 1, 2 and 3 threads.
+TEST(msaa_multi_draw_frames_do_not_depend_on_the_thread_count) {
+    constexpr int S = 72;
+    const small_scene sphere = make_small_scene(make_icosphere(2), 0.4f);
+    small_scene knot = make_small_scene(make_torus_knot(2, 3, 40, 6), 0.1f);
+    knot.params.alpha = 0.5f;
+    texture tex;
+    tex.width = tex.height = 16;
+    for (int i = 0; i < 256; ++i) tex.texels.push_back(((i + i / 16) % 2) ? 1.0f : 0.2f);
+    CHECK(build_mipmaps(tex).ok());
+    const raster_mesh quad = clip_quad(-2, -0.5f, 2, 0.5f, 0, 0, 0, 8, 2);
+    draw_params qp = sphere.params;
+    qp.model = mat4_multiply(mat4_rotate_x(-1.2f), mat4_scale(1, 1, 1));
+    qp.shade = shading::phong;
+    qp.cull = cull_mode::none;
+    qp.tex = &tex;
+    qp.filter = texture_filter::trilinear;
+    draw_params near = qp;  // reaches behind the camera: clipped
+    near.model = mat4_multiply(mat4_translate(0, -0.3f, 2.5f), mat4_rotate_x(-1.5f));
+    near.filter = texture_filter::bilinear;
+    for (sample_count n : MODES) {
+        canvas_ptr images[3];
+        for (int threads = 1; threads <= 3; ++threads) {
+            images[threads - 1] = make_canvas(S, S).value();
+            render_context ctx(threads);
+            CHECK(ctx.begin_frame(*images[threads - 1], 0.1f, n).ok());
+            ctx.draw(sphere.mesh, sphere.params);
+            ctx.draw(quad, qp);
+            ctx.draw(quad, near);
+            ctx.draw(knot.mesh, knot.params);
+            ctx.end_frame();
+        }
+        for (int k = 1; k < 3; ++k) {
+            int differ = 0;
+            for (int i = 0; i < S * S; ++i) differ += images[k]->data[i] != images[0]->data[i];
+            CHECK_EQ(differ, 0);
+        }
+        double sum = 0;
+        for (int i = 0; i < S * S; ++i) sum += images[0]->data[i];
+        CHECK(sum > 0.2 * S * S);  // something was drawn
+    }
+}
+
+TEST(msaa_x1_is_the_aliased_image) {
+    constexpr int S = 80;
+    const small_scene scene = make_small_scene(make_icosphere(2), 0.2f);
+    canvas_ptr a = make_canvas(S, S).value(), b = make_canvas(S, S).value();
+    render(scene, *a, sample_count::x1, 1);
+    render_context ctx(1);
+    CHECK(ctx.begin_frame(*b).ok());  // the default
+    ctx.draw(scene.mesh, scene.params);
+    ctx.end_frame();
+    int differ = 0;
+    for (int i = 0; i < S * S; ++i) differ += a->data[i] != b->data[i];
+    CHECK_EQ(differ, 0);
+}
+
+TEST(sample_count_parsing_and_bad_counts) {
+    CHECK(parse_sample_count("4").value() == sample_count::x4);
+    CHECK(parse_sample_count("16x").value() == sample_count::x16);
+    CHECK(parse_sample_count("1").value() == sample_count::x1);
+    CHECK(!parse_sample_count("2").ok());
+    CHECK(!parse_sample_count("").ok());
+    canvas_ptr c = make_canvas(8, 8).value();
+    render_context ctx(1);
+    CHECK(!ctx.begin_frame(*c, 0.0f, static_cast<sample_count>(2)).ok());
+}
+
+// ---- the multisample kernels (internal API) -----------------------------------------------
+
+namespace {
+
+// A jittered grid of quads over (and beyond) a W × H canvas, split into triangles with both
+// windings, some vertices on sample positions exactly (1/16 px grid), as snapped vertices.
+std::vector<std::array<std::int32_t, 6>> jittered_grid(int W, int H, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::uniform_int_distribution<int> jitter(-20, 20);  // 1/16 px (quads stay convex)
+    constexpr int N = 7;
+    std::int32_t gx[N + 1][N + 1], gy[N + 1][N + 1];
+    for (int j = 0; j <= N; ++j)
+        for (int i = 0; i <= N; ++i) {
+            const bool border = i == 0 || j == 0 || i == N || j == N;
+            gx[j][i] = (-4 + i * (W + 8) / N) * 16 + (border ? 0 : jitter(rng));
+            gy[j][i] = (-4 + j * (H + 8) / N) * 16 + (border ? 0 : jitter(rng));
+        }
+    std::vector<std::array<std::int32_t, 6>> tris;
+    for (int j = 0; j < N; ++j)
+        for (int i = 0; i < N; ++i) {
+            const std::int32_t ax = gx[j][i], ay = gy[j][i], bx = gx[j][i + 1], by = gy[j][i + 1];
+            const std::int32_t cx = gx[j + 1][i + 1], cy = gy[j + 1][i + 1], dx = gx[j + 1][i], dy = gy[j + 1][i];
+            if ((i + j) % 2) {
+                tris.push_back({ax, ay, bx, by, cx, cy});
+                tris.push_back({ax, ay, dx, dy, cx, cy});  // opposite winding
+            } else {
+                tris.push_back({ax, ay, bx, by, dx, dy});
+                tris.push_back({bx, by, cx, cy, dx, dy});
+            }
+        }
+    return tris;
+}
+
+// Fills the triangles in order (or reversed) into a fresh store, all at depth 0.5 with depth
+// test LESS, triangle t in intensity (t + 1) / 1024: each sample keeps the FIRST triangle
+// covering it, and depth 0.5 once covered.
+detail::sample_store fill_all(const std::vector<std::array<std::int32_t, 6>> &tris, int W, int H, int samples,
+                              bool reversed, bool portable) {
+    detail::sample_store store;
+    store.resize(W, H, samples);
+    store.start(0, H);
+    const detail::sample_pattern &pat = detail::pattern_of(samples);
+    for (std::size_t n = 0; n < tris.size(); ++n) {
+        const std::size_t t = reversed ? tris.size() - 1 - n : n;
+        const std::int32_t X[3] = {tris[t][0], tris[t][2], tris[t][4]}, Y[3] = {tris[t][1], tris[t][3], tris[t][5]};
+        const triangle_edges e = detail::triangle_setup_snapped(X, Y, {0, 0, W, H}, cull_mode::none);
+        const float depth[3] = {0.5f, 0.5f, 0.5f};
+        const float shade = static_cast<float>(t + 1) / 1024, intensity[3] = {shade, shade, shade};
+        detail::msaa_triangle f;
+        if (e.area2 == 0 || !detail::make_msaa_triangle(e, pat, {0, 0, W, H}, depth, intensity, f)) continue;
+        detail::fill_msaa_rows(store, f, pat, depth_func::less, true, 0.0f, 0, H, portable);
+    }
+    return store;
+}
+
+}  // namespace
+
+// A mesh with shared edges covers every sample exactly once: drawn first to last and last to
+// first, every sample is covered (depth 0.5) and shows the same triangle both ways (a sample
+// covered twice would show the first triangle one way and the other the other way).
+TEST(msaa_watertight_per_sample) {
+    constexpr int W = 37, H = 29;
+    for (unsigned seed : {1u, 2u, 3u})
+        for (int samples : {4, 8, 16})
+            for (bool portable : {false, true}) {
+                const auto tris = jittered_grid(W, H, seed);
+                detail::sample_store forward = fill_all(tris, W, H, samples, false, portable);
+                detail::sample_store backward = fill_all(tris, W, H, samples, true, portable);
+                int gaps = 0, doubles = 0;
+                for (int y = 0; y < H; ++y)
+                    for (int x = 0; x < W; ++x) {
+                        const float *f = forward.pixel(x, y), *b = backward.pixel(x, y);
+                        gaps += !forward.touched_row(y)[x] * samples;
+                        if (!forward.touched_row(y)[x]) continue;
+                        for (int s = 0; s < samples; ++s) {
+                            gaps += f[s] != 0.5f;
+                            doubles += f[samples + s] != b[samples + s];
+                        }
+                    }
+                CHECK_EQ(gaps, 0);
+                CHECK_EQ(doubles, 0);
+            }
+}
+
+// The SSE2 kernel against the portable one: random overlapping triangles with depth, every
+// sample bit-identical.
+TEST(msaa_sse2_kernel_matches_the_portable_kernel) {
+    constexpr int W = 41, H = 33;
+    std::mt19937 rng(11);
+    std::uniform_int_distribution<int> coord(-80, 45 * 16);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    for (int samples : {4, 8, 16}) {
+        const detail::sample_pattern &pat = detail::pattern_of(samples);
+        detail::sample_store a, b;
+        for (detail::sample_store *st : {&a, &b}) st->resize(W, H, samples), st->start(0, H);
+        for (int t = 0; t < 60; ++t) {
+            const std::int32_t X[3] = {coord(rng), coord(rng), coord(rng)}, Y[3] = {coord(rng), coord(rng), coord(rng)};
+            const triangle_edges e = detail::triangle_setup_snapped(X, Y, {0, 0, W, H}, cull_mode::none);
+            const float depth[3] = {unit(rng), unit(rng), unit(rng)}, intensity[3] = {unit(rng), unit(rng), unit(rng)};
+            detail::msaa_triangle f;
+            if (e.area2 == 0 || !detail::make_msaa_triangle(e, pat, {0, 0, W, H}, depth, intensity, f)) continue;
+            CHECK(f.narrow);
+            detail::fill_msaa_rows(a, f, pat, depth_func::less, true, 0.25f, 0, H, false);
+            detail::fill_msaa_rows(b, f, pat, depth_func::less, true, 0.25f, 0, H, true);
+        }
+        int differ = 0, touched = 0;
+        for (int y = 0; y < H; ++y)
+            for (int x = 0; x < W; ++x) {
+                touched += a.touched_row(y)[x];
+                differ += a.touched_row(y)[x] != b.touched_row(y)[x];
+                if (!a.touched_row(y)[x]) continue;
+                for (int s = 0; s < 2 * samples; ++s) differ += a.pixel(x, y)[s] != b.pixel(x, y)[s];
+            }
+        CHECK(touched > W * H / 2);
+        CHECK_EQ(differ, 0);
+    }
 }

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "render_context_impl.h"
 
@@ -78,18 +79,20 @@ void render_context::impl::emit(const clip_vertex *poly, int n, const draw_param
         const screen_vertex v[3] = {to_screen(c[0]->position, half_w, half_h), to_screen(c[1]->position, half_w, half_h),
                                     to_screen(c[2]->position, half_w, half_h)};
         const triangle_edges t = triangle_setup(v[0], v[1], v[2], full, p.cull);
-        if (!t.valid) {
+        if (multisampled() ? t.area2 == 0 : !t.valid) {  // multisampled: samples without a centre count
             out.stats.culled_backface += count && t.culled;
             continue;
         }
         out.stats.rasterized += count;
         if (generic) {
             out.generic.push_back(make_generic_triangle(v, c, state));
+            if (multisampled() && p.alpha >= 1.0f) bin_generic(t, out);
             continue;
         }
         const float shade[3] = {c[0]->attr[ATTR_SHADE], c[1]->attr[ATTR_SHADE], c[2]->attr[ATTR_SHADE]};
         const float depth[3] = {v[0].z, v[1].z, v[2].z};
-        add_fast(t, depth, shade, out);
+        if (multisampled()) add_msaa(t, depth, shade, state, out);
+        else add_fast(t, depth, shade, out);
     }
 }
 
@@ -147,6 +150,7 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
                                        int thread, bool counts_all, std::size_t first, std::size_t last,
                                        segment &out) {
     const bool flat = p.shade == shading::flat;
+    const bool msaa = multisampled();
     const std::vector<detail::xvertex> &vertices = out.vertices;
     const std::vector<float> &vertex_attr = out.vertex_attr;
     const pixel_rect full{0, 0, target->width, target->height};
@@ -175,14 +179,27 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
             }
             // Candidate rows (pixel centres 16·row + 8 within the snapped y range): skip the
             // triangle when this thread draws none of their bands.
-            const std::int64_t row0 = std::max<std::int64_t>(
+            std::int64_t row0 = std::max<std::int64_t>(
                 -((RASTER_SUBPIXEL_ONE / 2 - std::min({Y[0], Y[1], Y[2]})) >> RASTER_SUBPIXEL_BITS), 0);
-            const std::int64_t row1 = std::min<std::int64_t>(
+            std::int64_t row1 = std::min<std::int64_t>(
                 (std::max({Y[0], Y[1], Y[2]}) - RASTER_SUBPIXEL_ONE / 2) >> RASTER_SUBPIXEL_BITS, last_row);
+            if (msaa) {  // rows with a sample row in the y range
+                int r0, r1;
+                msaa_candidate_rows(std::min({Y[0], Y[1], Y[2]}), std::max({Y[0], Y[1], Y[2]}), *pattern,
+                                    static_cast<int>(last_row), r0, r1);
+                row0 = r0, row1 = r1;
+            }
             if (row0 > row1 || !bands.draws_rows(thread, static_cast<int>(row0), static_cast<int>(row1))) continue;
             const bool counts = bands.owner[bands.of(static_cast<int>(row0))] == thread;
             const float depth[3] = {a.depth, b.depth, c.depth};
             const float shade[3] = {flat ? flat_shade : a.shade, flat ? flat_shade : b.shade, flat ? flat_shade : c.shade};
+            if (msaa) {
+                const triangle_edges t = detail::triangle_setup_snapped(X, Y, full, p.cull);
+                if (t.area2 == 0) continue;  // (no pixel centre inside is fine: samples may be)
+                out.stats.rasterized += counts;
+                add_msaa(t, depth, shade, state, out);
+                continue;
+            }
             detail::fast_triangle f;
             const detail::fast_setup verdict = detail::setup_fast_triangle(X, Y, area2, full, depth, shade, f);
             if (verdict == detail::fast_setup::ready) {
@@ -245,20 +262,25 @@ void render_context::impl::draw_band(int band, const segment &from, const draw_p
 void render_context::impl::set_up_and_draw(int thread, const raster_mesh &m, const draw_params &p,
                                            const vertex_job &job, std::uint32_t state, const cluster_view *view) {
     segment &seg = segments[thread];
-    seg.fast.clear();
-    seg.wide.clear();
-    seg.generic.clear();
+    if (!segments_hold_frame) {
+        seg.fast.clear();
+        seg.msaa.clear();
+        seg.wide.clear();
+        seg.generic.clear();
+        for (int b = 0; b < bands.count; ++b) seg.bins[b].clear();
+    }
     seg.stats = {};
-    for (int b = 0; b < bands.count; ++b) seg.bins[b].clear();
     setup(m, p, job, state, thread, view, seg);
+    if (multisampled()) return;  // drawn at end_frame
     claims.mark_ready(thread);
     draw_bands(bands, claims, thread, pool.size(), [&](int band, int owner) { draw_band(band, segments[owner], p); });
 }
 
 // Translucent triangles wait for end_frame: every segment holds all per-pixel-path
-// triangles, so segment 0's are taken.
-void render_context::impl::queue_translucent() {
-    for (generic_triangle g : segments[0].generic) {
+// triangles, so segment 0's are taken (from `first`: multisampled frames keep earlier draws').
+void render_context::impl::queue_translucent(std::size_t first) {
+    for (std::size_t k = first; k < segments[0].generic.size(); ++k) {
+        generic_triangle g = segments[0].generic[k];
         g.sequence = static_cast<std::uint32_t>(translucent.size());
         translucent.push_back(g);
     }
@@ -297,8 +319,10 @@ void render_context::draw(const raster_mesh &mesh, const draw_params &params) {
     s.grow_segments(mesh.positions.size(), generic);
     s.claims.next_draw();
     auto phase = [&](int t) { s.set_up_and_draw(t, mesh, params, job, state, use_clusters ? &view : nullptr); };
+    const std::size_t generic_first = s.segments_hold_frame ? s.segments[0].generic.size() : 0;
     s.pool.run(phase);
-    if (params.alpha < 1.0f) s.queue_translucent();
+    s.segments_hold_frame = s.multisampled();
+    if (params.alpha < 1.0f) s.queue_translucent(generic_first);
     s.pending_clear = false;
     s.gather_stats();
 }
@@ -311,18 +335,27 @@ int render_context::threads() const { return impl_->pool.size(); }
 const zbuffer &render_context::depth() const { return impl_->depth; }
 const frame_stats &render_context::stats() const { return impl_->stats; }
 
-status render_context::begin_frame(canvas_t &target, float clear_intensity) {
+status render_context::begin_frame(canvas_t &target, float clear_intensity, sample_count samples) {
     impl &s = *impl_;
     if (!target.pixels || !target.data) return error{"", 0, -1, "render_context: canvas has no pixels"};
+    const int count = static_cast<int>(samples);
+    if (count != 1 && count != 4 && count != 8 && count != 16)
+        return error{"", 0, -1, "render_context: " + std::to_string(count) + " samples per pixel (1, 4, 8 or 16)"};
     const status size_ok = s.depth.resize(target.width, target.height);
     if (!size_ok) return size_ok;
+    s.pattern = &detail::pattern_of(count);
+    s.segments_hold_frame = false;
     s.target = &target;
     s.clear_intensity = detail::clamp01(clear_intensity);
     s.pending_clear = true;
     s.stats = {};
     s.states.clear();
     s.translucent.clear();
-    s.bands.plan(target.height, s.pool.size());
+    s.bands.plan(target.height, s.pool.size(), count > 1 ? MSAA_BAND_ROWS : BAND_ROWS);
+    if (count > 1) {
+        const int tile_rows = (target.height + s.bands.count - 1) / s.bands.count;
+        for (int t = 0; t < s.pool.size(); ++t) s.tiles[t].resize(target.width, tile_rows, count);
+    }
     s.guard = std::clamp(GUARD_SPAN_PIXELS / static_cast<float>(std::max(target.width, target.height)), 1.0f, MAX_GUARD);
     return {};
 }
@@ -334,6 +367,7 @@ void render_context::end_frame() {
     std::sort(s.translucent.begin(), s.translucent.end(), [](const generic_triangle &a, const generic_triangle &b) {
         return a.mean_depth != b.mean_depth ? a.mean_depth > b.mean_depth : a.sequence < b.sequence;
     });
+    if (s.multisampled()) return s.end_multisampled_frame();
     if (s.translucent.empty() && !s.pending_clear) {
         s.target = nullptr;
         return;

@@ -438,6 +438,16 @@ void fill_rows_dispatch(canvas_t &canvas, zbuffer *depth, const fast_triangle &f
 
 }  // namespace
 
+void attribute_planes_at(const double x[3], const double y[3], int px, int py, const float depth[3],
+                         const float intensity[3], float planes[6]) {
+    fast_triangle f;
+    f.min_x = px;
+    f.min_y = py;
+    set_planes(x, y, depth, intensity, f);
+    const float out[6] = {f.z, f.zdx, f.zdy, f.i, f.idx, f.idy};
+    std::copy(out, out + 6, planes);
+}
+
 void fill_floats(float *dst, std::size_t count, float value) {
     std::size_t i = 0;
 #ifdef __SSE2__

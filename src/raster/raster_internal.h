@@ -148,6 +148,12 @@ fast_setup setup_fast_triangle(const std::int32_t X[3], const std::int32_t Y[3],
 void fill_fast_rows(canvas_t &canvas, zbuffer *depth, const fast_triangle &f,
                     const triangle_edges *wide_edges, depth_func test, bool depth_write, int y0, int y1);
 
+// The depth and intensity planes through snapped (or any) vertices x, y (px), as the fast
+// path computes them: planes = {z, ∂z/∂x, ∂z/∂y, i, ∂i/∂x, ∂i/∂y} at the centre of pixel
+// (px, py), steps per pixel.
+void attribute_planes_at(const double x[3], const double y[3], int px, int py, const float depth[3],
+                         const float intensity[3], float planes[6]);
+
 // dst[0..count) := value (SSE2 stores when available).
 void fill_floats(float *dst, std::size_t count, float value);
 

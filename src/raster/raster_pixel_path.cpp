@@ -19,22 +19,26 @@ generic_triangle make_generic_triangle(const screen_vertex v[3], const clip_vert
     return g;
 }
 
-void draw_generic_rows(canvas_t &target, zbuffer &depth, const draw_params &p, const generic_triangle &g, int y0,
-                       int y1) {
-    const bool translucent = p.alpha < 1.0f;
-    const float alpha = std::clamp(p.alpha, 0.0f, 1.0f);
-    const pixel_rect band{0, y0, target.width, y1};
-    const bool trilinear = p.tex && p.filter == texture_filter::trilinear;
+namespace {
+
+// A per-pixel-path triangle's shading: the shade at barycentrics l0..l2 (screen-affine, of
+// the pixel centre) — perspective-correct weights, Phong or Gouraud, texture.
+struct pixel_shader {
+    const draw_params &p;
+    const generic_triangle &g;
+    bool trilinear;
     uv_derivatives uv_d;
-    if (trilinear) {
-        const float u[3] = {g.attr[0][ATTR_U], g.attr[1][ATTR_U], g.attr[2][ATTR_U]};
-        const float v[3] = {g.attr[0][ATTR_V], g.attr[1][ATTR_V], g.attr[2][ATTR_V]};
-        uv_d = uv_derivatives::of(g.v, u, v, p.perspective_correct);
+
+    pixel_shader(const draw_params &params, const generic_triangle &tri)
+        : p(params), g(tri), trilinear(params.tex && params.filter == texture_filter::trilinear) {
+        if (trilinear) {
+            const float u[3] = {g.attr[0][ATTR_U], g.attr[1][ATTR_U], g.attr[2][ATTR_U]};
+            const float v[3] = {g.attr[0][ATTR_V], g.attr[1][ATTR_V], g.attr[2][ATTR_V]};
+            uv_d = uv_derivatives::of(g.v, u, v, p.perspective_correct);
+        }
     }
-    rasterize_triangle(g.v[0], g.v[1], g.v[2], band, [&](int x, int y, float l0, float l1, float l2) {
-        const float z = l0 * g.v[0].z + l1 * g.v[1].z + l2 * g.v[2].z;
-        float *zp = depth.row(y) + x;
-        if (!depth_passes(p.depth, z, *zp)) return;
+
+    float operator()(float l0, float l1, float l2) const {
         // Perspective-correct weights: l_k/w_k normalised (attr/w and 1/w interpolated).
         float w0 = l0, w1 = l1, w2 = l2, inv_b = 1.0f;
         if (p.perspective_correct) {
@@ -54,12 +58,69 @@ void draw_generic_rows(canvas_t &target, zbuffer &depth, const draw_params &p, c
         } else if (p.tex) {
             shade *= texture_sample(*p.tex, lerp(ATTR_U), lerp(ATTR_V), p.filter, p.wrap);
         }
-        float &dst = target.pixels[y][x];
-        if (translucent) {
-            dst = clamp01(alpha * shade + (1.0f - alpha) * dst);
-        } else {
-            dst = clamp01(shade);
-            *zp = z;
+        return shade;
+    }
+};
+
+// A pixel or sample passing the depth test: "over" blend with alpha (colour only), or an
+// opaque write of colour and depth.
+inline void write_fragment(const draw_params &p, float &dst, float &stored_z, float z, float shade) {
+    if (p.alpha < 1.0f) {
+        const float alpha = std::clamp(p.alpha, 0.0f, 1.0f);
+        dst = clamp01(alpha * shade + (1.0f - alpha) * dst);
+    } else {
+        dst = clamp01(shade);
+        stored_z = z;
+    }
+}
+
+}  // namespace
+
+void draw_generic_rows(canvas_t &target, zbuffer &depth, const draw_params &p, const generic_triangle &g, int y0,
+                       int y1) {
+    const pixel_rect band{0, y0, target.width, y1};
+    const pixel_shader shade(p, g);
+    rasterize_triangle(g.v[0], g.v[1], g.v[2], band, [&](int x, int y, float l0, float l1, float l2) {
+        const float z = l0 * g.v[0].z + l1 * g.v[1].z + l2 * g.v[2].z;
+        float *zp = depth.row(y) + x;
+        if (!depth_passes(p.depth, z, *zp)) return;
+        write_fragment(p, target.pixels[y][x], *zp, z, shade(l0, l1, l2));
+    });
+}
+
+void draw_generic_samples(sample_store &tile, const sample_pattern &pat, float clear_colour, const draw_params &p,
+                          const generic_triangle &g, int y0, int y1) {
+    const pixel_rect band{0, y0, tile.width(), y1};
+    const triangle_edges t = triangle_setup(g.v[0], g.v[1], g.v[2], band);
+    if (t.area2 == 0) return;
+    const pixel_shader shade_at(p, g);
+    const int S = pat.count;
+    const float zv[3] = {g.v[0].z, g.v[1].z, g.v[2].z};
+    float zdx, zdy, dz[MSAA_MAX_SAMPLES];
+    screen_gradient(g.v, zv, zdx, zdy);
+    for (int k = 0; k < S; ++k)
+        dz[k] = zdx * (static_cast<float>(pat.dx[k]) / RASTER_SUBPIXEL_ONE) +
+                zdy * (static_cast<float>(pat.dy[k]) / RASTER_SUBPIXEL_ONE);
+    const double inv_area = 1.0 / static_cast<double>(t.area2);
+    for_each_covered_pixel(t, pat, band, [&](int x, int y, unsigned mask) {
+        // Barycentrics of the centre (unbiased edge values, as rasterize_triangle).
+        const float l0 = static_cast<float>(static_cast<double>(t.c[0] + t.a[0] * x + t.b[0] * y) * inv_area);
+        const float l1 = static_cast<float>(static_cast<double>(t.c[1] + t.a[1] * x + t.b[1] * y) * inv_area);
+        const float l2 = 1.0f - l0 - l1;
+        const float zc = l0 * g.v[0].z + l1 * g.v[1].z + l2 * g.v[2].z;
+        float *px = tile.pixel(x, y);
+        std::uint8_t &touched = tile.touched_row(y)[x];
+        if (!touched) {
+            tile.initialise(px, clear_colour);
+            touched = 1;
+        }
+        bool shaded = false;
+        float shade = 0.0f;
+        for (int k = 0; k < S; ++k) {
+            const float z = zc + dz[k];
+            if (!((mask >> k) & 1) || !depth_passes(p.depth, z, px[k])) continue;
+            if (!shaded) shade = shade_at(l0, l1, l2), shaded = true;  // once per pixel
+            write_fragment(p, px[S + k], px[k], z, shade);
         }
     });
 }

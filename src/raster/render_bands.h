@@ -34,13 +34,13 @@ struct band_layout {
     std::vector<std::uint8_t> row_band;  // the band holding each row (inverse of y0)
     std::uint8_t owner[MAX_BANDS];       // the thread that sets up each band's triangles
 
-    // Bands of BAND_ROWS rows (at least one per thread, at most MAX_BANDS and `height`);
+    // Bands of band_rows rows (at least one per thread, at most MAX_BANDS and `height`);
     // threads own blocks of neighbouring bands, dealt in turn (BLOCKS_PER_THREAD each when
     // there are enough bands): few triangles straddle two owners, and the load stays even
     // when the scene is not.
-    void plan(int rows, int threads) {
+    void plan(int rows, int threads, int band_rows = BAND_ROWS) {
         height = rows;
-        count = std::clamp(rows / BAND_ROWS, threads, MAX_BANDS);
+        count = std::clamp(rows / band_rows, threads, MAX_BANDS);
         count = std::min(count, std::max(rows, 1));
         if (row_band.size() < static_cast<std::size_t>(rows)) row_band.resize(rows);
         for (int b = 0; b < count; ++b)

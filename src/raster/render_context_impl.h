@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "../parallel/worker_pool.h"
+#include "msaa.h"
 #include "raster_internal.h"
 #include "render_bands.h"
 #include "vertex_transform.h"
@@ -38,6 +39,16 @@ generic_triangle make_generic_triangle(const screen_vertex v[3], const clip_vert
 // texture, then opaque write (colour and depth) or "over" blend with p.alpha (colour only).
 void draw_generic_rows(canvas_t &target, zbuffer &depth, const draw_params &p, const generic_triangle &g, int y0,
                        int y1);
+// The same into a tile of samples (multisampled frames): coverage and depth per sample of
+// `pat`, the shade once per pixel (at its centre), opaque write or blend per passing sample.
+void draw_generic_samples(sample_store &tile, const sample_pattern &pat, float clear_colour, const draw_params &p,
+                          const generic_triangle &g, int y0, int y1);
+
+// Multisampled frames: bands of MSAA_BAND_ROWS rows (one band's samples, 8 · samples bytes
+// per pixel, stay in the core's cache while every triangle reaching it is drawn); a band
+// bin entry with GENERIC_BIN set names a per-pixel-path triangle.
+inline constexpr int MSAA_BAND_ROWS = 8;
+inline constexpr std::uint32_t GENERIC_BIN = 1u << 31;
 
 // What a thread does with one cluster chunk of the draw: skip it, or walk it (and whether it
 // counts the chunk's culled triangles).
@@ -57,6 +68,14 @@ struct render_context::impl {
     float clear_intensity = 0.0f;
     float guard = 1.0f;
     frame_stats stats;
+    // Multisampling (raster_multisample.cpp): the frame's pattern. draw() then only sets up
+    // and bins (the segments keep every draw's triangles until end_frame); end_frame() draws
+    // band by band into a per-thread tile of samples and resolves it.
+    const detail::sample_pattern *pattern = &detail::pattern_of(1);
+    detail::sample_store tiles[detail::MAX_THREADS];
+    bool segments_hold_frame = false;  // the segments already hold this frame's earlier draws
+    std::atomic<int> next_band{0};     // end_frame's band queue
+    bool multisampled() const { return pattern->count > 1; }
 
     // What one thread produced for the current draw. Aligned to a cache line of its own: the
     // vector headers and stats are written per triangle, and two threads writing one line
@@ -66,9 +85,11 @@ struct render_context::impl {
         std::vector<vec4_t> clip;               // their clip-space positions
         std::vector<float> vertex_attr;         // ATTR_COUNT per vertex (generic path only)
         std::vector<detail::fast_triangle> fast;
+        std::vector<detail::msaa_triangle> msaa;  // instead of `fast` in multisampled frames
         std::vector<triangle_edges> wide;
         std::vector<detail::generic_triangle> generic;
-        std::vector<std::uint32_t> bins[detail::MAX_BANDS];  // fast-triangle indices per band
+        std::vector<std::uint32_t> bins[detail::MAX_BANDS];  // fast-triangle indices per band (multisampled:
+                                                             // msaa ones, or generic with GENERIC_BIN)
         std::vector<detail::chunk_walk> chunks;              // this draw's cluster chunks, as decided
         frame_stats stats;
     };
@@ -90,7 +111,7 @@ struct render_context::impl {
     void set_up_and_draw(int thread, const raster_mesh &m, const draw_params &p, const detail::vertex_job &job,
                          std::uint32_t state, const detail::cluster_view *view);
     void draw_band(int band, const segment &from, const draw_params &p);
-    void queue_translucent();
+    void queue_translucent(std::size_t first);
     void gather_stats();
 
     void transform(const raster_mesh &m, const draw_params &p, const detail::vertex_job &job, detail::vertex_set set,
@@ -116,6 +137,13 @@ struct render_context::impl {
     }
     void emit(const clip_vertex *poly, int n, const draw_params &p, std::uint32_t state, bool generic, bool count,
               segment &out);
+
+    // Multisampled frames (raster_multisample.cpp).
+    void add_msaa(const triangle_edges &t, const float depth_at[3], const float shade[3], std::uint32_t state,
+                  segment &out);
+    void bin_generic(const triangle_edges &t, segment &out);  // the last of out.generic, opaque
+    void draw_multisampled_band(int band, detail::sample_store &tile);
+    void end_multisampled_frame();
 };
 
 }  // namespace tiny3d

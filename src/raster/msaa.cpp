@@ -1,0 +1,391 @@
+// msaa.cpp — multisampled filled triangles (msaa.h): sample patterns, the sample store and
+// its resolve, the per-triangle setup and the row fill (64-bit portable kernel, SSE2 kernel).
+#include "msaa.h"
+
+#include <algorithm>
+#include <string>
+
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
+
+namespace tiny3d::detail {
+
+namespace {
+
+sample_pattern make_pattern(std::initializer_list<std::pair<int, int>> offsets) {
+    sample_pattern p;
+    p.count = static_cast<int>(offsets.size());
+    int s = 0;
+    for (const auto &[x, y] : offsets) {
+        p.dx[s] = static_cast<std::int8_t>(x);
+        p.dy[s] = static_cast<std::int8_t>(y);
+        p.min_dx = std::min(p.min_dx, x), p.max_dx = std::max(p.max_dx, x);
+        p.min_dy = std::min(p.min_dy, y), p.max_dy = std::max(p.max_dy, y);
+        ++s;
+    }
+    return p;
+}
+
+// floor(n / d), d > 0.
+inline std::int64_t floor_div(std::int64_t n, std::int64_t d) { return n >= 0 ? n / d : -((-n + d - 1) / d); }
+
+constexpr std::int64_t HALF = RASTER_SUBPIXEL_ONE / 2;
+
+// Pixels p (one axis) whose centre 16p + 8 plus an offset in [lo_off, hi_off] meets [lo, hi].
+inline void axis_bounds(std::int64_t lo, std::int64_t hi, int lo_off, int hi_off, int clip0, int clip1, int &first,
+                        int &last) {
+    first = static_cast<int>(std::max<std::int64_t>(-floor_div(HALF + hi_off - lo, RASTER_SUBPIXEL_ONE), clip0));
+    last = static_cast<int>(std::min<std::int64_t>(floor_div(hi - HALF - lo_off, RASTER_SUBPIXEL_ONE), clip1 - 1));
+}
+
+// Per edge: the offsets d[k][s] of the edge value at each sample from the pixel centre, and
+// their extremes.
+struct sample_offsets {
+    std::int64_t d[3][MSAA_MAX_SAMPLES];
+    std::int64_t lo[3], hi[3];
+    sample_offsets(const msaa_triangle &f, const sample_pattern &pat) {
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = INT64_MAX, hi[k] = INT64_MIN;
+            for (int s = 0; s < pat.count; ++s) {
+                d[k][s] = f.a[k] / RASTER_SUBPIXEL_ONE * pat.dx[s] + f.b[k] / RASTER_SUBPIXEL_ONE * pat.dy[s];
+                lo[k] = std::min(lo[k], d[k][s]), hi[k] = std::max(hi[k], d[k][s]);
+            }
+        }
+    }
+    // The columns (relative to min_x) of a row whose edge values at the first column's
+    // centre are e[]: where some sample could pass every edge. Empty when lo > hi.
+    void row_span(const std::int64_t e[3], const msaa_triangle &f, int &lo_x, int &hi_x) const {
+        std::int64_t first = 0, last = f.max_x - f.min_x;
+        for (int k = 0; k < 3; ++k) {
+            const std::int64_t top = e[k] + hi[k];  // the best sample's value at column 0
+            if (f.a[k] > 0) first = std::max(first, -floor_div(top, f.a[k]));  // top + a·x ≥ 0
+            else if (f.a[k] < 0) last = std::min(last, floor_div(top, -f.a[k]));
+            else if (top < 0) last = -1;
+        }
+        lo_x = static_cast<int>(first);
+        hi_x = static_cast<int>(std::max<std::int64_t>(last, first - 1));
+    }
+};
+
+bool passes(depth_func test, float z, float stored) { return depth_passes(test, z, stored); }
+
+// The portable kernel: 64-bit edges, one sample at a time.
+void fill_rows_portable(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
+                        bool depth_write, float clear_colour, int y0, int y1) {
+    const sample_offsets off(f, pat);
+    const int S = pat.count;
+    float dz[MSAA_MAX_SAMPLES];
+    for (int s = 0; s < S; ++s)
+        dz[s] = f.zdx * (static_cast<float>(pat.dx[s]) / RASTER_SUBPIXEL_ONE) +
+                f.zdy * (static_cast<float>(pat.dy[s]) / RASTER_SUBPIXEL_ONE);
+    for (int y = y0; y < y1; ++y) {
+        const int dy = y - f.min_y;
+        std::int64_t e[3];
+        for (int k = 0; k < 3; ++k) e[k] = f.e[k] + f.b[k] * dy;
+        int lo, hi;
+        off.row_span(e, f, lo, hi);
+        std::uint8_t *touched = store.touched_row(y);
+        const float zr = f.z + f.zdy * static_cast<float>(dy), ir = f.i + f.idy * static_cast<float>(dy);
+        for (int x = lo; x <= hi; ++x) {
+            unsigned mask = 0;
+            for (int s = 0; s < S; ++s) {
+                bool in = true;
+                for (int k = 0; k < 3; ++k) in = in && e[k] + f.a[k] * x + off.d[k][s] >= 0;
+                mask |= static_cast<unsigned>(in) << s;
+            }
+            if (!mask) continue;
+            const int px = f.min_x + x;
+            float *p = store.pixel(px, y);
+            if (!touched[px]) {
+                store.initialise(p, clear_colour);
+                touched[px] = 1;
+            }
+            const float zc = zr + f.zdx * static_cast<float>(x), shade = clamp01(ir + f.idx * static_cast<float>(x));
+            for (int s = 0; s < S; ++s) {
+                const float z = zc + dz[s];
+                if (!((mask >> s) & 1) || !passes(test, z, p[s])) continue;
+                if (depth_write) p[s] = z;
+                p[S + s] = shade;
+            }
+        }
+    }
+}
+
+#ifdef __SSE2__
+template <depth_func Test>
+inline __m128 compare(__m128 z, __m128 stored) {
+    if constexpr (Test == depth_func::never) return _mm_setzero_ps();
+    else if constexpr (Test == depth_func::less) return _mm_cmplt_ps(z, stored);
+    else if constexpr (Test == depth_func::less_equal) return _mm_cmple_ps(z, stored);
+    else if constexpr (Test == depth_func::equal) return _mm_cmpeq_ps(z, stored);
+    else if constexpr (Test == depth_func::greater) return _mm_cmpgt_ps(z, stored);
+    else if constexpr (Test == depth_func::greater_equal) return _mm_cmpge_ps(z, stored);
+    else if constexpr (Test == depth_func::not_equal) return _mm_cmpneq_ps(z, stored);
+    else return _mm_castsi128_ps(_mm_set1_epi32(-1));
+}
+
+inline __m128 select(__m128 mask, __m128 a, __m128 b) { return _mm_or_ps(_mm_and_ps(mask, a), _mm_andnot_ps(mask, b)); }
+
+// The SSE2 kernel (f.narrow: 32-bit edges), S = 4, 8 or 16 samples in groups of four: the
+// same integer tests and float operations as the portable kernel, lane by lane.
+template <int S, depth_func Test>
+void fill_rows_sse2(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, bool depth_write,
+                    float clear_colour, int y0, int y1) {
+    constexpr int G = S / 4;
+    const sample_offsets off(f, pat);
+    __m128i d[3][G];
+    __m128 dz[G];
+    for (int g = 0; g < G; ++g) {
+        for (int k = 0; k < 3; ++k)
+            d[k][g] = _mm_setr_epi32(static_cast<int>(off.d[k][4 * g]), static_cast<int>(off.d[k][4 * g + 1]),
+                                     static_cast<int>(off.d[k][4 * g + 2]), static_cast<int>(off.d[k][4 * g + 3]));
+        alignas(16) float z4[4];
+        for (int l = 0; l < 4; ++l)
+            z4[l] = f.zdx * (static_cast<float>(pat.dx[4 * g + l]) / RASTER_SUBPIXEL_ONE) +
+                    f.zdy * (static_cast<float>(pat.dy[4 * g + l]) / RASTER_SUBPIXEL_ONE);
+        dz[g] = _mm_load_ps(z4);
+    }
+    const std::int32_t a[3] = {static_cast<std::int32_t>(f.a[0]), static_cast<std::int32_t>(f.a[1]),
+                               static_cast<std::int32_t>(f.a[2])};
+    const __m128i minus_one = _mm_set1_epi32(-1);
+    const __m128 ones = _mm_set1_ps(1.0f), clear = _mm_set1_ps(clear_colour);
+    const float zdx = f.zdx, idx = f.idx;  // locals: the sample stores could alias f's floats
+    for (int y = y0; y < y1; ++y) {
+        const int dy = y - f.min_y;
+        std::int64_t e64[3];
+        for (int k = 0; k < 3; ++k) e64[k] = f.e[k] + f.b[k] * dy;
+        int lo, hi;
+        off.row_span(e64, f, lo, hi);
+        if (lo > hi) continue;
+        std::int32_t e[3];
+        for (int k = 0; k < 3; ++k) e[k] = static_cast<std::int32_t>(e64[k] + f.a[k] * lo);
+        std::uint8_t *touched = store.touched_row(y) + f.min_x + lo;
+        float *p = store.pixel(f.min_x + lo, y);
+        const float zr = f.z + f.zdy * static_cast<float>(dy), ir = f.i + f.idy * static_cast<float>(dy);
+        for (int x = lo; x <= hi; ++x, e[0] += a[0], e[1] += a[1], e[2] += a[2], p += 2 * S, ++touched) {
+            __m128 cover[G];
+            // With 8 or 16 samples, a pixel inside every edge for the pattern's worst sample
+            // skips the per-sample tests (with 4, one group of tests is as cheap).
+            const bool full = S > 4 && e[0] + off.lo[0] >= 0 && e[1] + off.lo[1] >= 0 && e[2] + off.lo[2] >= 0;
+            if (full) {
+                for (int g = 0; g < G; ++g) cover[g] = _mm_castsi128_ps(minus_one);
+            } else {
+                const __m128i e0 = _mm_set1_epi32(e[0]), e1 = _mm_set1_epi32(e[1]), e2 = _mm_set1_epi32(e[2]);
+                int any = 0;
+                for (int g = 0; g < G; ++g) {
+                    const __m128i in = _mm_and_si128(_mm_and_si128(_mm_cmpgt_epi32(_mm_add_epi32(e0, d[0][g]), minus_one),
+                                                                   _mm_cmpgt_epi32(_mm_add_epi32(e1, d[1][g]), minus_one)),
+                                                     _mm_cmpgt_epi32(_mm_add_epi32(e2, d[2][g]), minus_one));
+                    cover[g] = _mm_castsi128_ps(in);
+                    any |= _mm_movemask_ps(cover[g]);
+                }
+                if (!any) continue;
+            }
+            if (!*touched) {  // first touch this frame: depth 1, the clear colour
+                for (int g = 0; g < G; ++g) _mm_storeu_ps(p + 4 * g, ones), _mm_storeu_ps(p + S + 4 * g, clear);
+                *touched = 1;
+            }
+            const __m128 zc = _mm_set1_ps(zr + zdx * static_cast<float>(x));
+            const __m128 shade = _mm_set1_ps(clamp01(ir + idx * static_cast<float>(x)));
+            for (int g = 0; g < G; ++g) {
+                const __m128 z = _mm_add_ps(zc, dz[g]);
+                const __m128 stored = _mm_loadu_ps(p + 4 * g);
+                const __m128 pass = _mm_and_ps(cover[g], compare<Test>(z, stored));
+                if (depth_write) _mm_storeu_ps(p + 4 * g, select(pass, z, stored));
+                _mm_storeu_ps(p + S + 4 * g, select(pass, shade, _mm_loadu_ps(p + S + 4 * g)));
+            }
+        }
+    }
+}
+
+template <int S>
+void fill_rows_sse2_dispatch(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
+                             bool depth_write, float clear_colour, int y0, int y1) {
+    switch (test) {
+        case depth_func::never: return;
+        case depth_func::less: return fill_rows_sse2<S, depth_func::less>(store, f, pat, depth_write, clear_colour, y0, y1);
+        case depth_func::less_equal:
+            return fill_rows_sse2<S, depth_func::less_equal>(store, f, pat, depth_write, clear_colour, y0, y1);
+        case depth_func::equal: return fill_rows_sse2<S, depth_func::equal>(store, f, pat, depth_write, clear_colour, y0, y1);
+        case depth_func::greater:
+            return fill_rows_sse2<S, depth_func::greater>(store, f, pat, depth_write, clear_colour, y0, y1);
+        case depth_func::greater_equal:
+            return fill_rows_sse2<S, depth_func::greater_equal>(store, f, pat, depth_write, clear_colour, y0, y1);
+        case depth_func::not_equal:
+            return fill_rows_sse2<S, depth_func::not_equal>(store, f, pat, depth_write, clear_colour, y0, y1);
+        case depth_func::always: return fill_rows_sse2<S, depth_func::always>(store, f, pat, depth_write, clear_colour, y0, y1);
+    }
+}
+
+// resolve() for S = 4, 8, 16: the same sums in the same order as the scalar loop would
+// not be (lanes add in parallel), but the order is fixed, so the image is deterministic.
+template <int S>
+void resolve_row_sse2(const float *p, const std::uint8_t *touched, int width, float clear_colour, float *colour, float *z) {
+    const __m128 inv = _mm_set1_ps(1.0f / S);
+    for (int x = 0; x < width; ++x, p += 2 * S) {
+        if (!touched[x]) {
+            colour[x] = clear_colour;
+            z[x] = 1.0f;
+            continue;
+        }
+        __m128 sum = _mm_loadu_ps(p + S), nearest = _mm_loadu_ps(p);
+        for (int g = 1; g < S / 4; ++g) {
+            sum = _mm_add_ps(sum, _mm_loadu_ps(p + S + 4 * g));
+            nearest = _mm_min_ps(nearest, _mm_loadu_ps(p + 4 * g));
+        }
+        sum = _mm_add_ps(sum, _mm_movehl_ps(sum, sum));
+        sum = _mm_add_ss(sum, _mm_shuffle_ps(sum, sum, 1));
+        nearest = _mm_min_ps(nearest, _mm_movehl_ps(nearest, nearest));
+        nearest = _mm_min_ss(nearest, _mm_shuffle_ps(nearest, nearest, 1));
+        colour[x] = _mm_cvtss_f32(_mm_mul_ss(sum, inv));
+        z[x] = _mm_cvtss_f32(nearest);
+    }
+}
+#endif
+
+}  // namespace
+
+const sample_pattern &pattern_of(int samples) {
+    static const sample_pattern one = make_pattern({{0, 0}});
+    static const sample_pattern four = make_pattern({{-2, -6}, {6, -2}, {-6, 2}, {2, 6}});
+    static const sample_pattern eight = make_pattern({{1, -3}, {-1, 3}, {5, 1}, {-3, -5}, {-5, 5}, {-7, -1}, {3, 7}, {7, -7}});
+    static const sample_pattern sixteen =
+        make_pattern({{1, 1}, {-1, -3}, {-3, 2}, {4, -1}, {-5, -2}, {2, 5}, {5, 3}, {3, -5},
+                      {-2, 6}, {0, -7}, {-4, -6}, {-6, 4}, {-8, 0}, {7, -4}, {6, 7}, {-7, -8}});
+    switch (samples) {
+        case 4: return four;
+        case 8: return eight;
+        case 16: return sixteen;
+        default: return one;
+    }
+}
+
+void sample_store::resize(int width, int rows, int samples) {
+    const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(rows);
+    if (data_.size() < pixels * 2 * samples) data_.resize(pixels * 2 * samples);
+    if (touched_.size() < pixels) touched_.resize(pixels);
+    width_ = width;
+    rows_ = rows;
+    samples_ = samples;
+}
+
+void sample_store::start(int y0, int y1) {
+    origin_ = y0;
+    end_ = std::min(y1, y0 + rows_);
+    clear_rows(origin_, end_);
+}
+
+void sample_store::clear_rows(int y0, int y1) {
+    if (y0 >= y1) return;
+    std::fill(touched_row(y0), touched_row(y1), std::uint8_t{0});
+}
+
+void sample_store::initialise(float *pixel, float clear_colour) const {
+    std::fill(pixel, pixel + samples_, 1.0f);
+    std::fill(pixel + samples_, pixel + 2 * samples_, clear_colour);
+}
+
+void sample_store::resolve(canvas_t &canvas, zbuffer &depth, float clear_colour) {
+    const int S = samples_;
+    const float inv = 1.0f / static_cast<float>(S);
+    for (int y = origin_; y < end_; ++y) {
+        const std::uint8_t *touched = touched_row(y);
+        float *colour = canvas.pixels[y], *z = depth.row(y);
+#ifdef __SSE2__
+        switch (S) {
+            case 4: resolve_row_sse2<4>(pixel(0, y), touched, width_, clear_colour, colour, z); continue;
+            case 8: resolve_row_sse2<8>(pixel(0, y), touched, width_, clear_colour, colour, z); continue;
+            case 16: resolve_row_sse2<16>(pixel(0, y), touched, width_, clear_colour, colour, z); continue;
+            default: break;
+        }
+#endif
+        for (int x = 0; x < width_; ++x) {
+            if (!touched[x]) {
+                colour[x] = clear_colour;
+                z[x] = 1.0f;
+                continue;
+            }
+            const float *p = pixel(x, y);
+            float sum = 0.0f, nearest = p[0];
+            for (int s = 0; s < S; ++s) sum += p[S + s], nearest = std::min(nearest, p[s]);
+            colour[x] = sum * inv;
+            z[x] = nearest;
+        }
+    }
+}
+
+void msaa_bounds(const triangle_edges &t, const sample_pattern &pat, pixel_rect clip, int &x0, int &x1, int &y0, int &y1) {
+    std::int64_t X[3], Y[3];
+    for (int k = 0; k < 3; ++k) {  // the snapped vertices, exactly (multiples of 1/16)
+        X[k] = static_cast<std::int64_t>(t.x[k] * RASTER_SUBPIXEL_ONE);
+        Y[k] = static_cast<std::int64_t>(t.y[k] * RASTER_SUBPIXEL_ONE);
+    }
+    axis_bounds(std::min({X[0], X[1], X[2]}), std::max({X[0], X[1], X[2]}), pat.min_dx, pat.max_dx, clip.x0, clip.x1, x0, x1);
+    axis_bounds(std::min({Y[0], Y[1], Y[2]}), std::max({Y[0], Y[1], Y[2]}), pat.min_dy, pat.max_dy, clip.y0, clip.y1, y0, y1);
+}
+
+void msaa_candidate_rows(std::int64_t min_Y, std::int64_t max_Y, const sample_pattern &pat, int last_row, int &row0,
+                         int &row1) {
+    axis_bounds(min_Y, max_Y, pat.min_dy, pat.max_dy, 0, last_row + 1, row0, row1);
+}
+
+bool make_msaa_triangle(const triangle_edges &t, const sample_pattern &pat, pixel_rect clip, const float depth[3],
+                        const float intensity[3], msaa_triangle &out) {
+    msaa_bounds(t, pat, clip, out.min_x, out.max_x, out.min_y, out.max_y);
+    if (out.min_x > out.max_x || out.min_y > out.max_y) return false;
+    for (int k = 0; k < 3; ++k) {
+        out.e[k] = t.c[k] + t.a[k] * out.min_x + t.b[k] * out.min_y;
+        out.a[k] = t.a[k];
+        out.b[k] = t.b[k];
+    }
+    // Sample points lie within 16/16 px of the snapped box: |E| < 2·(span + 16)·span < 2^31.
+    out.narrow = t.span_x < FAST_SPAN_LIMIT && t.span_y < FAST_SPAN_LIMIT;
+    float planes[6];
+    attribute_planes_at(t.x, t.y, out.min_x, out.min_y, depth, intensity, planes);
+    out.z = planes[0], out.zdx = planes[1], out.zdy = planes[2];
+    out.i = planes[3], out.idx = planes[4], out.idy = planes[5];
+    return true;
+}
+
+void fill_msaa_rows(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
+                    bool depth_write, float clear_colour, int y0, int y1, bool portable) {
+    y0 = std::max(y0, f.min_y);
+    y1 = std::min(y1, f.max_y + 1);
+    if (y0 >= y1 || test == depth_func::never) return;
+#ifdef __SSE2__
+    if (f.narrow && !portable) {
+        switch (pat.count) {
+            case 4: return fill_rows_sse2_dispatch<4>(store, f, pat, test, depth_write, clear_colour, y0, y1);
+            case 8: return fill_rows_sse2_dispatch<8>(store, f, pat, test, depth_write, clear_colour, y0, y1);
+            case 16: return fill_rows_sse2_dispatch<16>(store, f, pat, test, depth_write, clear_colour, y0, y1);
+            default: break;
+        }
+    }
+#endif
+    fill_rows_portable(store, f, pat, test, depth_write, clear_colour, y0, y1);
+}
+
+void screen_gradient(const screen_vertex v[3], const float f[3], float &fdx, float &fdy) {
+    const double x[3] = {v[0].x, v[1].x, v[2].x}, y[3] = {v[0].y, v[1].y, v[2].y};
+    float planes[6];
+    attribute_planes_at(x, y, 0, 0, f, f, planes);
+    fdx = planes[1];
+    fdy = planes[2];
+}
+
+}  // namespace tiny3d::detail
+
+namespace tiny3d {
+
+result<sample_count> parse_sample_count(const std::string &text) {
+    std::string t = text;
+    if (!t.empty() && (t.back() == 'x' || t.back() == 'X')) t.pop_back();
+    if (t == "1") return sample_count::x1;
+    if (t == "4") return sample_count::x4;
+    if (t == "8") return sample_count::x8;
+    if (t == "16") return sample_count::x16;
+    return error{"", 0, -1, "samples per pixel \"" + text + "\": expected 1, 4, 8 or 16"};
+}
+
+}  // namespace tiny3d

@@ -1,0 +1,127 @@
+// msaa.h — multisampled filled triangles for the render context: the sample patterns, the
+// per-sample colour and depth store, the per-triangle setup, the row fill (portable 64-bit
+// kernel and the SSE2 32-bit kernel beside it) and the box resolve. Not installed; the
+// contract is in raster.h (render_context::begin_frame) and documentation/antialias.md.
+#ifndef TINY3D_MSAA_H
+#define TINY3D_MSAA_H
+
+#include <cstdint>
+#include <vector>
+
+#include "raster_internal.h"
+
+namespace tiny3d::detail {
+
+inline constexpr int MSAA_MAX_SAMPLES = 16;
+
+// Sample offsets from the pixel centre in 1/16 px (y down), on the snapping grid, so the
+// edge functions at every sample are exact integers: the standard 4-sample rotated grid and
+// 8- and 16-sample patterns (those of Direct3D 10.1 / Vulkan's standard sample locations).
+struct sample_pattern {
+    int count = 1;
+    std::int8_t dx[MSAA_MAX_SAMPLES] = {}, dy[MSAA_MAX_SAMPLES] = {};
+    int min_dx = 0, max_dx = 0, min_dy = 0, max_dy = 0;
+};
+// The pattern of 1, 4, 8 or 16 samples (1: the pixel centre); other counts give the centre.
+const sample_pattern &pattern_of(int samples);
+
+// The samples of a tile of rows [origin, origin + rows) of the canvas: per pixel S sample
+// depths, then S sample colours (floats, contiguous), and whether the pixel has been touched
+// (untouched pixels hold the clear values implicitly, so clearing a tile writes one byte
+// per pixel). Grows only (resize), never per frame. A tile small enough to stay in the
+// core's cache while every triangle of the frame that reaches it is drawn is what keeps
+// multisampling cheap (documentation/antialias.md).
+class sample_store {
+public:
+    void resize(int width, int rows, int samples);
+    int samples() const { return samples_; }
+    int width() const { return width_; }
+    // Makes the tile rows [y0, y1) (y1 − y0 ≤ rows of resize), every pixel untouched.
+    void start(int y0, int y1);
+    float *pixel(int x, int y) {
+        return data_.data() + (static_cast<std::size_t>(y - origin_) * width_ + x) * 2 * samples_;
+    }
+    std::uint8_t *touched_row(int y) { return touched_.data() + static_cast<std::size_t>(y - origin_) * width_; }
+    // Rows [y0, y1) := untouched.
+    void clear_rows(int y0, int y1);
+    // A pixel's first touch: every sample := (depth 1, clear_colour).
+    void initialise(float *pixel, float clear_colour) const;
+    // The tile's rows: canvas := the mean of each pixel's sample colours (clear_colour when
+    // untouched), depth := the nearest sample depth (1 when untouched).
+    void resolve(canvas_t &canvas, zbuffer &depth, float clear_colour);
+
+private:
+    int width_ = 0, rows_ = 0, samples_ = 1, origin_ = 0, end_ = 0;
+    std::vector<float> data_;
+    std::vector<std::uint8_t> touched_;
+};
+
+// One triangle ready for the multisample fill. Bounds: the pixels with a sample inside the
+// snapped vertex box. e: the three oriented, top-left-biased edge functions (as
+// triangle_edges) at the CENTRE of pixel (min_x, min_y), a/b their steps per pixel; the
+// value at sample s of a pixel adds a/16·dx[s] + b/16·dy[s] (exact). Depth and intensity
+// planes at that centre, steps per pixel. narrow: every edge value inside the bounds fits
+// 32 bits (the SSE2 kernel's precondition).
+struct msaa_triangle {
+    int min_x, max_x, min_y, max_y;
+    std::int64_t e[3], a[3], b[3];
+    float z, zdx, zdy, i, idx, idy;
+    bool narrow;
+    std::uint32_t state;  // the render context's draw state (set by the caller)
+};
+
+// From valid triangle_edges (bounds recomputed for the pattern, clamped to `clip`), window
+// depths and intensities per vertex. False when no pixel of the pattern's bounds is on the
+// clip rectangle.
+bool make_msaa_triangle(const triangle_edges &t, const sample_pattern &pat, pixel_rect clip, const float depth[3],
+                        const float intensity[3], msaa_triangle &out);
+
+// The pixels [x0, x1] × [y0, y1] with a sample of the pattern inside the snapped vertex box
+// of `t` (valid triangle_edges), clamped to `clip`; empty when x0 > x1 or y0 > y1.
+void msaa_bounds(const triangle_edges &t, const sample_pattern &pat, pixel_rect clip, int &x0, int &x1, int &y0, int &y1);
+
+// The candidate rows of snapped vertices with y range [min_Y, max_Y] (1/16 px): rows with a
+// sample row inside it, clamped to [0, last_row].
+void msaa_candidate_rows(std::int64_t min_Y, std::int64_t max_Y, const sample_pattern &pat, int last_row, int &row0,
+                         int &row1);
+
+// Draws rows [y0, y1) ∩ [min_y, max_y]: per sample coverage and depth test, the pixel's
+// intensity (at its centre, clamped to 0..1) into the passing samples. `portable` forces
+// the 64-bit scalar kernel (tests compare the two).
+void fill_msaa_rows(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
+                    bool depth_write, float clear_colour, int y0, int y1, bool portable = false);
+
+// The per-pixel path's multisampled walk: for each pixel of `t` (valid triangle_edges) inside
+// `clip` with at least one covered sample, calls fragment(x, y, mask) with bit s set for
+// each covered sample s (64-bit exact edge functions, the same rule as the fill).
+template <class Fragment>
+void for_each_covered_pixel(const triangle_edges &t, const sample_pattern &pat, pixel_rect clip, Fragment &&fragment);
+
+// The gradient (per pixel) of the plane through (x_k, y_k, f_k) of a screen triangle.
+void screen_gradient(const screen_vertex v[3], const float f[3], float &fdx, float &fdy);
+
+// ---- template definition ----
+
+template <class Fragment>
+void for_each_covered_pixel(const triangle_edges &t, const sample_pattern &pat, pixel_rect clip, Fragment &&fragment) {
+    int x0, x1, y0, y1;
+    msaa_bounds(t, pat, clip, x0, x1, y0, y1);
+    std::int64_t d[3][MSAA_MAX_SAMPLES];
+    for (int k = 0; k < 3; ++k)
+        for (int s = 0; s < pat.count; ++s)
+            d[k][s] = t.a[k] / RASTER_SUBPIXEL_ONE * pat.dx[s] + t.b[k] / RASTER_SUBPIXEL_ONE * pat.dy[s];
+    for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x) {
+            unsigned mask = 0;
+            for (int s = 0; s < pat.count; ++s) {
+                bool in = true;
+                for (int k = 0; k < 3; ++k) in = in && t.c[k] + t.a[k] * x + t.b[k] * y + d[k][s] >= 0;
+                mask |= static_cast<unsigned>(in) << s;
+            }
+            if (mask) fragment(x, y, mask);
+        }
+}
+
+}  // namespace tiny3d::detail
+
+#endif
