@@ -1,0 +1,207 @@
+// antialias.cpp — anti-aliased filled rendering against the converged image: Scene S
+// (BENCH_SCENE protocol: 1024², camera (0, 0, 3), fov 45°, Gouraud Lambert, depth LESS,
+// back-face culling, mesh turned 1° about +y per frame, 5 warm-up + 50 timed frames) at
+// icosphere level 6 and the 3,696-triangle torus knot, rows 1x, 4x, 8x, 16x (samples per
+// pixel) with one and two threads; and a textured plane at a grazing angle, bilinear
+// against trilinear.
+//
+// Error: the frame at angle 0 against render_reference (raster_reference.h: 16 × 16 = 256
+// samples per pixel, depth and shading per sample, box filter; 8 × 8 with --quick), in grey
+// levels 0–255. error_mean / error_max: over the SILHOUETTE pixels — those whose exact
+// coverage by the object (the reference of the same scene drawn flat white on black) lies
+// strictly between 1/1000 and 1 − 1/1000; the note gives the mean over all pixels and the
+// silhouette pixel count. The plane rows' error is over all pixels (the plane fills the
+// frame; its error is in the texture, not at silhouettes).
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "common/bench.h"
+#include "raster_reference.h"
+#include "renderer.h"
+
+using namespace tiny3d;
+
+namespace {
+
+constexpr int SIDE = 1024, PLANE_SIDE = 512;
+constexpr int WARMUP_FRAMES = 5, TIMED_FRAMES = 50;
+constexpr double NS_PER_MS = 1e6;
+constexpr sample_count MODES[] = {sample_count::x1, sample_count::x4, sample_count::x8, sample_count::x16};
+
+struct scene {
+    raster_mesh mesh;
+    raster_clusters clusters;
+    draw_params params;
+};
+
+mat4_t scene_s_view_projection() {
+    return mat4_multiply(mat4_perspective(static_cast<float>(45 * M_PI / 180), 1.0f, 0.1f, 100.0f),
+                         mat4_look_at({0, 0, 3}, {0, 0, 0}, {0, 1, 0}));
+}
+
+scene make_scene(const mesh &m) {
+    scene s;
+    s.mesh = make_raster_mesh(m, mesh_vertex_normals(m)).value();
+    s.clusters = make_raster_clusters(s.mesh).value();
+    const light_t light = {{1, 1, 1}, 1.0f};
+    s.params.lights = make_light_rig(std::span<const light_t>(&light, 1), 0.1f).value();
+    s.params.view_projection = scene_s_view_projection();
+    s.params.model = mat4_identity();
+    s.params.clusters = &s.clusters;
+    return s;
+}
+
+// Times frames (the mesh turned 1° per frame), then draws the frame at angle 0 into canvas.
+bench::timing time_frames(scene &s, int threads, sample_count n, canvas_t &canvas, int frames) {
+    render_context ctx(threads);
+    int frame = 0;
+    auto render = [&] {
+        s.params.model = mat4_rotate_y(static_cast<float>(frame++ * M_PI / 180));
+        if (!ctx.begin_frame(canvas, 0.0f, n).ok()) return;
+        ctx.draw(s.mesh, s.params);
+        ctx.end_frame();
+    };
+    for (int k = 0; k < WARMUP_FRAMES - 1; ++k) render();  // measure_ns adds one more
+    const bench::timing t = bench::measure_ns(frames, NS_PER_MS, render);
+    frame = 0;
+    render();
+    return t;
+}
+
+struct image_error {
+    double all_mean = 0, all_max = 0, edge_mean = 0, edge_max = 0;
+    long edge_pixels = 0;
+};
+
+// Grey-level error against the reference; silhouette pixels by the coverage image.
+image_error error_against(const canvas_t &image, const canvas_t &reference, const canvas_t *coverage) {
+    image_error e;
+    const long n = static_cast<long>(image.width) * image.height;
+    for (long i = 0; i < n; ++i) {
+        const double d = 255.0 * std::fabs(static_cast<double>(image.data[i]) - reference.data[i]);
+        e.all_mean += d / static_cast<double>(n);
+        e.all_max = std::max(e.all_max, d);
+        if (coverage && coverage->data[i] > 1e-3f && coverage->data[i] < 1 - 1e-3f) {
+            e.edge_mean += d;
+            e.edge_max = std::max(e.edge_max, d);
+            ++e.edge_pixels;
+        }
+    }
+    if (e.edge_pixels) e.edge_mean /= static_cast<double>(e.edge_pixels);
+    return e;
+}
+
+bool same_image(const canvas_t &a, const canvas_t &b) {
+    return std::equal(a.data, a.data + static_cast<long>(a.width) * a.height, b.data);
+}
+
+std::string fixed(double v, int digits) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.*f", digits, v);
+    return text;
+}
+
+// The grazing plane: a 40 × 40 quad at y = −0.5 under a camera at (0, 0, 0) looking along −z
+// and slightly down, a 256² checker of 2-texel cells repeated 20 times (u, v ∈ [0, 20]).
+struct plane_scene {
+    raster_mesh mesh;
+    texture tex;
+    draw_params params;
+};
+
+plane_scene make_plane() {
+    plane_scene s;
+    constexpr float HALF = 20.0f, REPEAT = 20.0f;
+    s.mesh.positions = {{-HALF, -0.5f, 1}, {HALF, -0.5f, 1}, {HALF, -0.5f, 1 - 2 * HALF}, {-HALF, -0.5f, 1 - 2 * HALF}};
+    s.mesh.normals.assign(4, vec3_t{0, 1, 0});
+    s.mesh.uvs = {{0, 0}, {REPEAT, 0}, {REPEAT, REPEAT}, {0, REPEAT}};
+    s.mesh.triangles = {{0, 2, 1}, {0, 3, 2}};  // counter-clockwise seen from above
+    s.mesh.bound_center = {0, -0.5f, 1 - HALF};
+    s.mesh.bound_radius = HALF * 1.5f;
+    s.tex.width = s.tex.height = 256;
+    for (int j = 0; j < 256; ++j)
+        for (int i = 0; i < 256; ++i) s.tex.texels.push_back(((i / 2 + j / 2) % 2) ? 0.9f : 0.1f);
+    (void)build_mipmaps(s.tex);
+    s.params.model = mat4_identity();
+    s.params.view_projection = mat4_multiply(mat4_perspective(static_cast<float>(60 * M_PI / 180), 1.0f, 0.1f, 100.0f),
+                                             mat4_look_at({0, 0, 0}, {0, -0.25f, -1}, {0, 1, 0}));
+    s.params.lights = make_light_rig(std::span<const light_t>(), 1.0f).value();
+    s.params.shade = shading::flat;
+    s.params.cull = cull_mode::none;
+    s.params.tex = &s.tex;
+    return s;
+}
+
+}  // namespace
+
+int main(int argc, char **argv) {
+    const bench::options o = bench::parse_options(argc, argv);
+    const int frames = o.quick ? 3 : TIMED_FRAMES;
+    const int reference_n = o.quick ? 8 : REFERENCE_SAMPLES_PER_AXIS;
+    std::vector<bench::row> rows;
+    canvas_ptr reference = make_canvas(SIDE, SIDE).value(), coverage = make_canvas(SIDE, SIDE).value();
+    canvas_ptr one = make_canvas(SIDE, SIDE).value(), two = make_canvas(SIDE, SIDE).value();
+    struct workload {
+        std::string name;
+        mesh m;
+    };
+    const workload loads[] = {{"Scene S L6", make_icosphere(6)}, {"torus knot", make_torus_knot(2, 3, 154, 12)}};
+    for (const workload &w : loads) {
+        scene s = make_scene(w.m);
+        scene white = s;
+        white.params.lights = make_light_rig(std::span<const light_t>(), 1.0f).value();
+        white.params.shade = shading::flat;
+        const reference_draw shaded{&s.mesh, s.params}, flat{&white.mesh, white.params};
+        const auto start = std::chrono::steady_clock::now();
+        const bool drawn = render_reference(*reference, std::span<const reference_draw>(&shaded, 1), 0.0f, reference_n).ok();
+        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        if (!drawn || !render_reference(*coverage, std::span<const reference_draw>(&flat, 1), 0.0f, reference_n)) {
+            std::fprintf(stderr, "bench antialias: reference failed\n");
+            return 1;
+        }
+        rows.push_back({"antialias", w.name + " reference " + std::to_string(reference_n * reference_n) + " spp",
+                        "reference", "ms/frame", {ms, ms, ms}, 0.0, 0.0, "grey levels", "render_reference, one frame"});
+        for (sample_count n : MODES) {
+            const std::string mode = std::to_string(static_cast<int>(n)) + "x";
+            const bench::timing t1 = time_frames(s, 1, n, *one, frames);
+            const bench::timing t2 = time_frames(s, 2, n, *two, frames);
+            const image_error e = error_against(*one, *reference, coverage.get());
+            const std::string note = "all pixels: mean " + fixed(e.all_mean, 3) + " max " + fixed(e.all_max, 1) + "; " +
+                                     std::to_string(e.edge_pixels) + " silhouette px";
+            rows.push_back({"antialias", w.name + " " + mode + " 1 thread", n == sample_count::x1 ? "faithful" : "fast",
+                            "ms/frame", t1, e.edge_mean, e.edge_max, "grey levels", note});
+            rows.push_back({"antialias", w.name + " " + mode + " 2 threads", "other", "ms/frame", t2, e.edge_mean,
+                            e.edge_max, "grey levels",
+                            same_image(*one, *two) ? "image identical to 1 thread" : "IMAGE DIFFERS FROM 1 THREAD"});
+        }
+    }
+    // The grazing plane: bilinear (the faithful filter) against trilinear, one sample per pixel.
+    plane_scene plane = make_plane();
+    canvas_ptr plane_ref = make_canvas(PLANE_SIDE, PLANE_SIDE).value(), plane_img = make_canvas(PLANE_SIDE, PLANE_SIDE).value();
+    const reference_draw pd{&plane.mesh, plane.params};
+    if (!render_reference(*plane_ref, std::span<const reference_draw>(&pd, 1), 0.0f, reference_n)) {
+        std::fprintf(stderr, "bench antialias: plane reference failed\n");
+        return 1;
+    }
+    for (texture_filter filter : {texture_filter::bilinear, texture_filter::trilinear}) {
+        plane.params.filter = filter;
+        render_context ctx(1);
+        auto render = [&] {
+            if (!ctx.begin_frame(*plane_img).ok()) return;
+            ctx.draw(plane.mesh, plane.params);
+            ctx.end_frame();
+        };
+        for (int k = 0; k < WARMUP_FRAMES - 1; ++k) render();
+        const bench::timing t = bench::measure_ns(o.quick ? 3 : 20, NS_PER_MS, render);
+        const image_error e = error_against(*plane_img, *plane_ref, nullptr);
+        const bool bilinear = filter == texture_filter::bilinear;
+        rows.push_back({"antialias", std::string("grazing plane 512^2 ") + (bilinear ? "bilinear" : "trilinear") + " 1 thread",
+                        bilinear ? "faithful" : "fast", "ms/frame", t, e.all_mean, e.all_max, "grey levels",
+                        "error over all pixels"});
+    }
+    return bench::report(o, "antialias", rows, "Anti-aliasing: ms per frame vs silhouette error (grey levels)");
+}
