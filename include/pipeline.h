@@ -63,6 +63,8 @@ void render_wireframe(canvas_t *canvas, vec3_t *vertices, int vertex_count, int 
 
 namespace tiny3d {
 
+class zbuffer;  // raster.h: the depth buffer wireframe_options::depth_test reads
+
 // ---- projection and viewport (src/pipeline/vertex_projection.cpp) ----------------------------
 
 struct screen_point {
@@ -197,6 +199,16 @@ struct wireframe_options {
     // may give a precomputed sphere (model space); null = computed on each call (O(V)).
     bool frustum_cull = true;
     const bounding_sphere *bounds = nullptr;
+    // Hidden lines: with a depth buffer of the canvas' size (e.g. render_context::depth()
+    // after drawing the filled objects), each edge's window depth, interpolated linearly
+    // along it on the screen (exact for a straight 3-D edge: z/w is affine in screen space),
+    // is tested every half pixel against the buffer, and only the visible parts are drawn:
+    // a point is visible when its depth ≤ the largest stored depth of the 2 × 2 pixels
+    // around it + depth_bias (so an edge ON a filled surface stays visible, one behind it is
+    // hidden). Visible parts end halfway between a visible and a hidden test point. Null:
+    // edges are always on top (no test). The buffer must outlive the call.
+    const zbuffer *depth_test = nullptr;
+    float depth_bias = 1e-4f;  // window-depth units (0..1), ≥ 0
 };
 
 struct wireframe_stats {
@@ -230,6 +242,8 @@ public:
     std::vector<projected_vertex> vertices;    // per position
     std::vector<std::uint8_t> face_front;  // per face (hide_back_edges)
     std::vector<drawn_edge> edges;         // the frame's visible edges
+    std::vector<float> end_depths;         // depth_test only: per mesh edge, the window depths
+                                           // at the two ends of its visible part
     // line_method::tabulated: the tables of the last few thicknesses drawn, most recent
     // first (at most kLineTables), so alternating widths do not rebuild them every frame.
     static constexpr std::size_t kLineTables = 4;
@@ -240,7 +254,8 @@ public:
 // (= proj · view · model), clipped as clip_segment does and then to the circle if asked.
 // Errors (nothing drawn): an edge index ≥ positions.size(), edge_intensity of the wrong
 // size, hide_back_edges without a matching adjacency, thickness not finite or ≤ 0 (or
-// above line_table::kMaxThickness with line_method::tabulated).
+// above line_table::kMaxThickness with line_method::tabulated), a depth_test buffer of
+// another size than the canvas or a depth_bias not finite or < 0.
 // Skipped silently (not errors): edges with a NaN or infinite end, whether from a position
 // or from the matrix (tests/hostile_test.cpp).
 status render_wireframe(canvas_t &canvas, const mesh &m, const mat4_t &model_view_proj,

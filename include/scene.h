@@ -9,7 +9,9 @@
 //  * filled — triangles through tiny3d::render_context with a z-buffer, shaded flat,
 //    Gouraud or Phong (tiny3d::shading).
 // Lights and positions are in world space; the camera gives view and projection.
-// Filled objects are drawn first (depth-tested among themselves), wireframes on top.
+// Filled objects are drawn first (depth-tested among themselves, with scene::samples per
+// pixel), then the wireframes: hidden where a filled object is in front of them
+// (scene::hidden_lines, wireframe_options::depth_test), or always on top.
 // After the first frame, rendering allocates nothing (every buffer is kept and reused).
 #ifndef TINY3D_SCENE_H
 #define TINY3D_SCENE_H
@@ -65,6 +67,8 @@ public:
     camera cam;
     edge_lighting edge_model = edge_lighting::face_normals;
     float background = 0.0f;              // clear intensity
+    sample_count samples = sample_count::x1;  // filled objects' samples per pixel (raster.h)
+    bool hidden_lines = true;             // false: wireframes always on top of filled objects
 
     // Adds an object drawing `m` (copied; edges are derived if missing) with the identity
     // model matrix. Everything per mesh (edge normals, adjacency, the triangle mesh) is

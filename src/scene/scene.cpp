@@ -87,7 +87,7 @@ status scene::render(canvas_t &canvas) {
     bool any_filled = false;
     for (const auto &obj : objects_) any_filled = any_filled || obj->style.mode == draw_mode::filled;
     if (any_filled) {
-        if (status s = buffers_->raster.begin_frame(canvas, background); !s) return s;
+        if (status s = buffers_->raster.begin_frame(canvas, background, samples); !s) return s;
         for (const auto &obj : objects_) {
             if (obj->style.mode != draw_mode::filled) continue;
             draw_params params;
@@ -122,6 +122,7 @@ status scene::render(canvas_t &canvas) {
         options.edge_intensity = obj->ink;
         options.hide_back_edges = obj->style.hide_back_edges;
         options.adjacency = &obj->adjacency;
+        if (any_filled && hidden_lines) options.depth_test = &buffers_->raster.depth();
         const mat4_t mvp = mat4_multiply(view_proj.value(), obj->model);
         if (status s = render_wireframe(canvas, obj->shape, mvp, options, buffers_->wire); !s)
             return scene_error("wireframe: " + s.message());

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "pipeline.h"
+#include "raster.h"
 
 #ifdef __SSE2__
 #include <emmintrin.h>
@@ -18,9 +19,10 @@ namespace tiny3d {
 
 namespace {
 
-// A clipped segment on the screen.
+// A clipped segment on the screen: ends, mean depth, end depths.
 struct screen_segment {
     float x0, y0, x1, y1, depth;
+    float depth0 = 0, depth1 = 0;
 };
 
 vec4_t lerp4_d(const vec4_t &a, const vec4_t &b, double t) {
@@ -47,7 +49,7 @@ bool clip_and_project(const vec4_t &a, const vec4_t &b, int width, int height, s
     const screen_point p = to_screen(c.t0 > 0.0 ? end_at(c.t0, from_b.t1) : a, width, height);
     const screen_point q = to_screen(c.t1 < 1.0 ? end_at(c.t1, from_b.t0) : b, width, height);
     if (p.behind || q.behind) return false;  // only for matrices whose near plane allows w ≤ 0
-    out = {p.x, p.y, q.x, q.y, 0.5f * (p.depth + q.depth)};
+    out = {p.x, p.y, q.x, q.y, 0.5f * (p.depth + q.depth), p.depth, q.depth};
     return true;
 }
 
@@ -56,8 +58,10 @@ bool clip_to_circle(const circle &c, screen_segment &s) {
     const segment_clip k = clip_segment_circle(c, s.x0, s.y0, s.x1, s.y1);
     if (!k.visible) return false;
     const double dx = double(s.x1) - s.x0, dy = double(s.y1) - s.y0;
+    const double dz = double(s.depth1) - s.depth0;
     const screen_segment cut{float(s.x0 + k.t0 * dx), float(s.y0 + k.t0 * dy), float(s.x0 + k.t1 * dx),
-                             float(s.y0 + k.t1 * dy), s.depth};
+                             float(s.y0 + k.t1 * dy), s.depth,  float(s.depth0 + k.t0 * dz),
+                             float(s.depth0 + k.t1 * dz)};
     s = cut;
     return true;
 }
@@ -253,6 +257,7 @@ struct listing {
     const wireframe_workspace &ws;
     const edge_adjacency *hide;  // non-null: hide back edges
     const circle *round;         // non-null: clip to this circle
+    std::vector<float> *end_depths;  // non-null (depth_test): record each listed edge's end depths
     wireframe_stats &st;
 };
 
@@ -269,7 +274,7 @@ struct listing {
     const projected_vertex &p = l.ws.vertices[a], &q = l.ws.vertices[b];
     screen_segment s;
     if ((p.outcode | q.outcode) == 0) {
-        s = {p.x, p.y, q.x, q.y, 0.5f * (p.depth + q.depth)};
+        s = {p.x, p.y, q.x, q.y, 0.5f * (p.depth + q.depth), p.depth, q.depth};
     } else if ((p.outcode & q.outcode) != 0 ||
                !clip_and_project(l.ws.clip[a], l.ws.clip[b], l.canvas.width, l.canvas.height, s)) {
         ++l.st.edges_clipped_away;
@@ -280,6 +285,7 @@ struct listing {
         return false;
     }
     out = {s.x0, s.y0, s.x1, s.y1, s.depth, std::uint32_t(e)};
+    if (l.end_depths) (*l.end_depths)[2 * e] = s.depth0, (*l.end_depths)[2 * e + 1] = s.depth1;
     return true;
 }
 
@@ -289,10 +295,11 @@ template <class OnListed>
 void list_edges(const canvas_t &canvas, const mesh &m, const wireframe_options &o, wireframe_workspace &ws,
                 wireframe_stats &st, OnListed on_listed) {
     const circle circ = circular_viewport(canvas);
+    if (o.depth_test) ws.end_depths.resize(2 * m.edges.size());
     const listing general{canvas, ws, o.hide_back_edges ? o.adjacency : nullptr, o.circular_viewport ? &circ : nullptr,
-                          st};
+                          o.depth_test ? &ws.end_depths : nullptr, st};
     // Nonzero when every edge needs the general path (OR-ed into the ends' outcodes).
-    const std::uint32_t all_general = general.hide || general.round ? 1u : 0u;
+    const std::uint32_t all_general = general.hide || general.round || general.end_depths ? 1u : 0u;
     const projected_vertex *vertex = ws.vertices.data();
     const edge *const edges = m.edges.data();
     const std::size_t edge_count = m.edges.size();
@@ -335,6 +342,59 @@ std::uint32_t highest_edge_end(const std::vector<edge> &edges) {
     return highest;
 }
 
+// The listed edges far to near (depth_sort) and the depth cue's range (depth_cue).
+void order_edges(const wireframe_options &o, wireframe_workspace &ws, edge_painter &painter) {
+    if (o.depth_sort)  // far (larger depth) first; equal depths by edge index
+        std::sort(ws.edges.begin(), ws.edges.end(), [](const drawn_edge &p, const drawn_edge &q) {
+            return p.depth != q.depth ? p.depth > q.depth : p.edge < q.edge;
+        });
+    if (o.depth_cue && !ws.edges.empty()) {
+        const auto [lo, hi] = std::minmax_element(
+            ws.edges.begin(), ws.edges.end(), [](const drawn_edge &p, const drawn_edge &q) { return p.depth < q.depth; });
+        painter.set_depth_range(lo->depth, hi->depth);
+    }
+}
+
+// Hidden-line test of one screen point at window depth z: the largest stored depth of the
+// 2 × 2 pixels whose centres surround (x, y) (clamped to the buffer), plus bias.
+bool point_visible(const zbuffer &depth, float x, float y, float z, float bias) {
+    const int w = depth.width(), h = depth.height();
+    const float fx = std::clamp(x - 0.5f, 0.0f, float(w - 1)), fy = std::clamp(y - 0.5f, 0.0f, float(h - 1));
+    const int x0 = int(fx), y0 = int(fy), x1 = std::min(x0 + 1, w - 1), y1 = std::min(y0 + 1, h - 1);
+    const float stored = std::max(std::max(depth.at(x0, y0), depth.at(x1, y0)), std::max(depth.at(x0, y1), depth.at(x1, y1)));
+    return z <= stored + bias;
+}
+
+// Paints the visible parts of d (end depths z0, z1): test points every ≤ ½ px along it,
+// each run of visible points drawn as one segment ending halfway to its hidden neighbours
+// (the whole edge, exactly as listed, when every point is visible).
+void paint_visible_parts(const drawn_edge &d, float z0, float z1, const zbuffer &depth, float bias, edge_painter &painter) {
+    const double dx = double(d.x1) - d.x0, dy = double(d.y1) - d.y0;
+    constexpr double STEP = 0.5;  // px between test points
+    const int steps = std::max(1, int(std::ceil(std::sqrt(dx * dx + dy * dy) / STEP)));
+    auto visible_at = [&](int k) {
+        const double t = double(k) / steps;
+        return point_visible(depth, float(d.x0 + t * dx), float(d.y0 + t * dy), float(z0 + t * (double(z1) - z0)), bias);
+    };
+    int run_start = -1;  // first visible point of the current run
+    bool all = true;
+    auto paint_run = [&](int first, int last) {  // points first..last visible
+        const double t0 = first == 0 ? 0.0 : (first - 0.5) / steps, t1 = last == steps ? 1.0 : (last + 0.5) / steps;
+        drawn_edge part = d;
+        part.x0 = float(d.x0 + t0 * dx), part.y0 = float(d.y0 + t0 * dy);
+        part.x1 = float(d.x0 + t1 * dx), part.y1 = float(d.y0 + t1 * dy);
+        painter.paint(part);
+    };
+    for (int k = 0; k <= steps; ++k) {
+        const bool v = visible_at(k);
+        all = all && v;
+        if (v && run_start < 0) run_start = k;
+        if (!v && run_start >= 0) paint_run(run_start, k - 1), run_start = -1;
+    }
+    if (all) return painter.paint(d);
+    if (run_start >= 0) paint_run(run_start, steps);
+}
+
 status check_inputs(const canvas_t &canvas, const mesh &m, const wireframe_options &o) {
     auto fail = [](std::string why) { return status(error{"", 0, -1, "render_wireframe: " + std::move(why)}); };
     if (!canvas.data || canvas.width <= 0 || canvas.height <= 0) return fail("canvas has no pixels");
@@ -349,6 +409,12 @@ status check_inputs(const canvas_t &canvas, const mesh &m, const wireframe_optio
         for (std::size_t e = 0; e < m.edges.size(); ++e)
             if (m.edges[e].a >= n || m.edges[e].b >= n)
                 return fail("edge " + std::to_string(e) + " refers to a position out of range");
+    if (o.depth_test && (o.depth_test->width() != canvas.width || o.depth_test->height() != canvas.height))
+        return fail("depth_test buffer is " + std::to_string(o.depth_test->width()) + " x " +
+                    std::to_string(o.depth_test->height()) + ", the canvas " + std::to_string(canvas.width) + " x " +
+                    std::to_string(canvas.height));
+    if (o.depth_test && !(std::isfinite(o.depth_bias) && o.depth_bias >= 0.0f))
+        return fail("depth_bias must be finite and >= 0");
     if (o.hide_back_edges) {
         for (std::uint32_t idx : m.indices)
             if (idx >= n) return fail("a face refers to a position out of range");
@@ -392,7 +458,13 @@ status render_wireframe(canvas_t &canvas, const mesh &m, const mat4_t &model_vie
 
     edge_painter painter(canvas, o, table, st);
     const auto list_only = [](const drawn_edge &) {};
-    if (!o.depth_sort && !o.depth_cue) {  // mesh order, nothing to know first: paint as listed
+    if (o.depth_test) {  // hidden lines: list, order, then paint each edge's visible parts
+        list_edges(canvas, m, o, ws, st, list_only);
+        order_edges(o, ws, painter);
+        for (const drawn_edge &d : ws.edges)
+            paint_visible_parts(d, ws.end_depths[2 * d.edge], ws.end_depths[2 * d.edge + 1], *o.depth_test, o.depth_bias,
+                                painter);
+    } else if (!o.depth_sort && !o.depth_cue) {  // mesh order, nothing to know first: paint as listed
         if (!painter.uniform_ink()) {
             list_edges(canvas, m, o, ws, st, [&](const drawn_edge &d) { painter.paint(d); });
         } else if (o.intensity > 0.0f) {
@@ -403,15 +475,7 @@ status render_wireframe(canvas_t &canvas, const mesh &m, const mat4_t &model_vie
         }
     } else {
         list_edges(canvas, m, o, ws, st, list_only);
-        if (o.depth_sort)  // far (larger depth) first; equal depths by edge index
-            std::sort(ws.edges.begin(), ws.edges.end(), [](const drawn_edge &p, const drawn_edge &q) {
-                return p.depth != q.depth ? p.depth > q.depth : p.edge < q.edge;
-            });
-        if (o.depth_cue && !ws.edges.empty()) {
-            const auto [lo, hi] = std::minmax_element(
-                ws.edges.begin(), ws.edges.end(), [](const drawn_edge &p, const drawn_edge &q) { return p.depth < q.depth; });
-            painter.set_depth_range(lo->depth, hi->depth);
-        }
+        order_edges(o, ws, painter);
         for (const drawn_edge &d : ws.edges) painter.paint(d);
     }
     painter.finish();
