@@ -111,6 +111,7 @@ int main(int argc, char **argv) {
     cli.number("--fps", fps, 0.1, 1000.0, "frames per second: frame k shows time k / fps (default 30)");
     cli.number("--period", period, 0.1, 3600.0, "seconds per loop of every motion (default 4)");
     cli.flag("--faithful-lambert", faithful, "light the wireframes with the report's per-edge Lambert");
+    cli.add_samples(tiny3d::sample_count::x4);
     if (const int status = cli.parse(argc, argv); status >= 0) return status;
     const demo::common_options &o = cli.common;
 
@@ -118,6 +119,7 @@ int main(int argc, char **argv) {
     scene.cam.eye = {0.0f, 0.6f, 9.0f};
     scene.cam.fov_y = 0.75f;
     scene.ambient = AMBIENT;
+    scene.samples = o.samples;
     scene.edge_model = faithful ? tiny3d::edge_lighting::faithful_lambert : tiny3d::edge_lighting::face_normals;
     // Key light from above (it sweeps left to right), fill light from the lower right front.
     scene.lights = {{key_light_at(0.0), 0.75f}, {{1.0f, -0.4f, 0.6f}, 0.3f}};

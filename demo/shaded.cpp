@@ -28,6 +28,7 @@ tiny3d::texture checker() {
     for (int y = 0; y < CHECKER_SIDE; ++y)
         for (int x = 0; x < CHECKER_SIDE; ++x)
             t.texels.push_back(((x / CHECKER_CELL + y / CHECKER_CELL) % 2) ? 1.0f : 0.25f);
+    (void)tiny3d::build_mipmaps(t);  // cannot fail: the size and texel count match
     return t;
 }
 
@@ -42,6 +43,7 @@ int main(int argc, char **argv) {
                            "(bottom row) and a translucent sphere in front: 36 frames, 10 degrees per frame.");
     cli.add_sequence_options(FRAMES, 960, 720);
     cli.add_threads(2);
+    cli.add_samples(tiny3d::sample_count::x4);
     if (const int status = cli.parse(argc, argv); status >= 0) return status;
     const demo::common_options &o = cli.common;
 
@@ -68,7 +70,7 @@ int main(int argc, char **argv) {
     for (int frame = o.first_frame; frame <= o.last_frame; ++frame) {
         const float angle = radians(DEGREES_PER_FRAME * static_cast<float>(frame));
         timer.start();
-        if (tiny3d::status s = ctx.begin_frame(**canvas, 0.02f); !s) return cli.fail(s.message());
+        if (tiny3d::status s = ctx.begin_frame(**canvas, 0.02f, o.samples); !s) return cli.fail(s.message());
         tiny3d::draw_params p;
         p.view_projection = view_projection;
         p.lights = *rig;
@@ -83,6 +85,7 @@ int main(int argc, char **argv) {
         }
         p.shade = tiny3d::shading::flat;
         p.tex = &tex;
+        p.filter = tiny3d::texture_filter::trilinear;  // mipmapped: no stripes on faces seen edge-on
         for (int k = 0; k < 2; ++k) {
             p.perspective_correct = k == 1;
             p.model = mat4_multiply(mat4_translate(k == 0 ? -1.9f : 1.9f, -2.4f, 0.0f),

@@ -141,6 +141,19 @@ void command_line::add_threads(int default_threads) {
     integer("--threads", common.threads, 1, 16, "worker threads (default " + std::to_string(default_threads) + ")");
 }
 
+void command_line::add_samples(tiny3d::sample_count default_samples) {
+    common.samples = default_samples;
+    custom("--samples", "N",
+           "samples per pixel of the filled triangles: 1 (aliased), 4, 8 or 16 (default " +
+               std::to_string(static_cast<int>(default_samples)) + ")",
+           [this](const std::string &text) {
+               const tiny3d::result<tiny3d::sample_count> n = tiny3d::parse_sample_count(text);
+               if (!n) return "--samples: " + n.message();
+               common.samples = n.value();
+               return std::string();
+           });
+}
+
 void command_line::add_png() {
     flag("--png", common.png, "write a PNG beside every PGM (same name, .png); the PGM is always written");
 }
