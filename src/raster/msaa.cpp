@@ -20,6 +20,8 @@ sample_pattern make_pattern(std::initializer_list<std::pair<int, int>> offsets) 
     for (const auto &[x, y] : offsets) {
         p.dx[s] = static_cast<std::int8_t>(x);
         p.dy[s] = static_cast<std::int8_t>(y);
+        p.fdx[s] = static_cast<float>(x) / RASTER_SUBPIXEL_ONE;
+        p.fdy[s] = static_cast<float>(y) / RASTER_SUBPIXEL_ONE;
         p.min_dx = std::min(p.min_dx, x), p.max_dx = std::max(p.max_dx, x);
         p.min_dy = std::min(p.min_dy, y), p.max_dy = std::max(p.max_dy, y);
         ++s;
@@ -39,20 +41,10 @@ inline void axis_bounds(std::int64_t lo, std::int64_t hi, int lo_off, int hi_off
     last = static_cast<int>(std::min<std::int64_t>(floor_div(hi - HALF - lo_off, RASTER_SUBPIXEL_ONE), clip1 - 1));
 }
 
-// Per edge: the offsets d[k][s] of the edge value at each sample from the pixel centre, and
-// their extremes.
-struct sample_offsets {
-    std::int64_t d[3][MSAA_MAX_SAMPLES];
+// Per edge: the extremes over the pattern of the offsets of the edge value at a sample
+// from the value at the pixel centre.
+struct edge_extremes {
     std::int64_t lo[3], hi[3];
-    sample_offsets(const msaa_triangle &f, const sample_pattern &pat) {
-        for (int k = 0; k < 3; ++k) {
-            lo[k] = INT64_MAX, hi[k] = INT64_MIN;
-            for (int s = 0; s < pat.count; ++s) {
-                d[k][s] = f.a[k] / RASTER_SUBPIXEL_ONE * pat.dx[s] + f.b[k] / RASTER_SUBPIXEL_ONE * pat.dy[s];
-                lo[k] = std::min(lo[k], d[k][s]), hi[k] = std::max(hi[k], d[k][s]);
-            }
-        }
-    }
     // The columns (relative to min_x) of a row whose edge values at the first column's
     // centre are e[]: where some sample could pass every edge. Empty when lo > hi.
     void row_span(const std::int64_t e[3], const msaa_triangle &f, int &lo_x, int &hi_x) const {
@@ -65,6 +57,20 @@ struct sample_offsets {
         }
         lo_x = static_cast<int>(first);
         hi_x = static_cast<int>(std::max<std::int64_t>(last, first - 1));
+    }
+};
+
+// The offsets d[k][s] themselves (the portable kernel).
+struct sample_offsets : edge_extremes {
+    std::int64_t d[3][MSAA_MAX_SAMPLES];
+    sample_offsets(const msaa_triangle &f, const sample_pattern &pat) {
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = INT64_MAX, hi[k] = INT64_MIN;
+            for (int s = 0; s < pat.count; ++s) {
+                d[k][s] = f.a[k] / RASTER_SUBPIXEL_ONE * pat.dx[s] + f.b[k] / RASTER_SUBPIXEL_ONE * pat.dy[s];
+                lo[k] = std::min(lo[k], d[k][s]), hi[k] = std::max(hi[k], d[k][s]);
+            }
+        }
     }
 };
 
@@ -133,18 +139,31 @@ template <int S, depth_func Test>
 void fill_rows_sse2(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, bool depth_write,
                     float clear_colour, int y0, int y1) {
     constexpr int G = S / 4;
-    const sample_offsets off(f, pat);
+    // The edge offsets a/16·dx + b/16·dy four samples at a time, in float: a·(dx/16) is the
+    // integer −Δy·dx, |·| < 2^18, so every product and sum is exact and converts back to the
+    // portable kernel's integers; the depth offsets are the portable kernel's float
+    // operations lane by lane.
+    edge_extremes off;
     __m128i d[3][G];
     __m128 dz[G];
+    __m128 lo_f[3], hi_f[3];
     for (int g = 0; g < G; ++g) {
-        for (int k = 0; k < 3; ++k)
-            d[k][g] = _mm_setr_epi32(static_cast<int>(off.d[k][4 * g]), static_cast<int>(off.d[k][4 * g + 1]),
-                                     static_cast<int>(off.d[k][4 * g + 2]), static_cast<int>(off.d[k][4 * g + 3]));
-        alignas(16) float z4[4];
-        for (int l = 0; l < 4; ++l)
-            z4[l] = f.zdx * (static_cast<float>(pat.dx[4 * g + l]) / RASTER_SUBPIXEL_ONE) +
-                    f.zdy * (static_cast<float>(pat.dy[4 * g + l]) / RASTER_SUBPIXEL_ONE);
-        dz[g] = _mm_load_ps(z4);
+        const __m128 ox = _mm_load_ps(pat.fdx + 4 * g), oy = _mm_load_ps(pat.fdy + 4 * g);
+        for (int k = 0; k < 3; ++k) {
+            const __m128 v = _mm_add_ps(_mm_mul_ps(_mm_set1_ps(static_cast<float>(f.a[k])), ox),
+                                        _mm_mul_ps(_mm_set1_ps(static_cast<float>(f.b[k])), oy));
+            d[k][g] = _mm_cvtps_epi32(v);
+            lo_f[k] = g ? _mm_min_ps(lo_f[k], v) : v;
+            hi_f[k] = g ? _mm_max_ps(hi_f[k], v) : v;
+        }
+        dz[g] = _mm_add_ps(_mm_mul_ps(_mm_set1_ps(f.zdx), ox), _mm_mul_ps(_mm_set1_ps(f.zdy), oy));
+    }
+    for (int k = 0; k < 3; ++k) {  // across the lanes
+        __m128 l = _mm_min_ps(lo_f[k], _mm_movehl_ps(lo_f[k], lo_f[k])), h = _mm_max_ps(hi_f[k], _mm_movehl_ps(hi_f[k], hi_f[k]));
+        l = _mm_min_ss(l, _mm_shuffle_ps(l, l, 1));
+        h = _mm_max_ss(h, _mm_shuffle_ps(h, h, 1));
+        off.lo[k] = _mm_cvtss_si32(l);
+        off.hi[k] = _mm_cvtss_si32(h);
     }
     const std::int32_t a[3] = {static_cast<std::int32_t>(f.a[0]), static_cast<std::int32_t>(f.a[1]),
                                static_cast<std::int32_t>(f.a[2])};
@@ -222,9 +241,18 @@ void fill_rows_sse2_dispatch(sample_store &store, const msaa_triangle &f, const 
 // not be (lanes add in parallel), but the order is fixed, so the image is deterministic.
 template <int S>
 void resolve_row_sse2(const float *p, const std::uint8_t *touched, int width, float clear_colour, float *colour, float *z) {
-    const __m128 inv = _mm_set1_ps(1.0f / S);
+    const __m128 inv = _mm_set1_ps(1.0f / S), clear = _mm_set1_ps(clear_colour), far = _mm_set1_ps(1.0f);
     for (int x = 0; x < width; ++x, p += 2 * S) {
         if (!touched[x]) {
+            // Sixteen untouched pixels at once (the background).
+            if (x + 16 <= width &&
+                _mm_movemask_epi8(_mm_cmpeq_epi8(_mm_loadu_si128(reinterpret_cast<const __m128i *>(touched + x)),
+                                                 _mm_setzero_si128())) == 0xFFFF) {
+                for (int k = 0; k < 16; k += 4) _mm_storeu_ps(colour + x + k, clear), _mm_storeu_ps(z + x + k, far);
+                x += 15;
+                p += 15 * 2 * S;
+                continue;
+            }
             colour[x] = clear_colour;
             z[x] = 1.0f;
             continue;

@@ -20,6 +20,7 @@ inline constexpr int MSAA_MAX_SAMPLES = 16;
 struct sample_pattern {
     int count = 1;
     std::int8_t dx[MSAA_MAX_SAMPLES] = {}, dy[MSAA_MAX_SAMPLES] = {};
+    alignas(16) float fdx[MSAA_MAX_SAMPLES] = {}, fdy[MSAA_MAX_SAMPLES] = {};  // dx/16, dy/16 (px), exact
     int min_dx = 0, max_dx = 0, min_dy = 0, max_dy = 0;
 };
 // The pattern of 1, 4, 8 or 16 samples (1: the pixel centre); other counts give the centre.
