@@ -74,8 +74,6 @@ struct sample_offsets : edge_extremes {
     }
 };
 
-bool passes(depth_func test, float z, float stored) { return depth_passes(test, z, stored); }
-
 // The portable kernel: 64-bit edges, one sample at a time.
 void fill_rows_portable(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
                         bool depth_write, float clear_colour, int y0, int y1) {
@@ -110,7 +108,7 @@ void fill_rows_portable(sample_store &store, const msaa_triangle &f, const sampl
             const float zc = zr + f.zdx * static_cast<float>(x), shade = clamp01(ir + f.idx * static_cast<float>(x));
             for (int s = 0; s < S; ++s) {
                 const float z = zc + dz[s];
-                if (!((mask >> s) & 1) || !passes(test, z, p[s])) continue;
+                if (!((mask >> s) & 1) || !depth_passes(test, z, p[s])) continue;
                 if (depth_write) p[s] = z;
                 p[S + s] = shade;
             }

@@ -190,7 +190,9 @@ struct cluster_verdict {
 cluster_verdict classify_cluster(const cluster_view &v, const raster_cluster &c);
 
 // Depth comparison as a function, shared by the scalar paths.
-inline bool depth_passes(depth_func test, float fragment, float stored) {
+// (A template so the double-precision reference renderer uses the same comparisons.)
+template <class Depth>
+inline bool depth_passes(depth_func test, Depth fragment, Depth stored) {
     switch (test) {
         case depth_func::never: return false;
         case depth_func::less: return fragment < stored;

@@ -126,21 +126,6 @@ status prepare(const reference_draw &d, std::size_t index, int width, int height
     return {};
 }
 
-// Depth test in double with the library's comparison semantics.
-bool passes(depth_func f, double z, double stored) {
-    switch (f) {
-        case depth_func::never: return false;
-        case depth_func::less: return z < stored;
-        case depth_func::less_equal: return z <= stored;
-        case depth_func::equal: return z == stored;
-        case depth_func::greater: return z > stored;
-        case depth_func::greater_equal: return z >= stored;
-        case depth_func::not_equal: return z != stored;
-        case depth_func::always: return true;
-    }
-    return false;
-}
-
 }  // namespace
 
 status render_reference(canvas_t &target, std::span<const reference_draw> draws, float clear_intensity,
@@ -200,7 +185,7 @@ status render_reference(canvas_t &target, std::span<const reference_draw> draws,
                             const double l[3] = {e0 * inv_area, e1 * inv_area, e2 * inv_area};
                             const double z = l[0] * r.z[0] + l[1] * r.z[1] + l[2] * r.z[2];
                             const std::size_t at = (static_cast<std::size_t>(py - y0) * width + px) * per_pixel + k;
-                            if (!passes(p.depth, z, depth[at])) continue;
+                            if (!detail::depth_passes(p.depth, z, depth[at])) continue;
                             double w[3] = {l[0], l[1], l[2]};
                             if (p.perspective_correct) {
                                 const double b = l[0] * r.q[0] + l[1] * r.q[1] + l[2] * r.q[2];
