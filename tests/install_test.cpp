@@ -4,8 +4,9 @@
 // (pkg-config pointed at the staged tiny3d.pc, PKG_CONFIG_SYSROOT_DIR = the staging root).
 // On a machine without pkg-config the staged tiny3d.pc is read by hand instead: its
 // variables expanded, its Cflags and Libs used for the same build. Each built program must
-// run and write its image; make uninstall then removes what make install copied. TINY3D_TEST_WITHOUT_PKG_CONFIG=1 in the environment tests
-// that path on a machine that has pkg-config.
+// run and write its image; make uninstall then removes what make install copied.
+// TINY3D_TEST_WITHOUT_PKG_CONFIG=1 in the environment tests that path on a machine that
+// has pkg-config.
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
