@@ -3,7 +3,7 @@
 //
 //   render FILE.obj|FILE.ply [--mode flat|gouraud|phong|wireframe|hidden-line]
 //          [--texture FILE.pgm] [--turntable N] [--eye X,Y,Z] [--target X,Y,Z] [--up X,Y,Z]
-//          [--fov DEG] [--ortho] [--light X,Y,Z[,I]]... [--ambient X] [--info] + the common
+//          [--fov DEG] [--ortho] [--light X,Y,Z[,I]]... [--ambient X] [--aa N] [--info] + the common
 //          options (--out, --frames, --size, --threads, --png); render --help explains each.
 //
 // The scene: the mesh turns about the up axis through its bounding sphere's centre, one
@@ -44,6 +44,7 @@ struct settings {
     bool eye_given = false, target_given = false, up_given = false;
     double fov_degrees = kDefaultFovDegrees;
     bool ortho = false, info = false;
+    tiny3d::sample_count samples = tiny3d::sample_count::x1;  // --aa
     float ambient = kAmbient;
     std::vector<light_t> lights;  // camera frame; intensity < 0 = "split the rest evenly"
 };
@@ -218,6 +219,15 @@ int main(int argc, char **argv) {
                "intensity I (default: 0.85 shared by the lights without one); replaces the default two",
                [&s](const std::string &v) { return parse_light(v, s.lights); }, true);
     cli.number("--ambient", s.ambient, 0.0f, 1.0f, "ambient light 0..1 (default 0.1)");
+    cli.custom("--aa", "N",
+               "anti-aliasing of the filled modes: 1 (default), 4, 8 or 16 samples per pixel (the edge modes' "
+               "lines are always anti-aliased)",
+               [&s](const std::string &v) -> std::string {
+                   auto n = tiny3d::parse_sample_count(v);
+                   if (!n) return "--aa wants 1, 4, 8 or 16, got '" + v + "'";
+                   s.samples = *n;
+                   return "";
+               });
     cli.flag("--info", s.info, "print the mesh's counts, bounds and loader warnings; render nothing");
     if (const int status = cli.parse(argc, argv); status >= 0) return status;
     if (s.up_given && !(tiny3d::vec3_length(s.up) > 0.0f)) return cli.usage_error("--up must not be zero, got '0,0,0'");
@@ -263,7 +273,6 @@ int main(int argc, char **argv) {
     params.shade = shading_named(s.mode);
     params.cull = cull_named(s.cull);
     params.tex = s.texture_path.empty() ? nullptr : &tex;
-    // Hook for anti-aliasing (--aa N) once the render context takes samples per pixel.
     tiny3d::render_context ctx(o.threads);
 
     tiny3d::wireframe_options wire;
@@ -294,7 +303,7 @@ int main(int argc, char **argv) {
                 !st)
                 return cli.fail(st.message());
         } else {
-            if (tiny3d::status st = ctx.begin_frame(**canvas, kBackground); !st) return cli.fail(st.message());
+            if (tiny3d::status st = ctx.begin_frame(**canvas, kBackground, s.samples); !st) return cli.fail(st.message());
             params.model = model;
             ctx.draw(*shape, params);
             ctx.end_frame();

@@ -105,6 +105,31 @@ TEST(flat_gouraud_phong_give_the_lambert_value_on_a_face_seen_head_on) {
         }
 }
 
+TEST(aa_blends_the_silhouette_and_keeps_the_interior) {
+    if (!render_built()) return;
+    // Head-on cube face, flat 0.75 (191) on 0.04 (10): one sample per pixel gives only those
+    // two values; 16 samples give in-between values along the face's edges, the same
+    // interior, and every value between the two.
+    for (const char *aa : {"1", "16"}) {
+        temp_dir dir;
+        const run_result r =
+            render(dir, with(head_on, {"--mode", "flat", "--light", "0,0,1,0.5", "--ambient", "0.25", "--aa", aa}));
+        CHECK_MSG(r.exit_code == 0, r.err);
+        const pgm_image img = frame(dir, "frame_000.pgm");
+        CHECK_EQ(img.width, 64);
+        if (img.width != 64) continue;
+        int between = 0, outside = 0;
+        for (const unsigned char v : img.pixels) {
+            between += v > background && v < 191;
+            outside += v < background || v > 191;
+        }
+        CHECK_EQ(outside, 0);
+        CHECK_EQ(int(img.at(32, 32)), 191);
+        if (std::string(aa) == "1") CHECK_EQ(between, 0);
+        else CHECK_MSG(between >= 4 * 20, std::to_string(between) + " edge pixels blended");  // 4 edges, ~31 px each
+    }
+}
+
 TEST(two_lights_without_intensity_share_the_default_total) {
     if (!render_built()) return;
     // Two lights along the view axis, 0.85 split evenly: 0.1 (ambient) + 0.85 = 0.95 → 242.
@@ -217,6 +242,7 @@ TEST(bad_command_lines_exit_2_and_bad_files_exit_1_writing_nothing) {
         {cube_obj, "--light", "1,2,3,nan"},     {cube_obj, "--fov", "180"},
         {cube_obj, "--eye", "1,2,3x"},          {cube_obj, "--up", "0,0,0"},
         {cube_obj, "--ambient", "1e999"},       {cube_obj, "--threads", "0"},
+        {cube_obj, "--aa", "3"},                {cube_obj, "--aa", ""},
         {cube_obj, "--mode", "wireframe", "--texture", "t.pgm"}, {},
         {cube_obj, "other.obj"},
     };
