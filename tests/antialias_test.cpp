@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "../src/raster/msaa.h"
+#include "alloc_tracker.h"
 #include "harness.h"
 #include "raster_reference.h"
 #include "renderer.h"
@@ -326,6 +327,7 @@ TEST(msaa_multi_draw_frames_do_not_depend_on_the_thread_count) {
     near.filter = texture_filter::bilinear;
     for (sample_count n : MODES) {
         canvas_ptr images[3];
+        frame_stats stats[3];
         for (int threads = 1; threads <= 3; ++threads) {
             images[threads - 1] = make_canvas(S, S).value();
             render_context ctx(threads);
@@ -335,7 +337,14 @@ TEST(msaa_multi_draw_frames_do_not_depend_on_the_thread_count) {
             ctx.draw(quad, near);
             ctx.draw(knot.mesh, knot.params);
             ctx.end_frame();
+            stats[threads - 1] = ctx.stats();
         }
+        for (int k = 1; k < 3; ++k) {  // the counts too
+            CHECK_EQ(stats[k].rasterized, stats[0].rasterized);
+            CHECK_EQ(stats[k].culled_backface, stats[0].culled_backface);
+            CHECK_EQ(stats[k].clipped, stats[0].clipped);
+        }
+        CHECK(stats[0].clipped > 0);  // the near quad was clipped
         for (int k = 1; k < 3; ++k) {
             int differ = 0;
             for (int i = 0; i < S * S; ++i) differ += images[k]->data[i] != images[0]->data[i];
@@ -345,6 +354,39 @@ TEST(msaa_multi_draw_frames_do_not_depend_on_the_thread_count) {
         for (int i = 0; i < S * S; ++i) sum += images[0]->data[i];
         CHECK(sum > 0.2 * S * S);  // something was drawn
     }
+}
+
+// No allocation per frame in steady state, multisampled frames included: after one frame
+// of each mode (the tiles and triangle lists grow to the largest), frames cycling through
+// every mode with several draws (textured, Phong, translucent) allocate nothing.
+TEST(msaa_frames_allocate_nothing_in_steady_state) {
+    constexpr int S = 64;
+    const small_scene sphere = make_small_scene(make_icosphere(2), 0.4f);
+    small_scene knot = make_small_scene(make_torus_knot(2, 3, 40, 6), 0.1f);
+    knot.params.alpha = 0.5f;
+    texture tex;
+    tex.width = tex.height = 8;
+    tex.texels.assign(64, 0.5f);
+    CHECK(build_mipmaps(tex).ok());
+    const raster_mesh quad = clip_quad(-2, -0.5f, 2, 0.5f, 0, 0, 0, 8, 2);
+    draw_params qp = sphere.params;
+    qp.shade = shading::phong;
+    qp.cull = cull_mode::none;
+    qp.tex = &tex;
+    qp.filter = texture_filter::trilinear;
+    canvas_ptr c = make_canvas(S, S).value();
+    render_context ctx(2);
+    auto frame = [&](sample_count n) {
+        CHECK(ctx.begin_frame(*c, 0.1f, n).ok());
+        ctx.draw(sphere.mesh, sphere.params);
+        ctx.draw(quad, qp);
+        ctx.draw(knot.mesh, knot.params);
+        ctx.end_frame();
+    };
+    for (sample_count n : MODES) frame(n);
+    const std::size_t before = alloc_tracker::allocations();
+    for (int k = 0; k < 12; ++k) frame(MODES[(k * 3) % 4]);
+    CHECK_EQ(alloc_tracker::allocations() - before, std::size_t{0});
 }
 
 TEST(msaa_x1_is_the_aliased_image) {
