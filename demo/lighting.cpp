@@ -14,7 +14,7 @@
 // --faithful-lambert lights the wireframes with the report's per-edge Lambert (about half
 // of the edges go black) instead of the face-normal model.
 //
-//   lighting [--out DIR] [--frames A:B] [--size WxH] [--fps F] [--period S] [--faithful-lambert] [--png]
+//   lighting [--out DIR] [--frames A:B] [--size WxH] [--fps F] [--period S] [--faithful-lambert] [--aa N] [--png]
 #include <cmath>
 #include <cstdio>
 #include <string>

@@ -143,12 +143,12 @@ void command_line::add_threads(int default_threads) {
 
 void command_line::add_samples(tiny3d::sample_count default_samples) {
     common.samples = default_samples;
-    custom("--samples", "N",
+    custom("--aa", "N",
            "samples per pixel of the filled triangles: 1 (aliased), 4, 8 or 16 (default " +
                std::to_string(static_cast<int>(default_samples)) + ")",
            [this](const std::string &text) {
                const tiny3d::result<tiny3d::sample_count> n = tiny3d::parse_sample_count(text);
-               if (!n) return "--samples: " + n.message();
+               if (!n) return "--aa: " + n.message();
                common.samples = n.value();
                return std::string();
            });

@@ -56,7 +56,7 @@ struct common_options {
     int frame_count = 1;            // the full sequence's length
     int threads = 1;                // --threads N
     bool png = false;               // --png: a PNG beside every PGM
-    tiny3d::sample_count samples = tiny3d::sample_count::x1;  // --samples N: filled triangles' samples per pixel
+    tiny3d::sample_count samples = tiny3d::sample_count::x1;  // --aa N: filled triangles' samples per pixel
     int frames_to_render() const { return last_frame - first_frame + 1; }
 };
 
@@ -80,7 +80,8 @@ public:
     void add_frames(std::function<int()> frame_count);
     void add_threads(int default_threads);
     void add_png();
-    // --samples 1|4|8|16: samples per pixel of the filled triangles (render_context::begin_frame).
+    // --aa 1|4|8|16: samples per pixel of the filled triangles (render_context::begin_frame;
+    // the name render's own --aa has).
     void add_samples(tiny3d::sample_count default_samples);
     // What a program writing a sequence of frames takes: --out, --frames, --size, --png.
     void add_sequence_options(int frame_count, int default_width, int default_height);
