@@ -54,23 +54,6 @@ float lambert_intensity(vec3_t start, vec3_t end, vec3_t light_dir);
 
 namespace tiny3d {
 
-// ---- small vector helpers used by the inline shading functions ------------------------
-namespace lighting_detail {
-inline float dot(vec3_t a, vec3_t b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-inline vec3_t cross(vec3_t a, vec3_t b) {
-    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-// unit(v), or (0, 0, 0) when |v| is 0, denormal-small or not finite.
-inline vec3_t unit_or_zero(vec3_t v) {
-    const float len2 = dot(v, v);
-    constexpr float MIN_LENGTH_SQUARED = 1e-30f;  // below this the direction is noise
-    if (!(len2 > MIN_LENGTH_SQUARED) || !std::isfinite(len2)) return {0.0f, 0.0f, 0.0f};
-    return v * (1.0f / std::sqrt(len2));
-}
-// clamp to 0..1, NaN → 0.
-inline float clamp01(float v) { return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; }
-}  // namespace lighting_detail
-
 // Most lights a rig holds (a fixed array: a rig is a small value, never allocates).
 inline constexpr int MAX_LIGHTS = 8;
 
@@ -94,12 +77,12 @@ inline float shade_point(const light_rig &rig, vec3_t p, vec3_t unit_normal) {
     for (int i = 0; i < rig.count; ++i) {
         const light_t &l = rig.lights[i];
         const vec3_t to_light = l.kind == light_kind::point
-                                    ? lighting_detail::unit_or_zero(l.position - p)
+                                    ? unit_or_zero(l.position - p)
                                     : l.direction;
-        const float cosine = lighting_detail::dot(unit_normal, to_light);
+        const float cosine = vec3_dot(unit_normal, to_light);
         if (cosine > 0.0f) sum += l.intensity * cosine;
     }
-    return lighting_detail::clamp01(sum);
+    return clamp01(sum);
 }
 
 // ---- face lighting for filled rendering (the rasterizer calls these) -------------------
@@ -116,7 +99,7 @@ float shade_gouraud_vertex(const light_rig &rig, vec3_t p, vec3_t normal);
 // Phong shading: the value at one pixel from the interpolated (not unit) normal and the
 // interpolated surface point. Normalises the normal (one sqrt), then shade_point.
 inline float shade_phong_pixel(const light_rig &rig, vec3_t p, vec3_t interpolated_normal) {
-    return shade_point(rig, p, lighting_detail::unit_or_zero(interpolated_normal));
+    return shade_point(rig, p, unit_or_zero(interpolated_normal));
 }
 
 // ---- normals under a model transform ---------------------------------------------------
@@ -133,7 +116,7 @@ inline vec3_t apply_normal_transform(const normal_transform &t, vec3_t n) {
     const vec3_t r = {t.m[0] * n.x + t.m[1] * n.y + t.m[2] * n.z,
                       t.m[3] * n.x + t.m[4] * n.y + t.m[5] * n.z,
                       t.m[6] * n.x + t.m[7] * n.y + t.m[8] * n.z};
-    return lighting_detail::unit_or_zero(r);
+    return unit_or_zero(r);
 }
 
 // ---- edge lighting for wireframes ------------------------------------------------------

@@ -126,6 +126,22 @@ inline float vec3_dot(vec3_t a, vec3_t b) { return a.x * b.x + a.y * b.y + a.z *
 inline vec3_t vec3_cross(vec3_t a, vec3_t b) {
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
+// The small helpers every module shares, with ONE NaN rule: vec3_dot and vec3_cross are
+// plain float arithmetic (NaN in, NaN out); the guarded helpers never return NaN —
+// unit_or_zero gives (0, 0, 0), clamp01 gives 0.
+//
+// v·(1/√|v|²) in float, or (0, 0, 0) when |v|² ≤ 1e-30 (below that the direction is noise)
+// or |v|² is not finite (a NaN or overflowing component). The shading functions' normaliser
+// (the render context's SIMD kernels reproduce its bits); vec3_normalize is the exact one.
+inline vec3_t unit_or_zero(vec3_t v) {
+    const float len2 = vec3_dot(v, v);
+    constexpr float MIN_LENGTH_SQUARED = 1e-30f;
+    if (!(len2 > MIN_LENGTH_SQUARED) || !std::isfinite(len2)) return {0.0f, 0.0f, 0.0f};
+    return v * (1.0f / std::sqrt(len2));
+}
+// v clamped to [0, 1]; NaN → 0.
+inline float clamp01(float v) { return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; }
+
 // Euclidean length, computed in double: no overflow or underflow for any finite float
 // vector (a result above FLT_MAX rounds to +inf).
 float vec3_length(vec3_t v);
@@ -203,10 +219,17 @@ transformed_point transform_point(const mat4_t &m, vec3_t p);
 // The upper-left 3×3 times d (w = 0: translation and projection ignored).
 vec3_t transform_direction(const mat4_t &m, vec3_t d);
 
+// M·(p, 1) = mat4_mul_vec4(m, (p, 1)) bit for bit (the same operation order; m12·1 = m12
+// exactly), inline so that per-point loops do not copy the matrix into a call.
+inline vec4_t mul_point_scalar(const mat4_t &m, vec3_t p) {
+    return {m.m[0] * p.x + m.m[4] * p.y + m.m[8] * p.z + m.m[12], m.m[1] * p.x + m.m[5] * p.y + m.m[9] * p.z + m.m[13],
+            m.m[2] * p.x + m.m[6] * p.y + m.m[10] * p.z + m.m[14], m.m[3] * p.x + m.m[7] * p.y + m.m[11] * p.z + m.m[15]};
+}
+
 // Batch apply_transform: out[i] = apply_transform(m, in[i]), bit for bit, for every i
-// (SSE2 four points at a time, scalar fallback). `out` may be the same span as `in`
-// (in-place); other overlaps are not allowed. Error when out.size() < in.size()
-// (nothing written). Throughput ≥ 150 M points/s on one core (tests/bench/transform).
+// (with SSE2 one point per register, its four rows at once; scalar otherwise). `out` may
+// be the same span as `in` (in-place); other overlaps are not allowed. Error when
+// out.size() < in.size() (nothing written).
 status transform_points(const mat4_t &m, std::span<const vec3_t> in, std::span<vec3_t> out);
 // Batch to clip space: out[i] = mat4_mul_vec4(m, (in[i], 1)), bit for bit, no division
 // (for clipping against w). Same size rule as transform_points.

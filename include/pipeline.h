@@ -25,6 +25,7 @@
 #ifndef TINY3D_PIPELINE_H
 #define TINY3D_PIPELINE_H
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -101,20 +102,24 @@ struct segment_clip {
     double t0, t1;  // double: a float t would cost up to ~1e-4 px on a 2000-px segment
 };
 
-// The clip-space planes, inside where the named signed distance is ≥ 0.
+// The clip-space planes of both pipelines, inside where the named signed distance is ≥ 0.
+// g is the guard band (1 = the frustum itself; the render context widens the x/y planes so
+// that triangles are clipped only where the 32-bit fill needs it).
 enum clip_plane_bits : unsigned {
     clip_near = 1u << 0,    // z + w ≥ 0
     clip_far = 1u << 1,     // w − z ≥ 0
-    clip_left = 1u << 2,    // x + w ≥ 0
-    clip_right = 1u << 3,   // w − x ≥ 0
-    clip_bottom = 1u << 4,  // y + w ≥ 0
-    clip_top = 1u << 5,     // w − y ≥ 0
+    clip_left = 1u << 2,    // x + g·w ≥ 0
+    clip_right = 1u << 3,   // g·w − x ≥ 0
+    clip_bottom = 1u << 4,  // y + g·w ≥ 0
+    clip_top = 1u << 5,     // g·w − y ≥ 0
     clip_all = 63u,
 };
 
-// Bits of the planes p is outside of (0 = inside the frustum). NaN coordinates count as
-// outside every plane.
-unsigned clip_outcode(vec4_t p);
+// Bits of the planes p is outside of (0 = inside), the distances evaluated in float
+// (g·w rounded once, then one sum each; the sign of such a sum is that of the exact sum of
+// the two floats). A point with any NaN or infinite coordinate is outside every plane
+// (clip_all). guard ≥ 1 and finite.
+unsigned clip_outcode(vec4_t p, float guard = 1.0f);
 
 // Liang–Barsky in homogeneous clip space against the planes in `planes` (default: all six;
 // pass clip_near alone to cut only at the near plane). Intersections are computed in double
@@ -126,6 +131,24 @@ segment_clip clip_segment(vec4_t a, vec4_t b, unsigned planes = clip_all);
 
 // a + t·(b − a), componentwise.
 vec4_t lerp4(vec4_t a, vec4_t b, float t);
+
+// ---- clipping triangles (src/pipeline/clip_triangle.cpp) -------------------------------
+
+// A clip-space vertex with interpolated attributes (intensity, normal, uv, …).
+inline constexpr int CLIP_MAX_ATTRIBUTES = 12;
+struct clip_vertex {
+    vec4_t position;  // clip space (OpenGL): visible when −w ≤ x, y, z ≤ w
+    std::array<float, CLIP_MAX_ATTRIBUTES> attr;
+};
+inline constexpr int CLIP_MAX_VERTICES = 9;  // a triangle clipped by 6 planes
+
+// Sutherland–Hodgman: clips the convex polygon in[0..n) against every plane (clip_plane_bits)
+// in `planes`, the x/y planes at the guard band |x|, |y| ≤ guard·w (attributes interpolated
+// linearly in clip space, which is perspective-correct), writing the result to out
+// (capacity CLIP_MAX_VERTICES). Returns the vertex count (0 = all clipped away, else ≥ 3).
+// n must be ≤ 3 (a triangle) — larger polygons return 0.
+int clip_polygon(const clip_vertex *in, int n, unsigned planes, float guard, int attr_count,
+                 clip_vertex *out);
 
 // A circle in pixels.
 struct circle {

@@ -35,6 +35,7 @@
 #include "lighting.h"
 #include "math3d.h"
 #include "mesh.h"
+#include "pipeline.h"
 #include "tiny3d_result.h"
 
 namespace tiny3d {
@@ -144,32 +145,6 @@ void fill_triangle(canvas_t &canvas, zbuffer *depth, const screen_vertex v[3],
 // shared edges can leave gaps or double hits (measured by the benchmark).
 void fill_triangle_scanline(canvas_t &canvas, zbuffer *depth, const screen_vertex v[3],
                             const float intensity[3], depth_func test);
-
-// ---- clipping ---------------------------------------------------------------------------
-
-// A clip-space vertex with interpolated attributes (intensity, normal, uv, …).
-inline constexpr int CLIP_MAX_ATTRIBUTES = 12;
-struct clip_vertex {
-    vec4_t position;  // clip space (OpenGL): visible when −w ≤ x, y, z ≤ w
-    std::array<float, CLIP_MAX_ATTRIBUTES> attr;
-};
-
-// Planes a polygon is clipped against (bit flags). The x/y planes are a guard band:
-// |x| ≤ guard·w, |y| ≤ guard·w.
-enum clip_plane : unsigned {
-    CLIP_NEAR = 1u, CLIP_FAR = 2u, CLIP_LEFT = 4u, CLIP_RIGHT = 8u, CLIP_BOTTOM = 16u, CLIP_TOP = 32u
-};
-inline constexpr int CLIP_MAX_VERTICES = 9;  // a triangle clipped by 6 planes
-
-// Outcode of a clip-space position: the CLIP_* planes it lies outside of.
-unsigned clip_outcode(vec4_t p, float guard);
-
-// Sutherland–Hodgman: clips the convex polygon in[0..n) against every plane in `planes`
-// (attributes interpolated linearly in clip space, which is perspective-correct), writing
-// the result to out (capacity CLIP_MAX_VERTICES). Returns the vertex count (0 = all
-// clipped away, else ≥ 3). n must be ≤ 3 (a triangle) — larger polygons return 0.
-int clip_polygon(const clip_vertex *in, int n, unsigned planes, float guard, int attr_count,
-                 clip_vertex *out);
 
 // ---- textures -------------------------------------------------------------------------
 

@@ -390,7 +390,7 @@ TEST(clip_polygon_against_the_near_plane) {
     in[2].position = {0, 1, 0.5f, 1};    // inside
     for (int k = 0; k < 3; ++k) in[k].attr.fill(static_cast<float>(k));
     clip_vertex out[CLIP_MAX_VERTICES];
-    const int n = clip_polygon(in, 3, CLIP_NEAR, 1.0f, 1, out);
+    const int n = clip_polygon(in, 3, clip_near, 1.0f, 1, out);
     CHECK_EQ(n, 4);
     for (int k = 0; k < n; ++k) CHECK(out[k].position.z + out[k].position.w >= -1e-6f);
     // Crossing on edge 0→1: d0 = 1.5, d1 = −4 → t = 1.5/5.5.
@@ -398,7 +398,7 @@ TEST(clip_polygon_against_the_near_plane) {
     CHECK_EQ(clip_outcode({NAN, 0, 0, 1}, 1.0f) != 0u, true);
     // All behind: nothing left.
     for (auto &v : in) v.position = {0, 0, -2, -1};
-    CHECK_EQ(clip_polygon(in, 3, CLIP_NEAR, 1.0f, 0, out), 0);
+    CHECK_EQ(clip_polygon(in, 3, clip_near, 1.0f, 0, out), 0);
 }
 
 TEST(degenerate_and_non_finite_triangles_are_skipped) {

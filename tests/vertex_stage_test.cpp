@@ -1,10 +1,13 @@
-// vertex_stage_test.cpp — the render context's SIMD vertex kernels against their portable
-// references, bit for bit (src/raster/vertex_kernels_sse2.h vs vertex_transform.h), on
-// ordinary, extreme and non-finite positions and normals.
+// vertex_stage_test.cpp — the vertex stage's SIMD kernels against their portable references,
+// bit for bit, on ordinary, extreme and non-finite points: the 4-wide projection both
+// pipelines use (src/pipeline/project4.h) against clip_outcode and clip_to_screen, and the
+// render context's vertex kernels (src/raster/vertex_kernels_sse2.h) against
+// vertex_transform.h's.
 #include <cstring>
 #include <random>
 #include <vector>
 
+#include "../src/pipeline/project4.h"
 #include "../src/raster/vertex_kernels_sse2.h"
 #include "../src/raster/vertex_transform.h"
 #include "harness.h"
@@ -16,8 +19,7 @@ using tiny3d::detail::xvertex;
 bool same_bits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 bool same_vertex(const xvertex &a, const xvertex &b) {
     if (a.outcode != b.outcode || a.snapped != b.snapped) return false;
-    if (!(a.outcode & tiny3d::CLIP_NEAR) && !same_bits(a.depth, b.depth)) return false;
-    return !a.snapped || (a.snapped_x == b.snapped_x && a.snapped_y == b.snapped_y);
+    return !a.snapped || (same_bits(a.depth, b.depth) && a.snapped_x == b.snapped_x && a.snapped_y == b.snapped_y);
 }
 bool same_clip(const vec4_t &a, const vec4_t &b) {
     return same_bits(a.x, b.x) && same_bits(a.y, b.y) && same_bits(a.z, b.z) && same_bits(a.w, b.w);
@@ -44,6 +46,44 @@ mat4_t camera() {
 }  // namespace
 
 #ifdef __SSE2__
+TEST(project4_matches_clip_outcode_and_clip_to_screen_bit_for_bit) {
+    std::vector<vec4_t> c;
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> u(-2.0f, 2.0f);
+    for (int k = 0; k < 400; ++k) c.push_back({u(rng), u(rng), u(rng), u(rng)});
+    const float specials[] = {0.0f, -0.0f, 1e-40f, 1e30f, -1e30f, 3e38f, INFINITY, -INFINITY, NAN};
+    for (float a : specials)
+        for (float b : specials) c.push_back({a, 0.5f, b, 1.0f}), c.push_back({0.25f, a, 0.5f, b}), c.push_back({b, b, a, a});
+    while (c.size() % 4) c.push_back({0, 0, 0, 1});
+    int mismatches = 0;
+    for (float guard : {1.0f, 1.953125f, 4.0f})
+        for (std::size_t i = 0; i < c.size(); i += 4) {
+            __m128 x = _mm_loadu_ps(&c[i].x), y = _mm_loadu_ps(&c[i + 1].x), z = _mm_loadu_ps(&c[i + 2].x),
+                   w = _mm_loadu_ps(&c[i + 3].x);
+            _MM_TRANSPOSE4_PS(x, y, z, w);
+            const tiny3d::detail::projected4 p = tiny3d::detail::project4(x, y, z, w, guard, 640.0f, 480.0f, true);
+            alignas(16) float px[4], py[4], pd[4], front[4];
+            alignas(16) std::uint32_t code[4];
+            _mm_store_ps(px, p.x), _mm_store_ps(py, p.y), _mm_store_ps(pd, p.depth), _mm_store_ps(front, p.in_front);
+            _mm_store_si128(reinterpret_cast<__m128i *>(code), p.outcode);
+            for (int l = 0; l < 4; ++l) {
+                const tiny3d::screen_point ref = tiny3d::clip_to_screen(c[i + l], 640, 480);
+                const bool in_front = std::isnan(front[l]);  // all ones = a NaN pattern
+                mismatches += code[l] != tiny3d::clip_outcode(c[i + l], guard) || in_front == ref.behind;
+                if (!ref.behind) mismatches += !same_bits(px[l], ref.x) || !same_bits(py[l], ref.y) || !same_bits(pd[l], ref.depth);
+            }
+        }
+    CHECK_EQ(mismatches, 0);
+    // clip_outcode itself, hand-checked: inside, each plane, the guard band, non-finite.
+    CHECK_EQ(tiny3d::clip_outcode({0.5f, -0.5f, 0.0f, 1.0f}), 0u);
+    CHECK_EQ(tiny3d::clip_outcode({0.0f, 0.0f, -2.0f, 1.0f}), unsigned(tiny3d::clip_near));
+    CHECK_EQ(tiny3d::clip_outcode({1.5f, 0.0f, 0.0f, 1.0f}), unsigned(tiny3d::clip_right));
+    CHECK_EQ(tiny3d::clip_outcode({1.5f, 0.0f, 0.0f, 1.0f}, 2.0f), 0u);
+    CHECK_EQ(tiny3d::clip_outcode({-3.0f, 3.0f, 0.0f, 1.0f}, 2.0f), unsigned(tiny3d::clip_left | tiny3d::clip_top));
+    CHECK_EQ(tiny3d::clip_outcode({NAN, 0.0f, 0.0f, 1.0f}), unsigned(tiny3d::clip_all));
+    CHECK_EQ(tiny3d::clip_outcode({0.0f, INFINITY, 0.0f, 1.0f}, 4.0f), unsigned(tiny3d::clip_all));
+}
+
 TEST(project_x4_matches_project_one_bit_for_bit) {
     const std::vector<vec3_t> p = test_positions(400);
     const mat4_t m = camera();
@@ -53,10 +93,10 @@ TEST(project_x4_matches_project_one_bit_for_bit) {
         int mismatches = 0;
         for (std::uint32_t i = 0; i + 4 <= p.size(); i += 4) {
             const std::uint32_t index[4] = {i + 3, i + 1, i, i + 2};  // gathered out of order
-            tiny3d::detail::project_x4(m, p.data(), index, guard, 512.0f, 384.0f, fast.data(), fast_clip.data());
+            tiny3d::detail::project_x4(m, p.data(), index, guard, 1024, 768, fast.data(), fast_clip.data());
         }
         for (std::size_t i = 0; i < p.size(); ++i) {
-            tiny3d::detail::project_one(m, p[i], guard, 512.0f, 384.0f, ref[i], ref_clip[i]);
+            tiny3d::detail::project_one(m, p[i], guard, 1024, 768, ref[i], ref_clip[i]);
             mismatches += !same_vertex(fast[i], ref[i]) || !same_clip(fast_clip[i], ref_clip[i]);
         }
         CHECK_EQ(mismatches, 0);
@@ -94,15 +134,15 @@ TEST(project_one_outcodes_and_screen_position) {
     xvertex v;
     vec4_t clip;
     // The point the camera looks at (0.2 right of the origin's image, 0.1 down): hand-computed.
-    tiny3d::detail::project_one(m, {-0.2f, 0.1f, 0.0f}, 1.0f, 512.0f, 384.0f, v, clip);
+    tiny3d::detail::project_one(m, {-0.2f, 0.1f, 0.0f}, 1.0f, 1024, 768, v, clip);
     CHECK_EQ(unsigned(v.outcode), 0u);
     CHECK(v.snapped);
     CHECK_EQ(v.snapped_x, 512 * 16);
     CHECK_EQ(v.snapped_y, 384 * 16);
     CHECK_NEAR(clip.w, 3.0, 1e-6);
     // Behind the eye: outside the near plane, never snapped.
-    tiny3d::detail::project_one(m, {0.0f, 0.0f, 5.0f}, 1.0f, 512.0f, 384.0f, v, clip);
-    CHECK(v.outcode & tiny3d::CLIP_NEAR);
+    tiny3d::detail::project_one(m, {0.0f, 0.0f, 5.0f}, 1.0f, 1024, 768, v, clip);
+    CHECK(v.outcode & tiny3d::clip_near);
     CHECK(!v.snapped);
 }
 

@@ -7,11 +7,12 @@
 #include <cmath>
 
 #include "canvas.h"
+#include "math3d.h"
 #include "../lines/line_clip.h"
 
 namespace tiny3d::detail {
 
-inline float clamp01(float v) { return v < 0.0f ? 0.0f : (v > 1.0f ? 1.0f : v); }
+using tiny3d::clamp01;  // math3d.h
 
 // The report's set_pixel_f in the report's convention (integer coordinates are pixel
 // centres): x0 = floor(x), dx = x − x0, and pixel (x0 + i, y0 + j), i, j ∈ {0, 1}, gains

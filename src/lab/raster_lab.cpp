@@ -6,23 +6,17 @@
 #include <limits>
 #include <string>
 
+#include "../math3d/dvec3.h"
 #include "raster.h"
 
 namespace tiny3d {
 
 namespace {
 
-struct v3 {
-    double x, y, z;
-};
-v3 operator+(v3 a, v3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-v3 operator-(v3 a, v3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-v3 operator*(double s, v3 a) { return {s * a.x, s * a.y, s * a.z}; }
-double dot(v3 a, v3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-v3 cross(v3 a, v3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+using v3 = detail::dvec3;
 v3 load(const double *p) { return {p[0], p[1], p[2]}; }
 void store(double *p, v3 v) { p[0] = v.x, p[1] = v.y, p[2] = v.z; }
-v3 from(vec3_t p) { return {p.x, p.y, p.z}; }
+v3 from(vec3_t p) { return detail::widen(p); }
 
 // Rays closer than this (relative) to parallel with a triangle's plane skip it ("d near 0").
 constexpr double PARALLEL_EPSILON = 1e-9;

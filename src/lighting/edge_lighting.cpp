@@ -10,7 +10,7 @@ std::vector<vec3_t> edge_normals(const mesh &m) {
     for (std::size_t e = 0; e < m.edges.size(); ++e) {
         vec3_t sum = {0.0f, 0.0f, 0.0f};
         for (const std::uint32_t *f = adjacency.begin(e); f != adjacency.end(e); ++f) sum += face_normals[*f];
-        normals[e] = lighting_detail::unit_or_zero(sum);  // the mean's direction (its length is irrelevant)
+        normals[e] = unit_or_zero(sum);  // the mean's direction (its length is irrelevant)
     }
     return normals;
 }

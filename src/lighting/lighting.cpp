@@ -3,13 +3,11 @@
 
 #include <string>
 
-using tiny3d::lighting_detail::clamp01;
-using tiny3d::lighting_detail::cross;
-using tiny3d::lighting_detail::dot;
-using tiny3d::lighting_detail::unit_or_zero;
+using tiny3d::clamp01;
+using tiny3d::unit_or_zero;
 
 float lambert_intensity(vec3_t start, vec3_t end, vec3_t light_dir) {
-    return clamp01(dot(unit_or_zero(end - start), unit_or_zero(light_dir)));
+    return clamp01(tiny3d::vec3_dot(unit_or_zero(end - start), unit_or_zero(light_dir)));
 }
 
 namespace tiny3d {
@@ -41,7 +39,7 @@ result<light_rig> make_light_rig(std::span<const light_t> lights, float ambient)
         } else if (l.kind == light_kind::directional) {
             if (!finite3(l.direction)) return light_error(i, "direction is not finite");
             l.direction = unit_or_zero(l.direction);
-            if (dot(l.direction, l.direction) == 0.0f) return light_error(i, "direction is zero");
+            if (tiny3d::vec3_dot(l.direction, l.direction) == 0.0f) return light_error(i, "direction is zero");
         } else {
             return light_error(i, "unknown kind " + std::to_string(static_cast<int>(l.kind)));
         }

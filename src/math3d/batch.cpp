@@ -12,16 +12,11 @@
 #include <emmintrin.h>
 #endif
 
+using tiny3d::mul_point_scalar;
+
 namespace {
 
 bool divides_by(float w) { return w != 0.0f && w != 1.0f; }
-
-// mat4_mul_vec4(m, (p, 1)) with the same operation order (m12·1 = m12 exactly), here so
-// the per-point path inlines instead of copying the matrix into another call.
-inline vec4_t mul_point_scalar(const mat4_t &m, vec3_t p) {
-    return {m.m[0] * p.x + m.m[4] * p.y + m.m[8] * p.z + m.m[12], m.m[1] * p.x + m.m[5] * p.y + m.m[9] * p.z + m.m[13],
-            m.m[2] * p.x + m.m[6] * p.y + m.m[10] * p.z + m.m[14], m.m[3] * p.x + m.m[7] * p.y + m.m[11] * p.z + m.m[15]};
-}
 
 tiny3d::status size_error(const char *function, std::size_t in, std::size_t out) {
     return tiny3d::error{"", 0, -1,

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "dvec3.h"
 #include "math3d.h"
 
 namespace {
@@ -14,15 +15,8 @@ constexpr float kReportLerpCosine = 0.9995f;
 // worst error in the last 15° band: 0.9 at 0.05, 0.37 at 0.1, 0.08 at 0.2, 1.7e-3 at 0.3.
 constexpr float kFaithfulMinSin = 0.3f;
 
-struct dvec3 {
-    double x, y, z;
-};
-dvec3 to_double(vec3_t v) { return {v.x, v.y, v.z}; }
-dvec3 operator*(dvec3 a, double s) { return {a.x * s, a.y * s, a.z * s}; }
-dvec3 operator+(dvec3 a, dvec3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-double dot(dvec3 a, dvec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-dvec3 cross(dvec3 a, dvec3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
-double length(dvec3 a) { return std::sqrt(dot(a, a)); }
+using tiny3d::detail::dvec3;
+dvec3 to_double(vec3_t v) { return tiny3d::detail::widen(v); }
 bool is_zero(vec3_t v) { return v.x == 0.0f && v.y == 0.0f && v.z == 0.0f; }
 bool all_finite(vec3_t v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 

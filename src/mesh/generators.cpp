@@ -17,11 +17,8 @@ constexpr double two_pi = 2.0 * M_PI;
 constexpr int max_icosphere_level = 8;
 constexpr int max_segments = 1 << 14;  // per direction, keeps counts far from 32-bit limits
 
-vec3_t cross(vec3_t a, vec3_t b) {
-    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-float dot(vec3_t a, vec3_t b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-vec3_t normalized(vec3_t v) { return v / std::sqrt(dot(v, v)); }
+// v / |v| in float (no zero guard: the generators never pass a zero vector).
+vec3_t normalized(vec3_t v) { return v / std::sqrt(vec3_dot(v, v)); }
 
 bool valid_size(float s) { return std::isfinite(s) && s > 0.0f; }
 bool valid_count(int n, int minimum) { return n >= minimum && n <= max_segments; }
@@ -73,7 +70,7 @@ mesh unit_icosahedron() {
             for (int k = j + 1; k < 12; ++k) {
                 if (!adjacent(i, j) || !adjacent(j, k) || !adjacent(i, k)) continue;
                 const vec3_t a = m.positions[i], b = m.positions[j], c = m.positions[k];
-                if (dot(cross(b - a, c - a), a) > 0.0f) m.add_face({u32(i), u32(j), u32(k)});
+                if (vec3_dot(vec3_cross(b - a, c - a), a) > 0.0f) m.add_face({u32(i), u32(j), u32(k)});
                 else m.add_face({u32(i), u32(k), u32(j)});
             }
     return m;
@@ -228,16 +225,16 @@ mesh make_torus_knot(int p, int q, int segments, int sides, float tube_radius, f
     }
     // Parallel transport (projection form): carry the normal along, removing its tangent part.
     const vec3_t helper = std::fabs(tangent[0].z) < 0.9f ? vec3_t{0, 0, 1} : vec3_t{1, 0, 0};
-    normal[0] = normalized(cross(cross(tangent[0], helper), tangent[0]));
+    normal[0] = normalized(vec3_cross(vec3_cross(tangent[0], helper), tangent[0]));
     for (int k = 1; k < segments; ++k)
-        normal[k] = normalized(normal[k - 1] - tangent[k] * dot(normal[k - 1], tangent[k]));
+        normal[k] = normalized(normal[k - 1] - tangent[k] * vec3_dot(normal[k - 1], tangent[k]));
     // Holonomy: the transported normal comes back rotated by `closing` about the tangent;
     // undo it gradually so ring `segments` coincides with ring 0.
-    const vec3_t back = normalized(normal[segments - 1] - tangent[0] * dot(normal[segments - 1], tangent[0]));
-    const float closing = std::atan2(dot(cross(normal[0], back), tangent[0]), dot(normal[0], back));
+    const vec3_t back = normalized(normal[segments - 1] - tangent[0] * vec3_dot(normal[segments - 1], tangent[0]));
+    const float closing = std::atan2(vec3_dot(vec3_cross(normal[0], back), tangent[0]), vec3_dot(normal[0], back));
     mesh m;
     for (int k = 0; k < segments; ++k) {
-        const vec3_t binormal = cross(tangent[k], normal[k]);
+        const vec3_t binormal = vec3_cross(tangent[k], normal[k]);
         const double twist = -double(closing) * k / segments;
         for (int j = 0; j < sides; ++j) {
             const double a = two_pi * j / sides + twist;

@@ -19,19 +19,6 @@ std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
     return (static_cast<std::uint64_t>(lo) << 32) | hi;
 }
 
-vec3_t cross(vec3_t a, vec3_t b) {
-    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-float dot(vec3_t a, vec3_t b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-
-// v / |v|, or (0, 0, 0) when |v| is 0 or not finite. |v| in double: in float, |v|² of
-// a vector of 1e-23 underflows to 0 and of 1e20 overflows, losing real directions.
-vec3_t unit_or_zero(vec3_t v) {
-    const double len = std::sqrt(double(v.x) * v.x + double(v.y) * v.y + double(v.z) * v.z);
-    if (!(len > 0.0) || !std::isfinite(len)) return {0.0f, 0.0f, 0.0f};
-    return {float(v.x / len), float(v.y / len), float(v.z / len)};
-}
-
 bool finite3(vec3_t v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 // Calls fn(a, b) for every corner pair (k, k+1 wrapping) of face f.
@@ -98,15 +85,15 @@ std::vector<vec3_t> mesh_vertex_normals(const mesh &m) {
         const std::uint32_t s = m.face_start[f], e = m.face_start[f + 1], n = e - s;
         for (std::uint32_t k = 0; k < n; ++k) {
             const vec3_t p = m.positions[m.indices[s + k]];
-            const vec3_t to_prev = unit_or_zero(m.positions[m.indices[s + (k + n - 1) % n]] - p);
-            const vec3_t to_next = unit_or_zero(m.positions[m.indices[s + (k + 1) % n]] - p);
+            const vec3_t to_prev = vec3_normalize(m.positions[m.indices[s + (k + n - 1) % n]] - p);
+            const vec3_t to_next = vec3_normalize(m.positions[m.indices[s + (k + 1) % n]] - p);
             // Interior angle at the corner; atan2(|u×v|, u·v) is accurate at every angle.
-            const float angle = std::atan2(std::sqrt(dot(cross(to_prev, to_next), cross(to_prev, to_next))),
-                                           dot(to_prev, to_next));
+            const float angle = std::atan2(std::sqrt(vec3_dot(vec3_cross(to_prev, to_next), vec3_cross(to_prev, to_next))),
+                                           vec3_dot(to_prev, to_next));
             sums[m.indices[s + k]] += face_normals[f] * angle;
         }
     }
-    for (vec3_t &v : sums) v = unit_or_zero(v);
+    for (vec3_t &v : sums) v = vec3_normalize(v);
     return sums;
 }
 
@@ -165,7 +152,7 @@ bounding_sphere mesh_bounding_sphere(const mesh &m) {
     const vec3_t center = (box.min + box.max) * 0.5f;
     float r2 = 0.0f;
     for (const vec3_t &p : m.positions)
-        if (finite3(p)) r2 = std::max(r2, dot(p - center, p - center));
+        if (finite3(p)) r2 = std::max(r2, vec3_dot(p - center, p - center));
     // One ulp-ish of slack so every position tests inside despite rounding of the sqrt.
     constexpr float radius_slack = 1.0f + 4.0f * std::numeric_limits<float>::epsilon();
     return {center, std::sqrt(r2) * radius_slack};

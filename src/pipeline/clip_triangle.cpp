@@ -1,6 +1,6 @@
 // clip_triangle.cpp — Sutherland–Hodgman clipping of triangles in clip space (near and far
 // planes, and the x/y guard band), attributes interpolated with the same parameter.
-#include "raster.h"
+#include "pipeline.h"
 
 namespace tiny3d {
 
@@ -30,13 +30,6 @@ clip_vertex lerp_vertex(const clip_vertex &a, const clip_vertex &b, float t, int
 }
 
 }  // namespace
-
-unsigned clip_outcode(vec4_t p, float guard) {
-    unsigned code = 0;
-    for (int i = 0; i < PLANE_COUNT; ++i)
-        if (!(plane_distance(i, p, guard) >= 0.0f)) code |= 1u << i;  // NaN counts as outside
-    return code;
-}
 
 int clip_polygon(const clip_vertex *in, int n, unsigned planes, float guard, int attr_count, clip_vertex *out) {
     if (n != 3 || attr_count < 0 || attr_count > CLIP_MAX_ATTRIBUTES) return 0;

@@ -36,11 +36,13 @@ vec4_t add(vec4_t a, vec4_t b, float sign) {
 
 }  // namespace
 
-unsigned clip_outcode(vec4_t p) {
+unsigned clip_outcode(vec4_t p, float guard) {
     if (!finite4(p)) return clip_all;
+    const float gw = guard * p.w;
+    const float distance[plane_count] = {p.z + p.w, p.w - p.z, p.x + gw, gw - p.x, p.y + gw, gw - p.y};
     unsigned code = 0;
     for (int i = 0; i < plane_count; ++i)
-        if (!(plane_distance(i, p) >= 0.0)) code |= 1u << i;
+        if (!(distance[i] >= 0.0f)) code |= 1u << i;
     return code;
 }
 

@@ -7,22 +7,16 @@
 #include <limits>
 #include <string>
 
+#include "../math3d/dvec3.h"
 #include "raster_internal.h"
 
 namespace tiny3d {
 
 namespace {
 
-struct dvec3 {
-    double x, y, z;
-};
-dvec3 operator-(dvec3 a, dvec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-dvec3 operator+(dvec3 a, dvec3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-dvec3 operator*(dvec3 a, double s) { return {a.x * s, a.y * s, a.z * s}; }
-double dot(dvec3 a, dvec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-double length(dvec3 a) { return std::sqrt(dot(a, a)); }
-dvec3 cross(dvec3 a, dvec3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
-dvec3 widen(vec3_t p) { return {p.x, p.y, p.z}; }
+using detail::dvec3;
+using detail::widen;
+
 dvec3 load(const double p[3]) { return {p[0], p[1], p[2]}; }
 void store(dvec3 v, double p[3]) { p[0] = v.x, p[1] = v.y, p[2] = v.z; }
 

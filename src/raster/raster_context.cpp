@@ -21,21 +21,18 @@ using namespace detail;
 
 namespace {
 
-// Sphere (object space) entirely outside one frustum plane of clip = M·p? Planes from the
-// rows of M (Gribb–Hartmann): row3 ± row_k, normalised.
-bool sphere_outside(const mat4_t &m, vec3_t c, float radius) {
-    auto row = [&](int r) { return vec4_t{m.m[r], m.m[4 + r], m.m[8 + r], m.m[12 + r]}; };
-    const vec4_t w = row(3);
-    for (int k = 0; k < 3; ++k) {
-        const vec4_t rk = row(k);
-        for (float sign : {1.0f, -1.0f}) {
-            const vec4_t p{w.x + sign * rk.x, w.y + sign * rk.y, w.z + sign * rk.z, w.w + sign * rk.w};
-            const float len = std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z);
-            if (!(len > 0.0f)) continue;
-            if ((p.x * c.x + p.y * c.y + p.z * c.z + p.w) / len < -radius) return true;
-        }
-    }
-    return false;
+// A clipped vertex on the screen (clip_to_screen, with 1/w for perspective-correct
+// attributes); false when it has no finite screen point.
+bool to_screen(const vec4_t &clip, int width, int height, screen_vertex &out) {
+    const screen_point p = clip_to_screen(clip, width, height);
+    out = {p.x, p.y, p.depth, 1.0f / p.w};
+    return !p.behind;
+}
+
+// The world position of a model-space point (the xyz part of model·(p, 1)).
+vec3_t world_of(const mat4_t &model, vec3_t p) {
+    const vec4_t h = mul_point_scalar(model, p);
+    return {h.x, h.y, h.z};
 }
 
 // Whether every vertex index of `triangles` is < count. Runs on the caller's thread before the
@@ -72,12 +69,15 @@ bool indices_below(const std::vector<std::array<std::uint32_t, 3>> &triangles, s
 // `count`: add its triangles to the stats.
 void render_context::impl::emit(const clip_vertex *poly, int n, const draw_params &p, std::uint32_t state,
                                 bool generic, bool count, segment &out) {
-    const float half_w = 0.5f * static_cast<float>(target->width), half_h = 0.5f * static_cast<float>(target->height);
-    const pixel_rect full{0, 0, target->width, target->height};
+    const int width = target->width, height = target->height;
+    const pixel_rect full{0, 0, width, height};
     for (int k = 1; k + 1 < n; ++k) {
         const clip_vertex *c[3] = {&poly[0], &poly[k], &poly[k + 1]};
-        const screen_vertex v[3] = {to_screen(c[0]->position, half_w, half_h), to_screen(c[1]->position, half_w, half_h),
-                                    to_screen(c[2]->position, half_w, half_h)};
+        screen_vertex v[3];
+        // A vertex without a finite screen point: skipped, as triangle_setup would.
+        if (!to_screen(c[0]->position, width, height, v[0]) || !to_screen(c[1]->position, width, height, v[1]) ||
+            !to_screen(c[2]->position, width, height, v[2]))
+            continue;
         const triangle_edges t = triangle_setup(v[0], v[1], v[2], full, p.cull);
         if (multisampled() ? t.area2 == 0 : !t.valid) {  // multisampled: samples without a centre count
             out.stats.culled_backface += count && t.culled;
@@ -160,8 +160,8 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
         const detail::xvertex &a = vertices[tri[0]], &b = vertices[tri[1]], &c = vertices[tri[2]];
         if (a.outcode & b.outcode & c.outcode) continue;  // all outside one plane
         float flat_shade = 0.0f;
-        if (flat) flat_shade = shade_flat(p.lights, mul3(p.model, m.positions[tri[0]]), mul3(p.model, m.positions[tri[1]]),
-                                          mul3(p.model, m.positions[tri[2]]));
+        if (flat) flat_shade = shade_flat(p.lights, world_of(p.model, m.positions[tri[0]]),
+                                          world_of(p.model, m.positions[tri[1]]), world_of(p.model, m.positions[tri[2]]));
         if ((a.outcode | b.outcode | c.outcode) == 0 && !generic) {
             // The common case: no clipping, straight to the fast setup.
             // Snapped once per vertex in transform(); an unusable vertex skips the triangle
@@ -200,12 +200,16 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
                 add_msaa(t, depth, shade, state, out);
                 continue;
             }
-            detail::fast_triangle f;
+            // Set up in place at the end of the list (no copy); dropped again unless ready.
+            detail::fast_triangle &f = out.fast.emplace_back();
             const detail::fast_setup verdict = detail::setup_fast_triangle(X, Y, area2, full, depth, shade, f);
             if (verdict == detail::fast_setup::ready) {
                 out.stats.rasterized += counts;
-                bin_fast(f, out);
-            } else if (verdict == detail::fast_setup::wide) {
+                bin_last_fast(out);
+                continue;
+            }
+            out.fast.pop_back();
+            if (verdict == detail::fast_setup::wide) {
                 const triangle_edges t = detail::triangle_setup_snapped(X, Y, full, p.cull);
                 if (!t.valid) continue;
                 out.stats.rasterized += counts;
@@ -301,7 +305,7 @@ void render_context::draw(const raster_mesh &mesh, const draw_params &params) {
     if (!s.target || mesh.positions.size() != mesh.normals.size() || mesh.positions.size() != mesh.uvs.size()) return;
     s.stats.triangles_in += mesh.triangles.size();
     const mat4_t mvp = mat4_multiply(params.view_projection, params.model);
-    if (sphere_outside(mvp, mesh.bound_center, mesh.bound_radius)) {
+    if (cull_sphere(frustum_from_matrix(mvp), {mesh.bound_center, mesh.bound_radius}) == cull_result::outside) {
         s.stats.culled_frustum += mesh.triangles.size();
         return;
     }

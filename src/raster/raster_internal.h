@@ -206,7 +206,7 @@ inline bool depth_passes(depth_func test, Depth fragment, Depth stored) {
     return false;
 }
 
-inline float clamp01(float v) { return v < 0.0f ? 0.0f : (v > 1.0f ? 1.0f : v); }
+using tiny3d::clamp01;  // math3d.h: NaN → 0, as the SIMD fills (maxps) do
 
 }  // namespace tiny3d::detail
 

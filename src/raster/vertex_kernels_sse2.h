@@ -1,5 +1,5 @@
 // vertex_kernels_sse2.h — the render context's vertex kernels, four vertices per SSE2
-// register: projection (clip = M·p, outcode, screen position, snap) and Gouraud shading with
+// register: projection (clip = M·p, then the vertex stage's project4 and the snap) and Gouraud shading with
 // directional lights. Each is lane by lane the portable reference of vertex_transform.cpp
 // (the same float operations in the same order, hence the same bits; tested in
 // tests/vertex_stage_test.cpp). Included only by vertex_transform.cpp, which chooses.
@@ -11,6 +11,7 @@
 
 #include <limits>
 
+#include "../pipeline/project4.h"
 #include "vertex_transform.h"
 
 namespace tiny3d::detail {
@@ -21,7 +22,7 @@ namespace {
 // operations, hence the same bits: v·(1/√|v|²), or 0 when |v|² ≤ 1e-30 or not finite.
 inline void unit_or_zero_x4(__m128 &x, __m128 &y, __m128 &z) {
     const __m128 len2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(x, x), _mm_mul_ps(y, y)), _mm_mul_ps(z, z));
-    constexpr float MIN_LENGTH_SQUARED = 1e-30f;  // as lighting_detail::unit_or_zero
+    constexpr float MIN_LENGTH_SQUARED = 1e-30f;  // as unit_or_zero (math3d.h)
     const __m128 usable = _mm_and_ps(_mm_cmpgt_ps(len2, _mm_set1_ps(MIN_LENGTH_SQUARED)),
                                      _mm_cmplt_ps(len2, _mm_set1_ps(std::numeric_limits<float>::infinity())));
     const __m128 scale = _mm_and_ps(usable, _mm_div_ps(_mm_set1_ps(1.0f), _mm_sqrt_ps(len2)));
@@ -30,12 +31,12 @@ inline void unit_or_zero_x4(__m128 &x, __m128 &y, __m128 &z) {
     z = _mm_and_ps(usable, _mm_mul_ps(z, scale));
 }
 
-// The position part of transform_vertices for four vertices: clip = M·p, outcode, screen position
-// and snap, lane by lane with the scalar code's float operations in the same order (mul,
-// clip_outcode, to_screen, snap_vertex), so every field gets the same bits.
-// Vertices index[0..3] of `positions`, written to the same indices of out and out_clip.
-inline void project_x4(const mat4_t &m, const vec3_t *positions, const std::uint32_t index[4], float guard, float half_w,
-                float half_h, xvertex *out, vec4_t *out_clip) {
+// project_one for four vertices: clip = M·p (mul_point_scalar's operations on four
+// lanes), then the vertex stage's project4 and snap_vertex lane by lane, so every field
+// gets project_one's bits. Vertices index[0..3] of `positions`, written to the same indices
+// of out and out_clip.
+inline void project_x4(const mat4_t &m, const vec3_t *positions, const std::uint32_t index[4], float guard, int width,
+                       int height, xvertex *out, vec4_t *out_clip) {
     const vec3_t &p0 = positions[index[0]], &p1 = positions[index[1]], &p2 = positions[index[2]], &p3 = positions[index[3]];
     const __m128 px = _mm_setr_ps(p0.x, p1.x, p2.x, p3.x);
     const __m128 py = _mm_setr_ps(p0.y, p1.y, p2.y, p3.y);
@@ -46,32 +47,19 @@ inline void project_x4(const mat4_t &m, const vec3_t *positions, const std::uint
                           _mm_set1_ps(m.m[12 + r]));
     };
     __m128 x = row(0), y = row(1), z = row(2), w = row(3);
-    // Outcode: a plane's bit is set unless its distance is ≥ 0 (NaN is outside).
-    const __m128 zero = _mm_setzero_ps(), gw = _mm_mul_ps(_mm_set1_ps(guard), w);
-    const __m128 distance[6] = {_mm_add_ps(z, w), _mm_sub_ps(w, z), _mm_add_ps(x, gw),
-                                _mm_sub_ps(gw, x), _mm_add_ps(y, gw), _mm_sub_ps(gw, y)};
-    static_assert(CLIP_NEAR == 1 && CLIP_FAR == 2 && CLIP_LEFT == 4 && CLIP_RIGHT == 8 && CLIP_BOTTOM == 16 &&
-                  CLIP_TOP == 32);
-    __m128i code = _mm_setzero_si128();
-    for (int k = 0; k < 6; ++k)
-        code = _mm_or_si128(code, _mm_andnot_si128(_mm_castps_si128(_mm_cmpge_ps(distance[k], zero)), _mm_set1_epi32(1 << k)));
+    const projected4 s = project4(x, y, z, w, guard, static_cast<float>(width), static_cast<float>(height), true);
     alignas(16) std::uint32_t outcode[4];
-    _mm_store_si128(reinterpret_cast<__m128i *>(outcode), code);
-    // to_screen, computed for every lane (used only where w > 0, i.e. outside no near plane).
-    const __m128 inv_w = _mm_div_ps(_mm_set1_ps(1.0f), w);
-    const __m128 one = _mm_set1_ps(1.0f), half = _mm_set1_ps(0.5f);
-    __m128 sx = _mm_mul_ps(_mm_add_ps(_mm_mul_ps(x, inv_w), one), _mm_set1_ps(half_w));
-    __m128 sy = _mm_mul_ps(_mm_sub_ps(one, _mm_mul_ps(y, inv_w)), _mm_set1_ps(half_h));
+    _mm_store_si128(reinterpret_cast<__m128i *>(outcode), s.outcode);
     alignas(16) float depth[4];
-    _mm_store_ps(depth, _mm_add_ps(_mm_mul_ps(_mm_mul_ps(half, z), inv_w), half));
-    // snap_vertex: usable when |x|, |y| ≤ RASTER_MAX_COORD (false for NaN and ±∞ too).
+    _mm_store_ps(depth, s.depth);
+    // snap_vertex: usable when in front and |x|, |y| ≤ RASTER_MAX_COORD (false for NaN and ±∞ too).
     const __m128 abs_mask = _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff)), limit = _mm_set1_ps(RASTER_MAX_COORD);
-    const int usable = _mm_movemask_ps(_mm_and_ps(_mm_cmple_ps(_mm_and_ps(sx, abs_mask), limit),
-                                                  _mm_cmple_ps(_mm_and_ps(sy, abs_mask), limit)));
+    const int usable = _mm_movemask_ps(_mm_and_ps(s.in_front, _mm_and_ps(_mm_cmple_ps(_mm_and_ps(s.x, abs_mask), limit),
+                                                                         _mm_cmple_ps(_mm_and_ps(s.y, abs_mask), limit))));
     const __m128 sub = _mm_set1_ps(static_cast<float>(RASTER_SUBPIXEL_ONE));
     alignas(16) std::int32_t snap_x[4], snap_y[4];
-    _mm_store_si128(reinterpret_cast<__m128i *>(snap_x), _mm_cvtps_epi32(_mm_mul_ps(sx, sub)));
-    _mm_store_si128(reinterpret_cast<__m128i *>(snap_y), _mm_cvtps_epi32(_mm_mul_ps(sy, sub)));
+    _mm_store_si128(reinterpret_cast<__m128i *>(snap_x), _mm_cvtps_epi32(_mm_mul_ps(s.x, sub)));
+    _mm_store_si128(reinterpret_cast<__m128i *>(snap_y), _mm_cvtps_epi32(_mm_mul_ps(s.y, sub)));
     _MM_TRANSPOSE4_PS(x, y, z, w);
     const __m128 clip[4] = {x, y, z, w};
     for (int l = 0; l < 4; ++l) {
@@ -81,7 +69,7 @@ inline void project_x4(const mat4_t &m, const vec3_t *positions, const std::uint
         out_clip[index[l]] = {c[0], c[1], c[2], c[3]};
         v.outcode = static_cast<std::uint8_t>(outcode[l]);
         v.depth = depth[l];
-        v.snapped = !(v.outcode & CLIP_NEAR) && ((usable >> l) & 1);
+        v.snapped = !(v.outcode & clip_near) && ((usable >> l) & 1);
         v.snapped_x = snap_x[l];
         v.snapped_y = snap_y[l];
     }

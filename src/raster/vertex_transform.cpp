@@ -2,7 +2,7 @@
 // one place that chooses between the portable reference kernels and the SSE2 ones.
 #include "vertex_transform.h"
 
-#include "vertex_kernels_sse2.h"
+#include "vertex_kernels_sse2.h"  // the SIMD kernels (nothing without SSE2)
 
 namespace tiny3d::detail {
 
@@ -22,12 +22,12 @@ void project_vertices(const raster_mesh &m, const vertex_job &job, float guard, 
 #ifdef __SSE2__
     for (; first + 4 <= set.count; first += 4) {
         const std::uint32_t index[4] = {set[first], set[first + 1], set[first + 2], set[first + 3]};
-        project_x4(job.mvp, m.positions.data(), index, guard, job.half_w, job.half_h, vertices, clip);
+        project_x4(job.mvp, m.positions.data(), index, guard, job.width, job.height, vertices, clip);
     }
 #endif
     for (std::size_t k = first; k < set.count; ++k) {
         const std::uint32_t i = set[k];
-        project_one(job.mvp, m.positions[i], guard, job.half_w, job.half_h, vertices[i], clip[i]);
+        project_one(job.mvp, m.positions[i], guard, job.width, job.height, vertices[i], clip[i]);
     }
 }
 
@@ -57,7 +57,8 @@ void shade_general(const raster_mesh &m, const draw_params &p, const vertex_job 
         xvertex &x = vertices[i];
         vec3_t world{0, 0, 0}, normal{0, 0, 0};
         if (job.gouraud || job.generic) {
-            world = mul3(p.model, m.positions[i]);
+            const vec4_t h = mul_point_scalar(p.model, m.positions[i]);
+            world = {h.x, h.y, h.z};
             normal = apply_normal_transform(job.nt, m.normals[i]);
         }
         x.shade = job.gouraud ? shade_gouraud_vertex(p.lights, world, normal) : 0.0f;
@@ -77,8 +78,8 @@ vertex_job make_vertex_job(const draw_params &p, const mat4_t &mvp, bool generic
     vertex_job job;
     job.mvp = mvp;
     job.nt = make_normal_transform(p.model);
-    job.half_w = 0.5f * static_cast<float>(width);
-    job.half_h = 0.5f * static_cast<float>(height);
+    job.width = width;
+    job.height = height;
     job.gouraud = p.shade == shading::gouraud;
     job.generic = generic;
     job.directional_gouraud = job.gouraud && !generic && directional_only(p.lights);

@@ -18,7 +18,7 @@ namespace tiny3d::detail {
 // reads and the transform's writes are 2.6× smaller).
 struct xvertex {
     std::int32_t snapped_x, snapped_y;  // screen position in 1/16 px, valid when `snapped`
-    float depth;                        // window depth 0.5·z/w + 0.5, valid when outcode has no CLIP_NEAR bit
+    float depth;                        // window depth (z/w + 1)/2, valid when `snapped`
     float shade;                        // Gouraud intensity (or 0)
     std::uint8_t outcode;
     bool snapped;                       // screen position usable (snap_vertex succeeded)
@@ -32,7 +32,7 @@ static_assert(ATTR_COUNT <= CLIP_MAX_ATTRIBUTES);
 struct vertex_job {
     mat4_t mvp;
     normal_transform nt;
-    float half_w, half_h;
+    int width, height;  // the target's, in pixels
     bool gouraud, generic;
     bool directional_gouraud;  // Gouraud with directional lights only (no position needed)
 };
@@ -44,36 +44,19 @@ struct vertex_set {
     std::uint32_t operator[](std::size_t k) const { return list ? list[k] : static_cast<std::uint32_t>(k); }
 };
 
-// Clip space → screen: pixels, window depth 0.5·z/w + 0.5 and 1/w (for w > 0).
-inline screen_vertex to_screen(vec4_t c, float half_w, float half_h) {
-    const float inv_w = 1.0f / c.w;
-    return {(c.x * inv_w + 1.0f) * half_w, (1.0f - c.y * inv_w) * half_h, 0.5f * c.z * inv_w + 0.5f, inv_w};
-}
-
-// M·(p, 1) and its xyz part.
-inline vec4_t mul(const mat4_t &m, vec3_t p) {
-    return {m.m[0] * p.x + m.m[4] * p.y + m.m[8] * p.z + m.m[12], m.m[1] * p.x + m.m[5] * p.y + m.m[9] * p.z + m.m[13],
-            m.m[2] * p.x + m.m[6] * p.y + m.m[10] * p.z + m.m[14], m.m[3] * p.x + m.m[7] * p.y + m.m[11] * p.z + m.m[15]};
-}
-
-inline vec3_t mul3(const mat4_t &m, vec3_t p) {
-    const vec4_t r = mul(m, p);
-    return {r.x, r.y, r.z};
-}
-
 // ---- the portable reference kernels (the SSE2 ones match them bit for bit) ----
 
-// One vertex: clip = M·p, outcode, and for a vertex not outside the near plane its window
-// depth and snapped screen position.
-inline void project_one(const mat4_t &m, vec3_t position, float guard, float half_w, float half_h, xvertex &x,
+// One vertex: clip = M·p, clip_outcode, and for a vertex not outside the near plane its
+// window depth and snapped screen position (clip_to_screen, snap_vertex).
+inline void project_one(const mat4_t &m, vec3_t position, float guard, int width, int height, xvertex &x,
                         vec4_t &clip) {
-    clip = mul(m, position);
+    clip = mul_point_scalar(m, position);
     x.outcode = static_cast<std::uint8_t>(clip_outcode(clip, guard));
     x.snapped = false;
-    if (!(x.outcode & CLIP_NEAR)) {
-        const screen_vertex screen = to_screen(clip, half_w, half_h);
-        x.depth = screen.z;
-        x.snapped = snap_vertex(screen, x.snapped_x, x.snapped_y);
+    if (!(x.outcode & clip_near)) {
+        const screen_point p = clip_to_screen(clip, width, height);
+        x.depth = p.depth;
+        x.snapped = !p.behind && snap_vertex({p.x, p.y, p.depth, 0.0f}, x.snapped_x, x.snapped_y);
     }
 }
 

@@ -10,10 +10,8 @@
 
 #include "pipeline.h"
 #include "raster.h"
+#include "../pipeline/project4.h"
 
-#ifdef __SSE2__
-#include <emmintrin.h>
-#endif
 
 namespace tiny3d {
 
@@ -129,42 +127,18 @@ projected_vertex project_one(const vec4_t &c, bool all_inside, int width, int he
 }
 
 #ifdef __SSE2__
-// project_one for clip[0..3], one lane per point, with the scalar code's float operations
-// in the same order, so every field gets the same bits. The plane tests use float sums:
-// the sign of a rounded sum of two finite floats is the sign of the exact sum (and it is
-// zero only when that is), so "z + w ≥ 0" in float agrees with clip_outcode's double.
-void project_four(const vec4_t *clip, bool all_inside, __m128 width, __m128 height, projected_vertex *out) {
+// project_one for clip[0..3], one lane per point: the vertex stage's project4 (the same
+// float operations as clip_outcode and clip_to_screen), then project_one's choices.
+void project_four(const vec4_t *clip, bool all_inside, float width, float height, projected_vertex *out) {
     __m128 x = _mm_loadu_ps(&clip[0].x), y = _mm_loadu_ps(&clip[1].x), z = _mm_loadu_ps(&clip[2].x),
            w = _mm_loadu_ps(&clip[3].x);
     _MM_TRANSPOSE4_PS(x, y, z, w);
-    const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f), half = _mm_set1_ps(0.5f);
-    auto finite = [&](__m128 v) { return _mm_cmpeq_ps(_mm_mul_ps(v, zero), zero); };  // ±∞·0, NaN·0 are NaN
+    const detail::projected4 p = detail::project4(x, y, z, w, 1.0f, width, height, !all_inside);
     const __m128i all_planes = _mm_set1_epi32(int(clip_all));
-    __m128i code = _mm_setzero_si128();
-    if (!all_inside) {
-        auto outside = [&](__m128 distance, unsigned plane) {  // plane's bit unless distance ≥ 0
-            return _mm_andnot_si128(_mm_castps_si128(_mm_cmpge_ps(distance, zero)), _mm_set1_epi32(int(plane)));
-        };
-        code = _mm_or_si128(_mm_or_si128(outside(_mm_add_ps(z, w), clip_near), outside(_mm_sub_ps(w, z), clip_far)),
-                            _mm_or_si128(outside(_mm_add_ps(x, w), clip_left), outside(_mm_sub_ps(w, x), clip_right)));
-        code = _mm_or_si128(code, _mm_or_si128(outside(_mm_add_ps(y, w), clip_bottom), outside(_mm_sub_ps(w, y), clip_top)));
-        const __m128 clip_finite = _mm_and_ps(_mm_and_ps(finite(x), finite(y)), _mm_and_ps(finite(z), finite(w)));
-        code = _mm_or_si128(code, _mm_andnot_si128(_mm_castps_si128(clip_finite), all_planes));
-    }
-    // clip_to_screen, on every lane.
-    const __m128 inv_w = _mm_div_ps(one, w);
-    const __m128 ndc_x = _mm_mul_ps(x, inv_w), ndc_y = _mm_mul_ps(y, inv_w), ndc_z = _mm_mul_ps(z, inv_w);
-    __m128 sx = _mm_mul_ps(_mm_mul_ps(_mm_add_ps(ndc_x, one), half), width);
-    __m128 sy = _mm_mul_ps(_mm_mul_ps(_mm_sub_ps(one, ndc_y), half), height);
-    __m128 depth = _mm_mul_ps(_mm_add_ps(ndc_z, one), half);
-    const __m128 in_front = _mm_and_ps(_mm_and_ps(_mm_cmpgt_ps(w, zero), finite(w)),
-                                       _mm_and_ps(finite(ndc_x), _mm_and_ps(finite(ndc_y), finite(ndc_z))));
-    const __m128i inside = _mm_cmpeq_epi32(code, _mm_setzero_si128());
-    code = _mm_or_si128(code, _mm_and_si128(_mm_andnot_si128(_mm_castps_si128(in_front), inside), all_planes));
+    const __m128i inside = _mm_cmpeq_epi32(p.outcode, _mm_setzero_si128());
+    const __m128i code = _mm_or_si128(p.outcode, _mm_and_si128(_mm_andnot_si128(_mm_castps_si128(p.in_front), inside), all_planes));
     const __m128 shown = _mm_castsi128_ps(_mm_cmpeq_epi32(code, _mm_setzero_si128()));
-    sx = _mm_and_ps(sx, shown);
-    sy = _mm_and_ps(sy, shown);
-    depth = _mm_and_ps(depth, shown);
+    __m128 sx = _mm_and_ps(p.x, shown), sy = _mm_and_ps(p.y, shown), depth = _mm_and_ps(p.depth, shown);
     __m128 packed_code = _mm_castsi128_ps(code);
     _MM_TRANSPOSE4_PS(sx, sy, depth, packed_code);
     _mm_storeu_ps(&out[0].x, sx);
@@ -181,8 +155,7 @@ void project_vertices(wireframe_workspace &ws, bool all_inside, int width, int h
     std::size_t i = 0;
 #ifdef __SSE2__
     static_assert(sizeof(projected_vertex) == 4 * sizeof(float) && sizeof(vec4_t) == 4 * sizeof(float));
-    const __m128 w = _mm_set1_ps(float(width)), h = _mm_set1_ps(float(height));
-    for (; i + 4 <= n; i += 4) project_four(&ws.clip[i], all_inside, w, h, &ws.vertices[i]);
+    for (; i + 4 <= n; i += 4) project_four(&ws.clip[i], all_inside, float(width), float(height), &ws.vertices[i]);
 #endif
     for (; i < n; ++i) ws.vertices[i] = project_one(ws.clip[i], all_inside, width, height);
 }
