@@ -54,15 +54,18 @@ using corner_triangle = std::array<std::uint32_t, 3>;
 
 // Triangulates every face, keeping the winding; corner k_i of a face is its i-th corner.
 // Triangles are listed face by face, n − 2 for a face of n corners (none for a face of
-// fewer than 3). Convex faces (the usual triangles and quads) give the fan
-// (k0, k_i, k_{i+1}). Other faces — concave, or non-planar ones whose fan folds — are
-// triangulated by ear clipping in the face's best plane (the projection along its Newell
-// normal), so every triangle lies inside the polygon and their areas sum to the polygon's
-// (the shoelace area for planar faces). Collinear and repeated corners give zero-area
-// triangles. A self-intersecting face, or a non-convex one of more than
-// mesh_ear_clip_max_corners corners (ear clipping costs O(n²)), falls back to the fan.
-// Out-of-range indices are not checked here (see mesh_validate).
-inline constexpr std::uint32_t mesh_ear_clip_max_corners = 4096;
+// fewer than 3), as corner indices (into mesh::indices and the corner attributes).
+// Faces whose fan (k0, k_i, k_{i+1}) stays inside them — all convex faces (the usual
+// triangles and quads), and any face star-shaped around its first corner — give the fan,
+// judged in the face's best plane (the projection along its Newell normal). Other faces —
+// concave, or non-planar ones whose fan folds over in that plane — are triangulated by ear
+// clipping in that plane, so every triangle lies inside the polygon and their areas sum
+// to the polygon's (the shoelace area for planar faces). Collinear and repeated corners
+// give zero-area triangles. A self-intersecting face, or a non-convex one of more than
+// mesh_ear_clip_max_corners corners (ear clipping costs O(n²) to O(n³)), falls back to
+// the fan. Faces with out-of-range indices get the fan (positions are not read; see
+// mesh_validate).
+inline constexpr std::uint32_t mesh_ear_clip_max_corners = 1024;
 std::vector<corner_triangle> mesh_triangles(const mesh &m);
 
 // ---- mesh utilities (src/mesh/mesh.cpp) -------------------------------------------

@@ -38,23 +38,20 @@ std::vector<lab_triangle> lab_triangles(const mesh &m, const lab_camera &cam) {
     std::vector<lab_triangle> tris;
     const v3 camera = load(cam.camera);
     std::size_t index = 0;
-    for (std::size_t f = 0; f < m.face_count(); ++f) {
-        const std::uint32_t s = m.face_start[f], e = m.face_start[f + 1];
-        for (std::uint32_t k = s + 1; k + 1 < e; ++k, ++index) {
-            lab_triangle t;
-            t.v0 = from(m.positions[m.indices[s]]);
-            t.v1 = from(m.positions[m.indices[k]]);
-            t.v2 = from(m.positions[m.indices[k + 1]]);
-            t.abc = cross(t.v1 - t.v0, t.v2 - t.v0);              // eq. 14
-            const double d_plane = -dot(t.abc, t.v0);            // eq. 15
-            t.n = -dot(t.abc, camera) - d_plane;                 // eq. 16
-            t.abc_len = std::sqrt(dot(t.abc, t.abc));
-            t.c1 = cross(t.v2 - t.v0, t.v1 - t.v0);
-            t.c2 = cross(t.v0 - t.v1, t.v2 - t.v1);
-            t.c3 = cross(t.v1 - t.v2, t.v0 - t.v2);
-            t.color = static_cast<std::uint8_t>(LAB_COLOR_BASE + index % LAB_COLOR_CYCLE);
-            tris.push_back(t);
-        }
+    for (const corner_triangle &corners : mesh_triangles(m)) {
+        lab_triangle t;
+        t.v0 = from(m.positions[m.indices[corners[0]]]);
+        t.v1 = from(m.positions[m.indices[corners[1]]]);
+        t.v2 = from(m.positions[m.indices[corners[2]]]);
+        t.abc = cross(t.v1 - t.v0, t.v2 - t.v0);              // eq. 14
+        const double d_plane = -dot(t.abc, t.v0);            // eq. 15
+        t.n = -dot(t.abc, camera) - d_plane;                 // eq. 16
+        t.abc_len = std::sqrt(dot(t.abc, t.abc));
+        t.c1 = cross(t.v2 - t.v0, t.v1 - t.v0);
+        t.c2 = cross(t.v0 - t.v1, t.v2 - t.v1);
+        t.c3 = cross(t.v1 - t.v2, t.v0 - t.v2);
+        t.color = static_cast<std::uint8_t>(LAB_COLOR_BASE + index++ % LAB_COLOR_CYCLE);
+        tris.push_back(t);
     }
     return tris;
 }

@@ -1,5 +1,5 @@
-// triangulate.cpp — mesh_triangles: the fan for convex faces, ear clipping in the face's
-// best plane for the others. See include/mesh.h.
+// triangulate.cpp — mesh_triangles: the fan where it stays inside the face, ear clipping
+// in the face's best plane for the others. See include/mesh.h.
 #include <cmath>
 #include <vector>
 
@@ -42,15 +42,20 @@ bool project_face(const mesh &m, std::size_t f, std::vector<point2> &pts) {
     return true;
 }
 
-bool convex(const std::vector<point2> &p) {
-    const std::size_t n = p.size();
-    for (std::size_t i = 0; i < n; ++i)
-        if (turn(p[(i + n - 1) % n], p[i], p[(i + 1) % n]) < 0.0) return false;
+// True if every fan triangle (p0, p_i, p_{i+1}) turns counter-clockwise (or is flat):
+// the polygon is then star-shaped around its first corner — every convex polygon is — and
+// the fan lies inside it. (A per-corner convexity test would be fooled by repeated
+// corners, whose turns are 0.)
+bool fan_stays_inside(const std::vector<point2> &p) {
+    for (std::size_t i = 1; i + 1 < p.size(); ++i)
+        if (turn(p[0], p[i], p[i + 1]) < 0.0) return false;
     return true;
 }
 
-// Ear clipping over a doubly linked ring of the corners (O(n²): each ear test scans the
-// ring for blocking corners; after a clip only the two neighbours are re-tested).
+// Ear clipping over a doubly linked ring of the corners. Each ear test scans the ring for
+// blocking corners (O(n)); after a clip only the two neighbours are re-tested, and all
+// corners again when a full turn finds no ear (at most once per corner turning convex):
+// O(n²) for most polygons, O(n³) at worst, hence mesh_ear_clip_max_corners.
 class ear_clipper {
 public:
     ear_clipper(const std::vector<point2> &p) : p_(p), n_(p.size()), prev_(n_), next_(n_), ear_(n_) {
@@ -78,11 +83,17 @@ public:
                 continue;
             }
             cur = next_[cur];
-            if (++scanned > left) {  // no ear anywhere: self-intersecting, fan the rest
-                for (std::size_t k = next_[cur]; next_[k] != cur; k = next_[k])
-                    out.push_back({s + std::uint32_t(cur), s + std::uint32_t(k), s + std::uint32_t(next_[k])});
-                return;
-            }
+            if (++scanned <= left) continue;
+            // A full turn without an ear. Flags may be stale: a corner that turned convex
+            // no longer blocks its neighbours' ears. Re-test all once; if still none, the
+            // polygon is self-intersecting: fan the rest.
+            bool any = false;
+            for (std::size_t k = next_[cur], i = 0; i < left; k = next_[k], ++i) any |= (ear_[k] = is_ear(k));
+            scanned = 0;
+            if (any) continue;
+            for (std::size_t k = next_[cur]; next_[k] != cur; k = next_[k])
+                out.push_back({s + std::uint32_t(cur), s + std::uint32_t(k), s + std::uint32_t(next_[k])});
+            return;
         }
         out.push_back({s + std::uint32_t(prev_[cur]), s + std::uint32_t(cur), s + std::uint32_t(next_[cur])});
     }
@@ -120,7 +131,7 @@ void face_triangles(const mesh &m, std::size_t f, std::vector<point2> &pts, std:
         out.push_back({s, s + 1, s + 2});
         return;
     }
-    if (e - s > mesh_ear_clip_max_corners || !face_in_range(m, f) || !project_face(m, f, pts) || convex(pts)) {
+    if (e - s > mesh_ear_clip_max_corners || !face_in_range(m, f) || !project_face(m, f, pts) || fan_stays_inside(pts)) {
         fan(s, e, out);
         return;
     }

@@ -1,4 +1,4 @@
-// raster_mesh.cpp — tiny3d::mesh → raster_mesh (fan triangles over shared vertices).
+// raster_mesh.cpp — tiny3d::mesh → raster_mesh (mesh_triangles over shared vertices).
 #include <cmath>
 #include <string>
 
@@ -63,13 +63,10 @@ result<raster_mesh> make_raster_mesh(const mesh &m, std::span<const vec3_t> vert
             }
     }
     const bool shared = r.positions.size() == m.positions.size() && !corner_attrs && !vertex_normals.empty();
-    for (std::size_t f = 0; f < m.face_count(); ++f) {
-        const std::uint32_t s = m.face_start[f], e = m.face_start[f + 1];
-        for (std::uint32_t k = s + 1; k + 1 < e; ++k) {
-            if (shared) r.triangles.push_back({m.indices[s], m.indices[k], m.indices[k + 1]});
-            else r.triangles.push_back({s, k, k + 1});
-        }
-    }
+    // mesh_triangles: the fan where it stays inside a face, ear clipping for the others.
+    r.triangles = mesh_triangles(m);
+    if (shared)
+        for (std::array<std::uint32_t, 3> &t : r.triangles) t = {m.indices[t[0]], m.indices[t[1]], m.indices[t[2]]};
     // Bounding sphere: box centre, largest distance (finite positions only).
     vec3_t lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
     for (const vec3_t &p : r.positions) {
