@@ -36,6 +36,14 @@ inline std::size_t allocations() { return stats().allocations.load(); }
 inline std::size_t largest() { return stats().largest.load(); }
 inline void reset_largest() { stats().largest.store(0); }
 
+// The largest single allocation made while fn runs.
+template <class Fn>
+std::size_t largest_allocation_during(Fn &&fn) {
+    reset_largest();
+    fn();
+    return largest();
+}
+
 inline void *allocate(std::size_t bytes, std::size_t align) {
     note(bytes);
     if (bytes == 0) bytes = 1;

@@ -16,13 +16,7 @@ using namespace tiny3d;
 
 namespace {
 
-// Largest single allocation made by fn.
-template <class Fn>
-std::size_t largest_allocation_during(Fn &&fn) {
-    alloc_tracker::reset_largest();
-    fn();
-    return alloc_tracker::largest();
-}
+using alloc_tracker::largest_allocation_during;
 
 // A file of `size` bytes of zeros without writing them (sparse where the file system can).
 std::string sparse_file(temp_folder &tmp, const std::string &leaf, off_t size) {

@@ -55,13 +55,7 @@ bool same_pixels(const canvas_t &a, const canvas_t &b) {
 bool finite3(vec3_t v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 double len(vec3_t v) { return std::sqrt(double(v.x) * v.x + double(v.y) * v.y + double(v.z) * v.z); }
 
-// Parses while watching the largest single allocation.
-template <class Parse>
-std::size_t largest_allocation_during(Parse &&parse) {
-    alloc_tracker::reset_largest();
-    parse();
-    return alloc_tracker::largest();
-}
+using alloc_tracker::largest_allocation_during;
 
 // The perspective used by the renderer cases: 90° vertical field of view, near 1, far 100.
 mat4_t projection() { return tiny3d::mat4_perspective(float(M_PI / 2), 1.0f, 1.0f, 100.0f); }
