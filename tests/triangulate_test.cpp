@@ -208,3 +208,16 @@ TEST(the_renderers_fill_with_mesh_triangles) {
         }
     CHECK(tris != (std::vector<corner_triangle>{{0, 1, 2}, {0, 2, 3}, {0, 3, 4}}));  // not the fan, which leaves the arrow
 }
+
+TEST(the_generators_meshes_keep_the_fan) {
+    // Every generated mesh has convex faces: the triangles (and so the pixels of the demos
+    // drawing them) are exactly the fan of before.
+    const mesh meshes[] = {make_cube(1.0f), make_soccer_ball(1.0f), make_torus(1.0f, 0.4f, 24, 12),
+                           make_uv_sphere(16, 8), make_icosphere(2), make_torus_knot(2, 3, 154, 12)};
+    for (const mesh &m : meshes) {
+        std::vector<corner_triangle> fan;
+        for (std::size_t f = 0; f < m.face_count(); ++f)
+            for (std::uint32_t k = m.face_start[f] + 1; k + 1 < m.face_start[f + 1]; ++k) fan.push_back({m.face_start[f], k, k + 1});
+        CHECK(mesh_triangles(m) == fan);
+    }
+}
