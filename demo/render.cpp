@@ -44,7 +44,6 @@ struct settings {
     bool eye_given = false, target_given = false, up_given = false;
     double fov_degrees = kDefaultFovDegrees;
     bool ortho = false, info = false;
-    tiny3d::sample_count samples = tiny3d::sample_count::x1;  // --aa
     float ambient = kAmbient;
     std::vector<light_t> lights;  // camera frame; intensity < 0 = "split the rest evenly"
 };
@@ -200,6 +199,7 @@ int main(int argc, char **argv) {
     // The --frames range is checked against --turntable's value.
     cli.add_sequence_options([&s] { return s.turntable; }, kDefaultWidth, kDefaultHeight);
     cli.add_threads(2);
+    cli.add_samples(tiny3d::sample_count::x4);
     cli.choice("--mode", s.mode, {"flat", "gouraud", "phong", "wireframe", "hidden-line"},
                "shading (default phong: per-pixel normals), or edges: wireframe draws every edge, hidden-line "
                "leaves out the edges whose faces all face away (exact for convex meshes)");
@@ -219,15 +219,6 @@ int main(int argc, char **argv) {
                "intensity I (default: 0.85 shared by the lights without one); replaces the default two",
                [&s](const std::string &v) { return parse_light(v, s.lights); }, true);
     cli.number("--ambient", s.ambient, 0.0f, 1.0f, "ambient light 0..1 (default 0.1)");
-    cli.custom("--aa", "N",
-               "anti-aliasing of the filled modes: 1 (default), 4, 8 or 16 samples per pixel (the edge modes' "
-               "lines are always anti-aliased)",
-               [&s](const std::string &v) -> std::string {
-                   auto n = tiny3d::parse_sample_count(v);
-                   if (!n) return "--aa wants 1, 4, 8 or 16, got '" + v + "'";
-                   s.samples = *n;
-                   return "";
-               });
     cli.flag("--info", s.info, "print the mesh's counts, bounds and loader warnings; render nothing");
     if (const int status = cli.parse(argc, argv); status >= 0) return status;
     if (s.up_given && !(tiny3d::vec3_length(s.up) > 0.0f)) return cli.usage_error("--up must not be zero, got '0,0,0'");
@@ -303,7 +294,7 @@ int main(int argc, char **argv) {
                 !st)
                 return cli.fail(st.message());
         } else {
-            if (tiny3d::status st = ctx.begin_frame(**canvas, kBackground, s.samples); !st) return cli.fail(st.message());
+            if (tiny3d::status st = ctx.begin_frame(**canvas, kBackground, o.samples); !st) return cli.fail(st.message());
             params.model = model;
             ctx.draw(*shape, params);
             ctx.end_frame();

@@ -144,11 +144,11 @@ void command_line::add_threads(int default_threads) {
 void command_line::add_samples(tiny3d::sample_count default_samples) {
     common.samples = default_samples;
     custom("--aa", "N",
-           "samples per pixel of the filled triangles: 1 (aliased), 4, 8 or 16 (default " +
-               std::to_string(static_cast<int>(default_samples)) + ")",
+           "anti-aliasing: samples per pixel of the filled triangles, 1 (aliased), 4, 8 or 16 (default " +
+               std::to_string(static_cast<int>(default_samples)) + "; lines are always anti-aliased)",
            [this](const std::string &text) {
                const tiny3d::result<tiny3d::sample_count> n = tiny3d::parse_sample_count(text);
-               if (!n) return "--aa: " + n.message();
+               if (!n) return "--aa wants 1, 4, 8 or 16, got '" + text + "'";
                common.samples = n.value();
                return std::string();
            });

@@ -80,8 +80,7 @@ public:
     void add_frames(std::function<int()> frame_count);
     void add_threads(int default_threads);
     void add_png();
-    // --aa 1|4|8|16: samples per pixel of the filled triangles (render_context::begin_frame;
-    // the name render's own --aa has).
+    // --aa 1|4|8|16: samples per pixel of the filled triangles (render_context::begin_frame).
     void add_samples(tiny3d::sample_count default_samples);
     // What a program writing a sequence of frames takes: --out, --frames, --size, --png.
     void add_sequence_options(int frame_count, int default_width, int default_height);
