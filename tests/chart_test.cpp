@@ -379,6 +379,45 @@ TEST(chart_keeps_long_labels_inside_a_small_canvas) {
     }
 }
 
+// A series is one legend entry, one marker shape and a line through its points; a long
+// label wraps in the legend instead of being cut.
+TEST(chart_series_share_one_entry_and_a_line_and_long_labels_wrap) {
+    auto c = canvas_or_die(800, 500);
+    tiny3d::chart_spec spec;
+    spec.title = "series";
+    const std::string long_label = "a variant with a long descriptive name (the robust one, in double precision)";
+    for (int k = 0; k < 4; ++k) {
+        tiny3d::chart_point p{std::pow(10.0, k), std::pow(10.0, -k), "ignored"};
+        p.series = "method A";
+        p.tag = "T=" + std::to_string(k);
+        spec.points.push_back(p);
+        tiny3d::chart_point q{2 * std::pow(10.0, k), 3 * std::pow(10.0, -k), "ignored"};
+        q.series = "method B";
+        spec.points.push_back(q);
+    }
+    spec.points.push_back({5.0, 0.5, long_label});
+    const auto layout = tiny3d::draw_chart(*c, spec);
+    CHECK(layout.ok());
+    if (!layout) return;
+    CHECK_EQ(layout->legend_entries, std::size_t(3));  // not 9
+    for (std::size_t i = 0; i < 8; ++i) CHECK_EQ(layout->legend_entry[i], i % 2);
+    CHECK_EQ(layout->legend_entry[8], std::size_t(2));
+    // Ink on the line half-way between two points of series A (no marker there).
+    const double mx = 0.5 * (layout->marker_x[0] + layout->marker_x[2]), my = 0.5 * (layout->marker_y[0] + layout->marker_y[2]);
+    CHECK(darkest_near(*c, mx, my, 1) < 0.5f);
+    // The long label is all there, over several legend rows: the text boxes right of the
+    // plot add up to at least its width.
+    int legend_text = 0, legend_rows = 0;
+    for (const tiny3d::pixel_box &b : layout->text_boxes)
+        if (b.x > layout->plot_right) legend_text += b.width, ++legend_rows;
+    CHECK(legend_rows >= 3 + 1);
+    CHECK(legend_text >= tiny3d::text_width(long_label) + tiny3d::text_width("method A") - 2 * tiny3d::font_advance);
+    for (const tiny3d::pixel_box &b : layout->text_boxes) CHECK(inside(b, c->width, c->height));
+    for (std::size_t i = 0; i < layout->text_boxes.size(); ++i)
+        for (std::size_t j = i + 1; j < layout->text_boxes.size(); ++j)
+            CHECK(!overlap(layout->text_boxes[i], layout->text_boxes[j]));
+}
+
 TEST(chart_refuses_small_canvases_and_bad_axes) {
     auto c = canvas_or_die(tiny3d::chart_min_width - 1, 300);
     tiny3d::chart_spec spec;

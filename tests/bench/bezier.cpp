@@ -123,7 +123,7 @@ int main(int argc, char **argv) {
         char note[96];
         std::snprintf(note, sizeof note, "build %.0f ns once, %zu stations", build.median, table->station_count());
         rows.push_back({"bezier", "arc-length table " + std::to_string(samples) + " samples", "fast", unit, t, e.mean,
-                        e.max, err_unit, note});
+                        e.max, err_unit, note, "arc-length table (samples per segment)", std::to_string(samples)});
     }
     return bench::report(o, "bezier", rows, "Constant-speed Bezier: time per lookup vs speed error");
 }

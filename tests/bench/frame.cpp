@@ -8,8 +8,10 @@
 // ours.
 // Error column: fraction of pixels where the two-thread frame differs from the one-thread
 // frame, or the frame without clusters from the frame with them (must be 0).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -17,6 +19,14 @@
 #include "renderer.h"
 
 namespace {
+
+// A workload's short name for a chart tag: "icosphere L6 (81,920 tris)" → "L6",
+// "torus knot (3,696 tris)" → "knot".
+std::string short_name(const std::string &workload) {
+    if (workload.rfind("icosphere ", 0) == 0) return workload.substr(10, workload.find(' ', 10) - 10);
+    if (workload.rfind("torus knot", 0) == 0) return "knot";
+    return workload;
+}
 
 constexpr int SIDE = 1024;
 constexpr int WARMUP_FRAMES = 5, TIMED_FRAMES = 50;
@@ -77,19 +87,22 @@ int main(int argc, char **argv) {
         double small3dlib_ms, llvmpipe_ms;
     };
     std::vector<workload> loads;
+    std::map<std::string, double> workload_triangles;  // chart tag → triangle count
     // Frame time against triangle count: ours (one thread, levels 3–7) and the published
     // figures, log-log, so equal slopes mean equal growth.
     tiny3d::chart_spec scaling;
     scaling.title = "Scene S: frame time vs triangle count";
     scaling.x_title = "triangles in the mesh";
     scaling.y_title = "ms per frame (median; bar: min-max)";
-    auto add_point = [&](double triangles, const bench::timing &t, const std::string &label) {
+    // One series per renderer, its points tagged with the mesh.
+    auto add_point = [&](double triangles, const bench::timing &t, const std::string &series, const std::string &tag) {
         tiny3d::chart_point p;
         p.x = triangles;
         p.y = t.median;
         p.y_lo = t.min;
         p.y_hi = t.max;
-        p.label = label;
+        p.series = series;
+        p.tag = tag;
         scaling.points.push_back(std::move(p));
     };
     loads.push_back({"icosphere L6 (81,920 tris)", tiny3d::make_icosphere(6), 8.65, 10.9});
@@ -105,23 +118,28 @@ int main(int argc, char **argv) {
         const bench::timing t2_plain = time_frames(s, 2, *plain, frames, false);
         const double diff2_plain = differing_fraction(*one, *plain);
         const double triangles = static_cast<double>(s.mesh.triangles.size());
-        add_point(triangles, {w.small3dlib_ms, w.small3dlib_ms, w.small3dlib_ms}, w.name + " small3dlib (published)");
-        add_point(triangles, {w.llvmpipe_ms, w.llvmpipe_ms, w.llvmpipe_ms}, w.name + " llvmpipe (published)");
-        // (our icospheres are the levels 3–7 series below)
-        if (w.name.rfind("icosphere", 0) != 0) add_point(triangles, t1, w.name + " libtiny3d 1 thread");
+        const std::string tag = short_name(w.name);
+        workload_triangles[tag] = triangles;
+        add_point(triangles, {w.small3dlib_ms, w.small3dlib_ms, w.small3dlib_ms}, "small3dlib (published)", tag);
+        add_point(triangles, {w.llvmpipe_ms, w.llvmpipe_ms, w.llvmpipe_ms}, "llvmpipe (published)", tag);
+        // (our icospheres are the levels 3–7 points below)
+        if (w.name.rfind("icosphere", 0) != 0) add_point(triangles, t1, "libtiny3d 1 thread", tag);
         rows.push_back({"frame", w.name + " small3dlib (published)", "faithful", "ms/frame",
                         {w.small3dlib_ms, w.small3dlib_ms, w.small3dlib_ms}, NAN, NAN, "px fraction",
-                        "BENCH_SCENE.md figure, not measured here"});
+                        "BENCH_SCENE.md figure, not measured here", "small3dlib (published)", tag});
         rows.push_back({"frame", w.name + " llvmpipe (published)", "other", "ms/frame",
                         {w.llvmpipe_ms, w.llvmpipe_ms, w.llvmpipe_ms}, NAN, NAN, "px fraction",
-                        "BENCH_SCENE.md figure (best case), not measured here"});
-        rows.push_back({"frame", w.name + " libtiny3d 1 thread", "fast", "ms/frame", t1, 0.0, 0.0, "px fraction", ""});
+                        "BENCH_SCENE.md figure (best case), not measured here", "llvmpipe (published)", tag});
+        rows.push_back({"frame", w.name + " libtiny3d 1 thread", "fast", "ms/frame", t1, 0.0, 0.0, "px fraction", "",
+                        "libtiny3d 1 thread", tag});
         rows.push_back({"frame", w.name + " libtiny3d 2 threads", "fast", "ms/frame", t2, diff, diff, "px fraction",
-                        "error = pixels differing from 1 thread"});
+                        "error = pixels differing from 1 thread", "libtiny3d 2 threads", tag});
         rows.push_back({"frame", w.name + " libtiny3d 1 thread, no clusters", "other", "ms/frame", t1_plain, diff1_plain,
-                        diff1_plain, "px fraction", "error = pixels differing from the frame with clusters"});
+                        diff1_plain, "px fraction", "error = pixels differing from the frame with clusters",
+                        "libtiny3d 1 thread, no clusters", tag});
         rows.push_back({"frame", w.name + " libtiny3d 2 threads, no clusters", "other", "ms/frame", t2_plain, diff2_plain,
-                        diff2_plain, "px fraction", "error = pixels differing from the 1-thread frame with clusters"});
+                        diff2_plain, "px fraction", "error = pixels differing from the 1-thread frame with clusters",
+                        "libtiny3d 2 threads, no clusters", tag});
     }
     // Frame time against triangle count (one thread).
     std::printf("frame time vs triangle count (1 thread, median ms):\n");
@@ -129,14 +147,42 @@ int main(int argc, char **argv) {
         scene s = make_scene(tiny3d::make_icosphere(level));
         const bench::timing t = time_frames(s, 1, *one, o.quick ? 3 : (level == 7 ? 20 : TIMED_FRAMES));
         std::printf("  level %d  %7zu tris  %8.3f ms\n", level, s.mesh.triangles.size(), t.median);
-        add_point(static_cast<double>(s.mesh.triangles.size()), t, "icosphere L" + std::to_string(level) + " libtiny3d 1 thread");
+        add_point(static_cast<double>(s.mesh.triangles.size()), t, "libtiny3d 1 thread", "L" + std::to_string(level));
         rows.push_back({"frame", "icosphere L" + std::to_string(level) + " 1 thread (" +
                                      std::to_string(s.mesh.triangles.size()) + " tris)",
-                        "other", "ms/frame", t, NAN, NAN, "px fraction", "scaling series"});
+                        "other", "ms/frame", t, NAN, NAN, "px fraction", "scaling series",
+                        "libtiny3d 1 thread, icosphere levels (no error measured)", "L" + std::to_string(level)});
     }
+    // Each series joined in order of triangle count.
+    std::stable_sort(scaling.points.begin(), scaling.points.end(),
+                     [](const tiny3d::chart_point &a, const tiny3d::chart_point &b) { return a.x < b.x; });
     const std::string scaling_path = o.out_dir + "/frame_scaling.pgm";
     const int result = bench::report(o, "frame", rows, "Scene S: ms per frame (1024^2, Gouraud, depth, culling)");
     if (result != 0) return result;
+    // Every variant's error is 0 or a pixel fraction near it, so the family's chart shows
+    // time against the mesh instead: one line per renderer over the three workloads.
+    tiny3d::chart_spec by_renderer;
+    by_renderer.title = "Scene S: ms per frame by renderer (1024^2, Gouraud, depth, culling)";
+    by_renderer.x_title = "triangles in the mesh (L6 icosphere, L5 icosphere, torus knot)";
+    by_renderer.y_title = "ms per frame (median; bar: min-max)";
+    for (const bench::row &r : rows) {
+        const auto found = workload_triangles.find(r.tag);
+        if (found == workload_triangles.end() || r.note == "scaling series") continue;
+        tiny3d::chart_point p;
+        p.x = found->second;
+        p.y = r.time.median;
+        p.y_lo = r.time.min;
+        p.y_hi = r.time.max;
+        p.series = r.series;
+        p.tag = r.series == "libtiny3d 1 thread" ? r.tag : "";
+        by_renderer.points.push_back(std::move(p));
+    }
+    std::stable_sort(by_renderer.points.begin(), by_renderer.points.end(),
+                     [](const tiny3d::chart_point &a, const tiny3d::chart_point &b) { return a.x < b.x; });
+    if (const tiny3d::status st = bench::write_chart(o.out_dir + "/frame.pgm", by_renderer); !st) {
+        std::fprintf(stderr, "bench frame: %s\n", st.message().c_str());
+        return 1;
+    }
     if (const tiny3d::status st = bench::write_chart(scaling_path, scaling); !st) {
         std::fprintf(stderr, "bench frame: %s\n", st.message().c_str());
         return 1;

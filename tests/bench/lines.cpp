@@ -168,7 +168,7 @@ int main(int argc, char **argv) {
             });
             const errors e = m.kind == "reference" ? errors{0.0, 0.0} : measure_error(m.draw, error_segs, t, canvas, refs);
             rows.push_back({"lines", m.name + " " + label, m.kind, "ns/px " + label, time, e.mean, e.max,
-                            "abs intensity", note_for(m)});
+                            "abs intensity", note_for(m), m.name, label});
         }
     }
     return bench::report(o, "lines", rows, "Lines: ns per px of length vs mean abs error");

@@ -102,16 +102,35 @@ std::string distinct_joined(const std::vector<row> &rows, std::string row::*fiel
 
 constexpr int chart_width = 800, chart_height = 500;
 
+// A legend name, plus " [kind]" when the name does not say it.
+std::string with_kind(const std::string &name, const std::string &kind) {
+    return name.find(kind) == std::string::npos ? name + " [" + kind + "]" : name;
+}
+
+// The row's unit without its tag ("ns/px T=1" with tag "T=1" → "ns/px"): a series spans
+// the tags, so the axis title names the unit once.
+std::string unit_of(const row &r) {
+    const std::string suffix = " " + r.tag;
+    if (!r.tag.empty() && r.unit.size() > suffix.size() &&
+        r.unit.compare(r.unit.size() - suffix.size(), suffix.size(), suffix) == 0)
+        return r.unit.substr(0, r.unit.size() - suffix.size());
+    return r.unit;
+}
+
 }  // namespace
 
 tiny3d::chart_spec chart_of(const std::vector<row> &rows, const std::string &title) {
     tiny3d::chart_spec spec;
     spec.title = title;
-    spec.x_title = "time per unit, " + distinct_joined(rows, &row::unit) + " (median; bar: min-max)";
+    std::vector<row> units = rows;
+    for (row &r : units) r.unit = unit_of(r);
+    spec.x_title = "time per unit, " + distinct_joined(units, &row::unit) + " (median; bar: min-max)";
     spec.y_title = "error vs reference, " + distinct_joined(rows, &row::error_unit) + " (mean; bar: to max)";
     for (const row &r : rows) {
         tiny3d::chart_point p;
-        p.label = r.variant.find(r.kind) == std::string::npos ? r.variant + " [" + r.kind + "]" : r.variant;
+        p.label = with_kind(r.variant, r.kind);
+        if (!r.series.empty()) p.series = with_kind(r.series, r.kind);
+        p.tag = r.tag;
         p.x = r.time.median;
         p.x_lo = r.time.min;
         p.x_hi = r.time.max;

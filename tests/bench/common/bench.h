@@ -63,6 +63,11 @@ struct row {
     double error_max;
     std::string error_unit;  // e.g. "abs intensity", "rel", "px"
     std::string note;        // optional
+    // Chart only (not in the table or CSV): rows with the same non-empty `series` (one
+    // method across sizes or widths) are one line with one legend entry; `tag` (e.g.
+    // "T=1.5") labels the row's point on it. Empty series: the row is its own entry.
+    std::string series = {};
+    std::string tag = {};
 };
 
 struct options {
@@ -104,7 +109,7 @@ std::string table_text(const std::vector<row> &rows);
 // The chart report() draws: x = time median (whisker min..max), y = error mean (whisker
 // mean..max; error max when there is no mean; a reference row without error is at 0, drawn
 // on the axis floor); legend = variant, plus " [kind]" when the
-// variant's name does not say it.
+// variant's name does not say it; rows of one series share one entry (the series name).
 tiny3d::chart_spec chart_of(const std::vector<row> &rows, const std::string &title);
 // Draws chart_of(rows, title) on an 800 × 500 canvas and saves it as PGM at `path`.
 tiny3d::status write_chart(const std::string &path, const std::vector<row> &rows, const std::string &title);

@@ -24,6 +24,10 @@ constexpr double marker_radius = 3.5;
 constexpr double legend_marker_radius = 3.0;
 constexpr float line_thickness = 1.0f;  // frame, ticks, whiskers and marker outlines
 constexpr float grid_intensity = 0.2f;  // grid lines: a light grey once inverted
+constexpr float whisker_intensity = 0.6f;  // spread bars: lighter than markers and series lines
+constexpr float series_intensity = 0.8f;   // the line joining a series' points
+constexpr float tag_intensity = 0.75f;     // a point's tag beside its marker
+constexpr int legend_gap = 2;              // extra space between legend entries
 constexpr int min_linear_intervals = 8; // axis_ticks aims at span / 8 (gives 4..9 ticks)
 constexpr double tick_tolerance = 1e-9; // relative slack when a tick sits on a range end
 constexpr double end_padding = 0.05;    // choose_axis keeps values this share (of the span
@@ -141,6 +145,33 @@ polygon_form polygon_of(shape s) {
         case shape::diamond: return {4, 0.0, 1.2};
         default: return {0, 0.0, 0.0};
     }
+}
+
+// `text` broken at spaces into lines at most max_width pixels wide; a single word wider
+// than that is shortened with "..".
+std::vector<std::string> wrap_text(const std::string &text, int max_width) {
+    std::vector<std::string> lines;
+    std::string current;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        std::size_t end = text.find(' ', start);
+        if (end == std::string::npos) end = text.size();
+        const std::string word = text.substr(start, end - start);
+        const std::string joined = current.empty() ? word : current + " " + word;
+        if (text_width(joined) <= max_width) {
+            current = joined;
+        } else {
+            if (!current.empty()) lines.push_back(current);
+            current = fit_text(word, max_width, 1);
+        }
+        start = end + 1;
+    }
+    if (!current.empty() || lines.empty()) lines.push_back(current);
+    return lines;
+}
+
+bool boxes_overlap(const pixel_box &a, const pixel_box &b) {
+    return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
 }
 
 // Appends " (note)" to a legend label.
@@ -301,23 +332,43 @@ result<chart_layout> draw_chart(canvas_t &canvas, const chart_spec &spec) {
     place_text(canvas, layout, (w - text_width(title, title_scale)) / 2, margin, title, title_scale);
     const int title_bottom = margin + (title.empty() ? 0 : text_height(title_scale));
 
-    // Legend entries (with notes for points not drawn where they are).
-    std::vector<std::string> legend(spec.points.size());
+    // Legend entries: one per series (named by it), one per point outside a series; notes
+    // for points not drawn where they are (a series takes its first point's note).
+    struct legend_entry {
+        std::string key;    // the series name ("" for a point of its own)
+        std::string label;  // what the legend says (with any note)
+        bool noted = false;
+        std::vector<std::string> lines;
+    };
+    std::vector<legend_entry> legend;
+    layout.legend_entry.assign(spec.points.size(), 0);
     layout.marker_x.assign(spec.points.size(), nan_value);
     layout.marker_y.assign(spec.points.size(), nan_value);
+    for (std::size_t i = 0; i < spec.points.size(); ++i) {
+        const chart_point &p = spec.points[i];
+        std::size_t e = legend.size();
+        if (!p.series.empty())
+            for (std::size_t k = 0; k < legend.size() && e == legend.size(); ++k)
+                if (legend[k].key == p.series) e = k;
+        if (e == legend.size()) legend.push_back({p.series, p.series.empty() ? p.label : p.series, false, {}});
+        layout.legend_entry[i] = e;
+        const double tx = axis_to_pixel(layout.x_axis, p.x, 0, 1);
+        const double ty = axis_to_pixel(layout.y_axis, p.y, 0, 1);
+        const bool off_log_floor =
+            std::isfinite(p.y) && layout.y_axis.scale == axis_scale::log10 && p.y <= 0 && std::isfinite(tx);
+        const char *note = off_log_floor                              ? "0, on the axis floor"
+                           : !std::isfinite(tx) || !std::isfinite(ty) ? "n/a"
+                           : tx < 0 || tx > 1 || ty < 0 || ty > 1     ? "off scale"
+                                                                      : nullptr;
+        if (note && !legend[e].noted) legend[e].label = with_note(legend[e].label, note);
+        if (note) legend[e].noted = true;
+    }
+    layout.legend_entries = legend.size();
     int legend_width = 0;
     const int legend_max_width = int(inner_width * legend_share);
-    for (std::size_t i = 0; i < spec.points.size(); ++i) {
-        legend[i] = spec.points[i].label;
-        const double tx = axis_to_pixel(layout.x_axis, spec.points[i].x, 0, 1);
-        const double ty = axis_to_pixel(layout.y_axis, spec.points[i].y, 0, 1);
-        const bool off_log_floor = std::isfinite(spec.points[i].y) && layout.y_axis.scale == axis_scale::log10 &&
-                                   spec.points[i].y <= 0 && std::isfinite(tx);
-        if (off_log_floor) legend[i] = with_note(legend[i], "0, on the axis floor");
-        else if (!std::isfinite(tx) || !std::isfinite(ty)) legend[i] = with_note(legend[i], "n/a");
-        else if (tx < 0 || tx > 1 || ty < 0 || ty > 1) legend[i] = with_note(legend[i], "off scale");
-        legend[i] = fit_text(legend[i], legend_max_width - legend_marker_room, 1);
-        legend_width = std::max(legend_width, legend_marker_room + text_width(legend[i]));
+    for (legend_entry &entry : legend) {
+        entry.lines = wrap_text(entry.label, legend_max_width - legend_marker_room);
+        for (const std::string &l : entry.lines) legend_width = std::max(legend_width, legend_marker_room + text_width(l));
     }
 
     // The plot frame, in pixel-centre coordinates (integer + 0.5).
@@ -371,7 +422,8 @@ result<chart_layout> draw_chart(canvas_t &canvas, const chart_spec &spec) {
     const std::string y_title = fit_text(spec.y_title, frame_bottom - frame_top, 1);
     place_vertical_text(canvas, layout, margin, (frame_top + frame_bottom) / 2 - text_width(y_title) / 2, y_title);
 
-    // Points: whiskers, then markers (clamped onto the frame when off scale).
+    // Points: whiskers, then series lines, then markers (clamped onto the frame when off
+    // scale), then the tags that fit.
     const auto clamp_x = [&](double v) { return std::clamp(v, layout.plot_left, layout.plot_right); };
     const auto clamp_y = [&](double v) { return std::clamp(v, layout.plot_top, layout.plot_bottom); };
     for (std::size_t i = 0; i < spec.points.size(); ++i) {
@@ -385,23 +437,52 @@ result<chart_layout> draw_chart(canvas_t &canvas, const chart_spec &spec) {
         layout.marker_x[i] = mx;
         layout.marker_y[i] = my;
         const double xl = to_x(p.x_lo), xh = to_x(p.x_hi), yl = to_y(p.y_lo), yh = to_y(p.y_hi);
-        if (std::isfinite(xl) && std::isfinite(xh)) line(canvas, clamp_x(xl), my, clamp_x(xh), my);
-        if (std::isfinite(yl) && std::isfinite(yh)) line(canvas, mx, clamp_y(yl), mx, clamp_y(yh));
-        draw_marker(canvas, mx, my, int(i), marker_radius);
+        if (std::isfinite(xl) && std::isfinite(xh)) line(canvas, clamp_x(xl), my, clamp_x(xh), my, whisker_intensity);
+        if (std::isfinite(yl) && std::isfinite(yh)) line(canvas, mx, clamp_y(yl), mx, clamp_y(yh), whisker_intensity);
+    }
+    for (std::size_t e = 0; e < legend.size(); ++e) {
+        double px = nan_value, py = nan_value;
+        for (std::size_t i = 0; i < spec.points.size(); ++i) {
+            if (layout.legend_entry[i] != e || std::isnan(layout.marker_x[i])) continue;
+            if (!std::isnan(px)) line(canvas, px, py, layout.marker_x[i], layout.marker_y[i], series_intensity);
+            px = layout.marker_x[i];
+            py = layout.marker_y[i];
+        }
+    }
+    for (std::size_t i = 0; i < spec.points.size(); ++i)
+        if (!std::isnan(layout.marker_x[i]))
+            draw_marker(canvas, layout.marker_x[i], layout.marker_y[i], int(layout.legend_entry[i]), marker_radius);
+    for (std::size_t i = 0; i < spec.points.size(); ++i) {
+        const std::string &tag = spec.points[i].tag;
+        if (tag.empty() || spec.points[i].series.empty() || std::isnan(layout.marker_x[i])) continue;
+        const pixel_box box{int(std::lround(layout.marker_x[i] + marker_radius + 2)),
+                            int(std::lround(layout.marker_y[i] - marker_radius - text_height())), text_width(tag),
+                            text_height()};
+        bool clear = box.x >= layout.plot_left && box.x + box.width <= layout.plot_right &&
+                     box.y >= layout.plot_top && box.y + box.height <= layout.plot_bottom;
+        for (std::size_t k = 0; k < layout.text_boxes.size() && clear; ++k) clear = !boxes_overlap(box, layout.text_boxes[k]);
+        if (!clear) continue;
+        draw_text(canvas, box.x, box.y, tag, tag_intensity);
+        layout.text_boxes.push_back(box);
     }
 
-    // Legend, top right; entries that do not fit are summarised.
+    // Legend, top right: entries stacked (a wrapped label takes several rows); when the
+    // rest does not fit, one "+N more" row says how many are left out.
     const int legend_left = w - margin - legend_width;
-    const int legend_rows = std::max(1, (frame_bottom - frame_top) / legend_row);
-    for (std::size_t i = 0; i < legend.size(); ++i) {
-        const int top = frame_top + int(i) * legend_row;
-        if (int(i) == legend_rows - 1 && legend.size() > std::size_t(legend_rows)) {
-            place_text(canvas, layout, legend_left, top, "+" + std::to_string(legend.size() - i) + " more");
+    const int legend_limit = frame_bottom + legend_row;  // last row may end at the frame's bottom
+    int top = frame_top;
+    for (std::size_t e = 0; e < legend.size(); ++e) {
+        const int needed = int(legend[e].lines.size()) * legend_row;
+        const bool last = e + 1 == legend.size();
+        if (top + needed + (last ? 0 : legend_row) > legend_limit) {
+            place_text(canvas, layout, legend_left, top, "+" + std::to_string(legend.size() - e) + " more");
             break;
         }
-        draw_marker(canvas, legend_left + legend_marker_radius + 1.5, top + text_height() / 2.0, int(i),
+        draw_marker(canvas, legend_left + legend_marker_radius + 1.5, top + text_height() / 2.0, int(e),
                     legend_marker_radius);
-        place_text(canvas, layout, legend_left + legend_marker_room, top, legend[i]);
+        for (std::size_t l = 0; l < legend[e].lines.size(); ++l)
+            place_text(canvas, layout, legend_left + legend_marker_room, top + int(l) * legend_row, legend[e].lines[l]);
+        top += needed + legend_gap;
     }
 
     // Ink to dark on white paper.

@@ -100,14 +100,21 @@ void draw_marker(canvas_t &canvas, double x, double y, int index, double radius)
 // ---- charts ----------------------------------------------------------------------------
 inline constexpr double chart_no_value = std::numeric_limits<double>::quiet_NaN();  // "not given" for optional fields
 
-// One variant: a marker at (x, y) with a legend entry `label`. Optional whiskers show a
-// spread: x_lo..x_hi horizontally, y_lo..y_hi vertically (chart_no_value = none).
+// One measured point: a marker at (x, y). Optional whiskers show a spread: x_lo..x_hi
+// horizontally, y_lo..y_hi vertically (chart_no_value = none).
+//  * A point with an empty `series` is a variant of its own: one legend entry, `label`.
+//  * Points with the same non-empty `series` are ONE series (one method across sizes or
+//    widths): one legend entry named `series`, one marker shape, joined by a line in the
+//    order they are given; `tag` (e.g. "T=1.5") is written beside the point's marker when
+//    it fits without touching other text. `label` is then unused.
 struct chart_point {
     double x = chart_no_value;
     double y = chart_no_value;
     std::string label;
     double x_lo = chart_no_value, x_hi = chart_no_value;
     double y_lo = chart_no_value, y_hi = chart_no_value;
+    std::string series = {};
+    std::string tag = {};
 };
 
 struct chart_spec {
@@ -135,6 +142,9 @@ struct chart_layout {
     // reference's zero error) is drawn on the bottom end, marked "(0, on the axis floor)";
     // points not drawn (NaN) get "(n/a)".
     std::vector<double> marker_x, marker_y;
+    // Per point: its legend entry (entries in order of first appearance; a series is one).
+    std::vector<std::size_t> legend_entry;
+    std::size_t legend_entries = 0;
 };
 
 // The smallest canvas draw_chart accepts.
@@ -143,9 +153,10 @@ inline constexpr int chart_min_height = 160;
 
 // Clears the canvas and draws the whole chart as dark ink on white paper (intensity 1 =
 // paper): title on top, y axis title (vertical) and tick labels on the left, x ticks and
-// title below, light grid lines at the ticks, one marker per point (marker i for point
-// i) and a legend on the right (marker + label; labels shortened with ".." to fit). All
-// text stays inside the canvas. Fails (canvas untouched) when the canvas is smaller than
+// title below, light grid lines at the ticks, series lines, one marker per point (marker
+// shape k for legend entry k) and a legend on the right (marker + label; a label too wide
+// for the legend column wraps onto further lines, never cut; entries that do not fit in
+// height are summarised as "+N more"). All text stays inside the canvas. Fails (canvas untouched) when the canvas is smaller than
 // chart_min_width × chart_min_height or a given axis range is invalid.
 result<chart_layout> draw_chart(canvas_t &canvas, const chart_spec &spec);
 
