@@ -268,5 +268,13 @@ int main(int argc, char **argv) {
                         "3,696 tris, 256^2, incl. file read"});
         std::remove(path.c_str());
     }
-    return bench::report(o, "fill", rows, "Filled triangles: time vs error");
+    const int result = bench::report(o, "fill", rows, "Filled triangles: time vs error");
+    if (result != 0) return result;
+    // One chart per workload (each has its own unit): fill.pgm is the 16 layers.
+    return bench::write_workload_charts(o, rows, {
+        {"16 layers ", "fill", "Fill, 16 layers: ns per px vs error"},
+        {"triangles ", "fill_triangles", "Fill, single triangles: ns per triangle vs coverage error"},
+        {"texture ", "fill_texture", "Fill, textured: ns per textured px vs (u, v) error"},
+        {"ply_render ", "fill_ply_render", "Fill, ply_render lab: ms per image vs pixel error"},
+    });
 }

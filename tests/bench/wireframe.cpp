@@ -151,5 +151,11 @@ int main(int argc, char **argv) {
                             "abs intensity", std::to_string(s.m->edges.size()) + " edges, 1024^2"});
         }
     }
-    return bench::report(o, "wireframe", rows, "Wireframe: time per frame vs intensity error");
+    const int result = bench::report(o, "wireframe", rows, "Wireframe: time per frame vs intensity error");
+    if (result != 0) return result;
+    // One chart per workload (each has its own time unit): wireframe.pgm is Scene S.
+    return bench::write_workload_charts(o, rows, {
+        {"Scene S L6 icosphere: ", "wireframe", "Wireframe, Scene S L6 icosphere: ms per frame vs error"},
+        {"soccer ball: ", "wireframe_soccer", "Wireframe, soccer ball: us per frame vs error"},
+    });
 }

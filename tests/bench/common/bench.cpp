@@ -157,6 +157,26 @@ tiny3d::status write_chart(const std::string &path, const std::vector<row> &rows
     return write_chart(path, chart_of(rows, title));
 }
 
+int write_workload_charts(const options &o, const std::vector<row> &rows, const std::vector<workload_chart> &charts) {
+    for (const workload_chart &c : charts) {
+        std::vector<row> picked;
+        for (const row &r : rows)
+            if (r.variant.rfind(c.prefix, 0) == 0) {
+                picked.push_back(r);
+                picked.back().variant = r.variant.substr(c.prefix.size());
+            }
+        const std::string path = o.out_dir + "/" + c.file + ".pgm";
+        const tiny3d::status st = picked.empty() ? tiny3d::status(tiny3d::error{"", 0, -1, "no '" + c.prefix + "' rows"})
+                                                 : write_chart(path, picked, c.title);
+        if (!st) {
+            std::fprintf(stderr, "bench: %s: %s\n", path.c_str(), st.message().c_str());
+            return 1;
+        }
+        std::printf("wrote %s\n", path.c_str());
+    }
+    return 0;
+}
+
 // The warm-up and timed runs of one measure_ns call. Kept out of line under its own
 // name so `make bench-callgrind` (tests/bench/callgrind.sh) can count its instructions
 // alone: it collects only inside timed_runs and dumps before each measure_ns call.

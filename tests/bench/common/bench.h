@@ -116,6 +116,15 @@ tiny3d::status write_chart(const std::string &path, const std::vector<row> &rows
 // Draws any chart on the same 800 × 500 canvas and saves it as PGM at `path` (for a
 // family's extra charts, e.g. frame time against triangle count).
 tiny3d::status write_chart(const std::string &path, const tiny3d::chart_spec &spec);
+// A family measuring several workloads, each in its own unit, gets one readable chart
+// per workload: the rows whose variant starts with `prefix` (the prefix taken off their
+// legend names), drawn as report() draws its chart and saved as OUT/<file>.pgm (a file
+// named after the family replaces report()'s chart). Returns 0, or prints the error on
+// stderr and returns 1 (also when no row matches a prefix).
+struct workload_chart {
+    std::string prefix, file, title;
+};
+int write_workload_charts(const options &o, const std::vector<row> &rows, const std::vector<workload_chart> &charts);
 // Reads csv_text's format back (the ratio column is recomputed, not read). Errors name
 // `path` and the 1-based line: wrong header, wrong field count, a number that is not one.
 tiny3d::result<std::vector<row>> parse_csv(const std::string &text, const std::string &path);
