@@ -74,6 +74,13 @@ inline void write_fragment(const draw_params &p, float &dst, float &stored_z, fl
     }
 }
 
+// Depth at barycentrics (·, l1, l2): from vertex 0 plus the barycentric steps, exact for a
+// constant depth (l0 + l1 + l2 is not exactly 1 in float), so coplanar meshes at one depth
+// tie exactly, as on the fast path, and `less_equal` passes can redraw them.
+inline float depth_at(const generic_triangle &g, float l1, float l2) {
+    return g.v[0].z + l1 * (g.v[1].z - g.v[0].z) + l2 * (g.v[2].z - g.v[0].z);
+}
+
 }  // namespace
 
 void draw_generic_rows(canvas_t &target, zbuffer &depth, const draw_params &p, const generic_triangle &g, int y0,
@@ -81,7 +88,7 @@ void draw_generic_rows(canvas_t &target, zbuffer &depth, const draw_params &p, c
     const pixel_rect band{0, y0, target.width, y1};
     const pixel_shader shade(p, g);
     rasterize_triangle(g.v[0], g.v[1], g.v[2], band, [&](int x, int y, float l0, float l1, float l2) {
-        const float z = l0 * g.v[0].z + l1 * g.v[1].z + l2 * g.v[2].z;
+        const float z = depth_at(g, l1, l2);
         float *zp = depth.row(y) + x;
         if (!depth_passes(p.depth, z, *zp)) return;
         write_fragment(p, target.pixels[y][x], *zp, z, shade(l0, l1, l2));
@@ -107,7 +114,7 @@ void draw_generic_samples(sample_store &tile, const sample_pattern &pat, float c
         const float l0 = static_cast<float>(static_cast<double>(t.c[0] + t.a[0] * x + t.b[0] * y) * inv_area);
         const float l1 = static_cast<float>(static_cast<double>(t.c[1] + t.a[1] * x + t.b[1] * y) * inv_area);
         const float l2 = 1.0f - l0 - l1;
-        const float zc = l0 * g.v[0].z + l1 * g.v[1].z + l2 * g.v[2].z;
+        const float zc = depth_at(g, l1, l2);
         float *px = tile.pixel(x, y);
         std::uint8_t &touched = tile.touched_row(y)[x];
         if (!touched) {
