@@ -324,6 +324,10 @@ namespace tiny3d {
 // rename). On failure nothing is left behind and an existing file is untouched; the
 // error names the path and the reason. Existing non-regular files (devices, FIFOs) are
 // written in place. Used by every image writer in the library.
+// The temporary file is "<path>.tmp", claimed with an exclusive flock (released by the
+// kernel when its process dies), so the file a killed save left behind is reused and
+// renamed away by the next save of the same path; while another live save holds it, a
+// unique "<path>.tmp-XXXXXX" is used instead.
 status write_file_atomic(const std::string &path, const void *data, std::size_t size);
 
 // The largest file read_file_bytes reads unless told otherwise: 2 GiB.

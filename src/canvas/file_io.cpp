@@ -1,5 +1,6 @@
 // file_io.cpp — atomic file writing and PGM output.
 #include <fcntl.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -33,6 +34,36 @@ bool write_all(int fd, const unsigned char *p, std::size_t n, int &err) {
     return true;
 }
 
+// The temporary file of a save of `path`: "<path>.tmp", one name per target, so a save
+// that a killed run left behind is taken over (truncated, rewritten and renamed) by the
+// next save of the same file instead of staying forever. The name is claimed with an
+// exclusive flock, which the kernel drops when its holder dies: a held lock means a live
+// save of the same target in another process (or thread), and this save then takes a
+// unique "<path>.tmp-XXXXXX" as before. After locking, the name must still be the opened
+// file (the other save may have renamed it onto the target meanwhile: never truncate
+// that). Returns the descriptor (−1 with errno set) and the name in `tmp`.
+int open_temporary(const std::string &path, std::string &tmp) {
+    tmp = path + ".tmp";
+    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK, 0600);
+    if (fd >= 0) {
+        struct stat opened {}, named {};
+        const bool claimed = ::flock(fd, LOCK_EX | LOCK_NB) == 0 && ::fstat(fd, &opened) == 0 &&
+                             S_ISREG(opened.st_mode) && ::stat(tmp.c_str(), &named) == 0 &&
+                             named.st_dev == opened.st_dev && named.st_ino == opened.st_ino &&
+                             ::ftruncate(fd, 0) == 0;
+        if (claimed) return fd;
+        ::close(fd);  // in use by a live save (or not a plain file): a unique name instead
+    }
+    // Also when the name cannot be opened (a symlink, folder or FIFO there, another user's
+    // file): mkstemp then fails with the folder's own reason if no file can be made.
+    tmp = path + ".tmp-XXXXXX";
+    std::vector<char> name(tmp.begin(), tmp.end());
+    name.push_back('\0');
+    const int unique = ::mkstemp(name.data());
+    tmp.assign(name.data());
+    return unique;
+}
+
 std::string folder_of(const std::string &path) {
     const auto slash = path.find_last_of('/');
     if (slash == std::string::npos) return ".";
@@ -63,21 +94,17 @@ status write_file_atomic(const std::string &path, const void *data, std::size_t 
     if (::stat(folder.c_str(), &dst) != 0) return io_error(path, "cannot save: folder '" + folder + "'", errno);
     if (!S_ISDIR(dst.st_mode)) return error{path, 0, -1, "cannot save: '" + folder + "' is not a folder"};
 
-    std::string tmp = path + ".tmp-XXXXXX";
-    std::vector<char> name(tmp.begin(), tmp.end());
-    name.push_back('\0');
-    const int fd = ::mkstemp(name.data());
+    std::string tmp;
+    const int fd = open_temporary(path, tmp);
     if (fd < 0) return io_error(path, "cannot create a temporary file in '" + folder + "'", errno);
-    tmp.assign(name.data());
     bool ok = write_all(fd, bytes, size, err);
     if (ok && ::fchmod(fd, 0644) != 0) { err = errno; ok = false; }
     if (ok && ::fsync(fd) != 0) { err = errno; ok = false; }
-    if (::close(fd) != 0 && ok) { err = errno; ok = false; }
+    // Renamed (or removed) before the close drops the lock: until then the name is ours.
     if (ok && ::rename(tmp.c_str(), path.c_str()) != 0) { err = errno; ok = false; }
-    if (!ok) {
-        ::unlink(tmp.c_str());
-        return io_error(path, "cannot save", err);
-    }
+    if (!ok) ::unlink(tmp.c_str());
+    if (::close(fd) != 0 && ok) { err = errno; ok = false; }
+    if (!ok) return io_error(path, "cannot save", err);
     return {};
 }
 
