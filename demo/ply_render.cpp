@@ -7,6 +7,7 @@
 // only inside each triangle's projected box and gives the identical image. Prints "wrote
 // OUT" on stdout and the time on stderr. Exit status 2 for a bad command line (nothing
 // written), 1 for a file that does not load or an image that cannot be saved.
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -64,6 +65,9 @@ int main(int argc, char **argv) {
     const tiny3d::lab_image img =
         method == "raycast" ? tiny3d::raycast_lab(*mesh, *cam, side) : tiny3d::render_lab_fast(*mesh, *cam, side);
     timer.stop();
+    // The camera frames the mesh, so a blank image means every face is edge-on or degenerate.
+    if (std::find_if(img.pixels.begin(), img.pixels.end(), [](std::uint8_t v) { return v != 0; }) == img.pixels.end())
+        std::fprintf(stderr, "ply_render: warning: %s: the image is blank (no face is seen)\n", path.c_str());
     if (const tiny3d::status saved = tiny3d::save_lab_image(img, out); !saved) return cli.fail(saved.message());
     timer.report_written(out);
     std::fprintf(stderr, "ply_render: %zu faces, %s method\n", mesh->face_count(), method.c_str());

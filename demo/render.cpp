@@ -240,6 +240,15 @@ int main(int argc, char **argv) {
     const tiny3d::bounding_sphere bounds = tiny3d::mesh_bounding_sphere(m);
     if (!(bounds.radius > 0.0f) || (edges_only ? m.edges.empty() : m.face_count() == 0))
         return cli.fail(s.path + ": nothing to draw (no " + (edges_only ? "edges" : "faces") + " of non-zero size)");
+    // The camera works on the mesh mapped onto the unit sphere (scale and offset in double),
+    // so meshes of any size frame alike; positions given on the command line map with it.
+    const tiny3d::result<mat4_t> fit = tiny3d::mat4_fit_unit_sphere(bounds);
+    if (!fit) return cli.fail(s.path + ": " + fit.message());
+    settings unit_view = s;
+    for (vec3_t *p : {&unit_view.eye, &unit_view.target}) {
+        const vec4_t q = mat4_mul_vec4(*fit, {p->x, p->y, p->z, 1.0f});
+        *p = {q.x, q.y, q.z};
+    }
     tiny3d::texture tex;
     if (!s.texture_path.empty()) {
         if (m.corner_uvs.empty()) return cli.fail(s.path + ": no texture coordinates, which --texture needs");
@@ -253,7 +262,7 @@ int main(int argc, char **argv) {
     auto canvas = tiny3d::make_canvas(o.width, o.height);
     if (!canvas) return cli.fail(canvas.message());
 
-    const camera cam = make_camera(s, bounds, float(o.width) / float(o.height));
+    const camera cam = make_camera(unit_view, {{0, 0, 0}, 1.0f}, float(o.width) / float(o.height));
     auto rig = make_lights(s, cam);
     if (!rig) return cli.fail(rig.message());
     const mat4_t view_projection = mat4_multiply(cam.projection, cam.view);
@@ -279,13 +288,10 @@ int main(int argc, char **argv) {
     tiny3d::wireframe_workspace workspace;
 
     if (tiny3d::status st = demo::prepare_out_dir(o); !st) return cli.fail(st.message());
-    const mat4_t to_center = mat4_translate(-bounds.center.x, -bounds.center.y, -bounds.center.z);
-    const mat4_t from_center = mat4_translate(bounds.center.x, bounds.center.y, bounds.center.z);
     demo::progress timer("render", o.frames_to_render());
     for (int frame = o.first_frame; frame <= o.last_frame; ++frame) {
         const float angle = float(2.0 * kPi * frame / s.turntable);
-        const mat4_t model =
-            mat4_multiply(from_center, mat4_multiply(tiny3d::mat4_rotate_axis(s.up, angle), to_center));
+        const mat4_t model = mat4_multiply(tiny3d::mat4_rotate_axis(s.up, angle), *fit);
         timer.start();
         if (edges_only) {
             canvas_clear(canvas->get(), kBackground);
@@ -300,6 +306,13 @@ int main(int argc, char **argv) {
             ctx.end_frame();
         }
         timer.stop();
+        // Auto-framed, the mesh is in view: a frame of background only is a failure (with a
+        // camera from the command line, a warning: it may look away on purpose).
+        if (canvas_count_differing(canvas->get(), kBackground) == 0) {
+            const std::string blank = s.path + ": frame " + std::to_string(frame) + " shows nothing but the background";
+            if (!s.eye_given && !s.target_given) return cli.fail(blank);
+            std::fprintf(stderr, "render: warning: %s\n", blank.c_str());
+        }
         if (tiny3d::status st = timer.save(**canvas, demo::frame_path(o, frame), o.png); !st) return cli.fail(st.message());
     }
     timer.finish();

@@ -51,16 +51,17 @@ int main(int argc, char **argv) {
     if (!loaded) return cli.fail(loaded.message());
     const tiny3d::mesh &m = *loaded;
     const tiny3d::bounding_sphere bounds = tiny3d::mesh_bounding_sphere(m);
-    if (m.edges.empty() || !(bounds.radius > 0.0f)) return cli.fail(path + ": the mesh has no edges of non-zero size to draw");
+    const tiny3d::result<mat4_t> fit = tiny3d::mat4_fit_unit_sphere(bounds);  // any size, in double
+    if (m.edges.empty() || !fit)
+        return cli.fail(path + ": " + (m.edges.empty() ? "the mesh has no edges to draw" : fit.message()));
     auto canvas = tiny3d::make_canvas(o.width, o.height);
     if (!canvas) return cli.fail(canvas.message());
     if (tiny3d::status s = demo::prepare_out_dir(o); !s) return cli.fail(s.message());
 
-    // Distance at which a sphere of radius r spans kFill of the vertical view: r / sin(θ).
-    const float distance = bounds.radius / std::sin(kFill * kFovY * 0.5f);
+    // Distance at which the unit sphere spans kFill of the vertical view: 1 / sin(θ).
+    const float distance = 1.0f / std::sin(kFill * kFovY * 0.5f);
     const mat4_t proj = tiny3d::mat4_perspective(kFovY, float(o.width) / float(o.height), distance * 0.01f,
                                                  distance * 10.0f);
-    const mat4_t centre = mat4_translate(-bounds.center.x, -bounds.center.y, -bounds.center.z);
     tiny3d::wireframe_options options;
     options.method = method;
     options.thickness = kThickness;
@@ -75,9 +76,16 @@ int main(int argc, char **argv) {
         canvas_clear(canvas->get(), 0.0f);
         const float angle = float(2.0 * M_PI * frame / kFrames);
         const mat4_t turn = mat4_multiply(mat4_rotate_xyz(kTilt, 0, 0), tiny3d::mat4_rotate_y(angle));
-        const mat4_t model = mat4_multiply(mat4_translate(0, 0, -distance), mat4_multiply(turn, centre));
-        if (tiny3d::status s = tiny3d::render_wireframe(**canvas, m, mat4_multiply(proj, model), options, workspace); !s)
+        const mat4_t model = mat4_multiply(mat4_translate(0, 0, -distance), mat4_multiply(turn, *fit));
+        tiny3d::wireframe_stats stats;
+        if (tiny3d::status s = tiny3d::render_wireframe(**canvas, m, mat4_multiply(proj, model), options, workspace,
+                                                        &stats); !s)
             return cli.fail(s.message());
+        // The mesh is framed, so a blank frame is a failure, never an image to write.
+        if (stats.edges_drawn == 0 || canvas_count_differing(canvas->get(), 0.0f) == 0)
+            return cli.fail(path + ": frame " + std::to_string(frame) + " came out blank (" +
+                                   std::to_string(stats.edges_drawn) + " of " + std::to_string(m.edges.size()) +
+                                   " edges drawn)");
         timer.stop();
         if (tiny3d::status s = timer.save(**canvas, demo::frame_path(o, frame), o.png); !s) return cli.fail(s.message());
     }

@@ -81,6 +81,10 @@ bool save_canvas(const canvas_t *canvas, const char *path);
 
 void canvas_clear(canvas_t *canvas, float value);            // every pixel := clamp(value)
 float get_pixel(const canvas_t *canvas, int x, int y);       // 0 outside the canvas
+// How many pixels differ from `value` (0 for a null canvas). A frame that should show
+// geometry and counts 0 against its clear value came out blank: programs report that as
+// an error instead of writing it (a mesh that could not be framed, a NaN matrix, …).
+std::size_t canvas_count_differing(const canvas_t *canvas, float value);
 
 namespace tiny3d {
 

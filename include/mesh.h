@@ -15,6 +15,7 @@
 #include <array>
 #include <cstddef>
 #include <initializer_list>
+#include <span>
 #include <cstdint>
 #include <vector>
 
@@ -106,12 +107,27 @@ struct bounding_sphere {
     vec3_t center;
     float radius;  // empty mesh: radius −1
 };
-// Axis-aligned box of all positions (non-finite positions are skipped).
+// Axis-aligned box of all positions (non-finite positions are skipped); exact.
 bounding_box mesh_bounding_box(const mesh &m);
+bounding_box bounding_box_of(std::span<const vec3_t> positions);
 // A sphere holding every position: centre = the box centre, radius = the largest distance
 // to it (at most √3 × the smallest sphere's radius; exact for symmetric meshes such as the
-// generators' spheres). Non-finite positions are skipped.
+// generators' spheres). Non-finite positions are skipped. Correct over the whole float
+// range (computed in double: tiny meshes keep a non-zero radius down to denormal spacing,
+// huge ones a finite one); the radius is rounded up, so |p − centre| ≤ radius holds in
+// exact arithmetic for every finite position, and it is +inf only when the distance
+// itself exceeds FLT_MAX (positions near ±FLT_MAX on several axes).
 bounding_sphere mesh_bounding_sphere(const mesh &m);
+bounding_sphere bounding_sphere_of(std::span<const vec3_t> positions);
+
+// The model matrix mapping the sphere onto the unit sphere at the origin, p' = (p − c)/r
+// (scale 1/r and translation −c/r computed in double, rounded once to float), so a mesh
+// of any size can be framed by a fixed camera: from radius ≈ 2.9e-39 (1/r still a float)
+// up to FLT_MAX. Errors, with a sentence saying why: an empty or non-finite sphere ("nothing
+// to frame"), radius 0 (every position the same point), radius +inf ("coordinates span
+// more than 3.4e+38 …: too large to frame"), a radius below 1/FLT_MAX ("coordinates span
+// 2e-40: too small to frame"), or a centre so far off that c/r overflows.
+result<mat4_t> mat4_fit_unit_sphere(const bounding_sphere &s);
 
 // Checks the mesh's invariants: face_start starts at 0, is non-decreasing and ends at
 // indices.size(); every face has ≥ 3 corners; every index < positions.size(); corner

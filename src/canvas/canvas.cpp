@@ -86,6 +86,12 @@ void canvas_clear(canvas_t *canvas, float value) {
     std::fill(canvas->data, canvas->data + std::size_t(canvas->width) * std::size_t(canvas->height), v);
 }
 
+std::size_t canvas_count_differing(const canvas_t *canvas, float value) {
+    if (!canvas) return 0;
+    const float *begin = canvas->data, *end = canvas->data + std::size_t(canvas->width) * std::size_t(canvas->height);
+    return std::size_t(std::count_if(begin, end, [value](float v) { return v != value; }));
+}
+
 float get_pixel(const canvas_t *canvas, int x, int y) {
     if (!canvas || x < 0 || y < 0 || x >= canvas->width || y >= canvas->height) return 0.0f;
     return canvas->pixels[y][x];

@@ -2,6 +2,7 @@
 // validation. See include/mesh.h. Triangulation: triangulate.cpp.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <utility>
 #include <string>
@@ -19,6 +20,15 @@ std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
     return (static_cast<std::uint64_t>(lo) << 32) | hi;
 }
 
+// The unit vector from a to b, the difference in double (in float, 3e38 − (−3e38)
+// overflows); (0, 0, 0) when a = b.
+vec3_t unit_from_to(vec3_t a, vec3_t b) {
+    const double x = double(b.x) - a.x, y = double(b.y) - a.y, z = double(b.z) - a.z;
+    const double len = std::sqrt(x * x + y * y + z * z);
+    if (!(len > 0.0) || !std::isfinite(len)) return {0.0f, 0.0f, 0.0f};
+    return {float(x / len), float(y / len), float(z / len)};
+}
+
 bool finite3(vec3_t v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 // Calls fn(a, b) for every corner pair (k, k+1 wrapping) of face f.
@@ -31,15 +41,17 @@ void for_each_face_edge(const mesh &m, std::size_t f, Fn &&fn) {
 }  // namespace
 
 std::array<double, 3> newell_vector(const mesh &m, std::size_t f) {
-    // Newell: n = Σ (p_k × p_{k+1}) is twice the polygon's vector area. Summed in double:
-    // products of float coordinates never overflow or underflow there (1e30·1e30 and
-    // 1e-30·1e-30 both fit), so huge and tiny faces keep their normal.
+    // Newell: n = Σ (y_k − y_{k+1})(z_k + z_{k+1}), … is twice the polygon's vector area.
+    // In double, the difference and sum of two floats are exact (unless their magnitudes
+    // differ by more than 2^29) and their products never overflow or underflow (1e30·1e30
+    // and 1e-30·1e-30 both fit), so huge and tiny faces keep their normal, and a small face
+    // far from the origin is not lost to the cancellation of the plain Σ p_k × p_{k+1} form.
     double sx = 0.0, sy = 0.0, sz = 0.0;
     for_each_face_edge(m, f, [&](std::uint32_t a, std::uint32_t b) {
         const vec3_t &p = m.positions[a], &q = m.positions[b];
-        sx += double(p.y) * q.z - double(p.z) * q.y;
-        sy += double(p.z) * q.x - double(p.x) * q.z;
-        sz += double(p.x) * q.y - double(p.y) * q.x;
+        sx += (double(p.y) - q.y) * (double(p.z) + q.z);
+        sy += (double(p.z) - q.z) * (double(p.x) + q.x);
+        sz += (double(p.x) - q.x) * (double(p.y) + q.y);
     });
     return {sx, sy, sz};
 }
@@ -85,8 +97,8 @@ std::vector<vec3_t> mesh_vertex_normals(const mesh &m) {
         const std::uint32_t s = m.face_start[f], e = m.face_start[f + 1], n = e - s;
         for (std::uint32_t k = 0; k < n; ++k) {
             const vec3_t p = m.positions[m.indices[s + k]];
-            const vec3_t to_prev = vec3_normalize(m.positions[m.indices[s + (k + n - 1) % n]] - p);
-            const vec3_t to_next = vec3_normalize(m.positions[m.indices[s + (k + 1) % n]] - p);
+            const vec3_t to_prev = unit_from_to(p, m.positions[m.indices[s + (k + n - 1) % n]]);
+            const vec3_t to_next = unit_from_to(p, m.positions[m.indices[s + (k + 1) % n]]);
             // Interior angle at the corner; atan2(|u×v|, u·v) is accurate at every angle.
             const float angle = std::atan2(std::sqrt(vec3_dot(vec3_cross(to_prev, to_next), vec3_cross(to_prev, to_next))),
                                            vec3_dot(to_prev, to_next));
@@ -135,10 +147,10 @@ edge_adjacency mesh_edge_faces(const mesh &m) {
     return adj;
 }
 
-bounding_box mesh_bounding_box(const mesh &m) {
+bounding_box bounding_box_of(std::span<const vec3_t> positions) {
     constexpr float inf = std::numeric_limits<float>::infinity();
     bounding_box box{{inf, inf, inf}, {-inf, -inf, -inf}};
-    for (const vec3_t &p : m.positions) {
+    for (const vec3_t &p : positions) {
         if (!finite3(p)) continue;
         box.min = {std::min(box.min.x, p.x), std::min(box.min.y, p.y), std::min(box.min.z, p.z)};
         box.max = {std::max(box.max.x, p.x), std::max(box.max.y, p.y), std::max(box.max.z, p.z)};
@@ -146,16 +158,63 @@ bounding_box mesh_bounding_box(const mesh &m) {
     return box;
 }
 
-bounding_sphere mesh_bounding_sphere(const mesh &m) {
-    const bounding_box box = mesh_bounding_box(m);
+bounding_box mesh_bounding_box(const mesh &m) { return bounding_box_of(m.positions); }
+
+bounding_sphere bounding_sphere_of(std::span<const vec3_t> positions) {
+    const bounding_box box = bounding_box_of(positions);
     if (!(box.min.x <= box.max.x)) return {{0.0f, 0.0f, 0.0f}, -1.0f};
-    const vec3_t center = (box.min + box.max) * 0.5f;
-    float r2 = 0.0f;
-    for (const vec3_t &p : m.positions)
-        if (finite3(p)) r2 = std::max(r2, vec3_dot(p - center, p - center));
-    // One ulp-ish of slack so every position tests inside despite rounding of the sqrt.
-    constexpr float radius_slack = 1.0f + 4.0f * std::numeric_limits<float>::epsilon();
-    return {center, std::sqrt(r2) * radius_slack};
+    // Centre and distances in double: in float, (lo + hi) overflows for coordinates near
+    // ±FLT_MAX, and |p − c|² overflows from |p − c| ≈ 1.8e19 and underflows below ≈ 1e-19.
+    // The centre lies between lo and hi, so it is a finite float; the distances are taken
+    // from that rounded centre, exactly as a caller would measure them.
+    auto mid = [](float lo, float hi) { return float(0.5 * (double(lo) + double(hi))); };
+    const vec3_t center{mid(box.min.x, box.max.x), mid(box.min.y, box.max.y), mid(box.min.z, box.max.z)};
+    double r2 = 0.0;
+    for (const vec3_t &p : positions) {
+        if (!finite3(p)) continue;
+        const double dx = double(p.x) - center.x, dy = double(p.y) - center.y, dz = double(p.z) - center.z;
+        r2 = std::max(r2, dx * dx + dy * dy + dz * dz);
+    }
+    // The radius rounded up to a float, so every position tests inside; +inf when the
+    // distance itself exceeds the float range (positions near ±FLT_MAX on several axes).
+    const double r = std::sqrt(r2);
+    constexpr float inf = std::numeric_limits<float>::infinity();
+    if (r > double(std::numeric_limits<float>::max())) return {center, inf};
+    float radius = float(r);
+    if (double(radius) < r) radius = std::nextafter(radius, inf);
+    return {center, radius};
+}
+
+bounding_sphere mesh_bounding_sphere(const mesh &m) { return bounding_sphere_of(m.positions); }
+
+result<mat4_t> mat4_fit_unit_sphere(const bounding_sphere &s) {
+    auto fail = [](std::string why) { return result<mat4_t>(error{"", 0, -1, std::move(why)}); };
+    auto g3 = [](double v) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.3g", v);
+        return std::string(text);
+    };
+    if (!(s.radius >= 0.0f) || !finite3(s.center)) return fail("nothing to frame: no finite position");
+    if (s.radius == 0.0f) return fail("nothing to frame: every position is the same point");
+    if (!std::isfinite(s.radius))
+        return fail("coordinates span more than 3.4e+38 (beyond float): too large to frame");
+    // p' = (p − c) / r as one float matrix: diag(1/r) and translation −c/r, each computed in
+    // double and rounded once. 1/r must be a float (r ≥ 1/FLT_MAX ≈ 2.9e-39); c/r is then
+    // finite too unless the mesh lies ~1e38 radii from the origin.
+    const double inv = 1.0 / double(s.radius);
+    const double tx = -double(s.center.x) * inv, ty = -double(s.center.y) * inv, tz = -double(s.center.z) * inv;
+    constexpr double float_max = std::numeric_limits<float>::max();
+    if (!(inv <= float_max)) return fail("coordinates span " + g3(2.0 * s.radius) + ": too small to frame");
+    if (!(std::fabs(tx) <= float_max && std::fabs(ty) <= float_max && std::fabs(tz) <= float_max))
+        return fail("coordinates span " + g3(2.0 * s.radius) + " but lie " +
+                    g3(std::max({std::fabs(s.center.x), std::fabs(s.center.y), std::fabs(s.center.z)})) +
+                    " from the origin: too far off to frame");
+    const float k = float(inv);
+    mat4_t m = mat4_scale(k, k, k);
+    m.m[12] = float(tx);
+    m.m[13] = float(ty);
+    m.m[14] = float(tz);
+    return m;
 }
 
 status mesh_validate(const mesh &m) {

@@ -1,6 +1,7 @@
 // clipping.cpp — homogeneous Liang–Barsky against the frustum planes, segment vs circle,
 // frustum planes from a matrix and sphere culling. See include/pipeline.h.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -28,10 +29,19 @@ bool finite4(const vec4_t &p) {
     return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
 }
 
-// Row r of the column-major matrix as a vec4.
-vec4_t row(const mat4_t &m, int r) { return {m.m[r], m.m[4 + r], m.m[8 + r], m.m[12 + r]}; }
-vec4_t add(vec4_t a, vec4_t b, float sign) {
-    return {a.x + sign * b.x, a.y + sign * b.y, a.z + sign * b.z, a.w + sign * b.w};
+// double → float, ±inf beyond the float range (a plain conversion would be undefined).
+float to_float(double v) {
+    constexpr double float_max = std::numeric_limits<float>::max();
+    if (v > float_max) return std::numeric_limits<float>::infinity();
+    if (v < -float_max) return -std::numeric_limits<float>::infinity();
+    return float(v);
+}
+
+// row(3) + sign · row(r) of the column-major matrix, in double (a plane of clip space).
+std::array<double, 4> plane_row(const mat4_t &m, int r, double sign) {
+    std::array<double, 4> p;
+    for (int c = 0; c < 4; ++c) p[c] = double(m.m[c * 4 + 3]) + sign * double(m.m[c * 4 + r]);
+    return p;
 }
 
 }  // namespace
@@ -95,15 +105,20 @@ segment_clip clip_segment_circle(const circle &c, float x0, float y0, float x1, 
 }
 
 frustum frustum_from_matrix(const mat4_t &m) {
-    const vec4_t r0 = row(m, 0), r1 = row(m, 1), r2 = row(m, 2), r3 = row(m, 3);
-    frustum f{{add(r3, r2, 1.0f), add(r3, r2, -1.0f), add(r3, r0, 1.0f), add(r3, r0, -1.0f), add(r3, r1, 1.0f),
-               add(r3, r1, -1.0f)}};
-    for (vec4_t &p : f.plane) {
-        const float len = std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z);
+    // Gribb–Hartmann: near/far from row 2, left/right from row 0, bottom/top from row 1.
+    static constexpr int rows[6] = {2, 2, 0, 0, 1, 1};
+    frustum f;
+    for (int i = 0; i < 6; ++i) {
+        // In double: the matrix that frames a mesh of radius r has entries ~1/r, whose
+        // squares leave the float range for r beyond ~1e19 or below ~1e-19 (a zero length
+        // would make the plane "constrain nothing", an infinite one a zero plane).
+        const std::array<double, 4> p = plane_row(m, rows[i], i % 2 == 0 ? 1.0 : -1.0);
+        const double len = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
         // A plane with no normal (e.g. a far plane at infinity) constrains nothing; a NaN
-        // plane (non-finite matrix) stays NaN, so cull_sphere says "intersecting".
-        if (len == 0.0f) p = {0.0f, 0.0f, 0.0f, std::numeric_limits<float>::infinity()};
-        else p = {p.x / len, p.y / len, p.z / len, p.w / len};
+        // plane (non-finite matrix) stays NaN, so cull_sphere says "intersecting". An offset
+        // beyond float (|w| > FLT_MAX · |normal|) becomes ±inf: no float point reaches it.
+        if (len == 0.0) f.plane[i] = {0.0f, 0.0f, 0.0f, std::numeric_limits<float>::infinity()};
+        else f.plane[i] = {float(p[0] / len), float(p[1] / len), float(p[2] / len), to_float(p[3] / len)};
     }
     return f;
 }
@@ -112,9 +127,10 @@ cull_result cull_sphere(const frustum &f, const bounding_sphere &s) {
     if (!(s.radius >= 0.0f)) return cull_result::outside;
     cull_result result = cull_result::inside;
     for (const vec4_t &p : f.plane) {
-        const float d = p.x * s.center.x + p.y * s.center.y + p.z * s.center.z + p.w;
-        if (d < -s.radius) return cull_result::outside;
-        if (!(d >= s.radius)) result = cull_result::intersecting;
+        // In double: p · centre of a centre near ±FLT_MAX can overflow float.
+        const double d = double(p.x) * s.center.x + double(p.y) * s.center.y + double(p.z) * s.center.z + p.w;
+        if (d < -double(s.radius)) return cull_result::outside;
+        if (!(d >= double(s.radius))) result = cull_result::intersecting;
     }
     return result;
 }

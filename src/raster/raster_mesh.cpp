@@ -8,20 +8,6 @@ namespace tiny3d {
 
 namespace {
 
-vec3_t face_normal(const mesh &m, std::size_t f) {
-    // Newell's method over the face's corners (exact for planar polygons).
-    vec3_t n{0, 0, 0};
-    const std::uint32_t s = m.face_start[f], e = m.face_start[f + 1];
-    for (std::uint32_t k = s; k < e; ++k) {
-        const vec3_t a = m.positions[m.indices[k]], b = m.positions[m.indices[k + 1 < e ? k + 1 : s]];
-        n.x += (a.y - b.y) * (a.z + b.z);
-        n.y += (a.z - b.z) * (a.x + b.x);
-        n.z += (a.x - b.x) * (a.y + b.y);
-    }
-    const float len = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
-    return len > 0.0f && std::isfinite(len) ? n / len : vec3_t{0, 0, 0};
-}
-
 error mesh_error(const std::string &reason) { return error{"", 0, -1, reason}; }
 
 }  // namespace
@@ -43,11 +29,14 @@ result<raster_mesh> make_raster_mesh(const mesh &m, std::span<const vec3_t> vert
                           std::to_string(m.positions.size()) + " positions");
 
     raster_mesh r;
+    // Flat normals only when the mesh gives no other normals (Newell in double, mesh.h).
+    const std::vector<vec3_t> face_normals =
+        m.corner_normals.empty() && vertex_normals.empty() ? mesh_face_normals(m) : std::vector<vec3_t>{};
     // Vertex of corner k: the position itself when shared, else a vertex per corner.
     auto corner_normal = [&](std::size_t f, std::uint32_t k) {
         if (!m.corner_normals.empty()) return m.corner_normals[k];
         if (!vertex_normals.empty()) return vertex_normals[m.indices[k]];
-        return face_normal(m, f);
+        return face_normals[f];
     };
     if (!corner_attrs && !vertex_normals.empty()) {
         r.positions = m.positions;
@@ -67,22 +56,10 @@ result<raster_mesh> make_raster_mesh(const mesh &m, std::span<const vec3_t> vert
     r.triangles = mesh_triangles(m);
     if (shared)
         for (std::array<std::uint32_t, 3> &t : r.triangles) t = {m.indices[t[0]], m.indices[t[1]], m.indices[t[2]]};
-    // Bounding sphere: box centre, largest distance (finite positions only).
-    vec3_t lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
-    for (const vec3_t &p : r.positions) {
-        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) continue;
-        lo = {std::fmin(lo.x, p.x), std::fmin(lo.y, p.y), std::fmin(lo.z, p.z)};
-        hi = {std::fmax(hi.x, p.x), std::fmax(hi.y, p.y), std::fmax(hi.z, p.z)};
-    }
-    if (lo.x <= hi.x) {
-        r.bound_center = (lo + hi) * 0.5f;
-        float r2 = 0;
-        for (const vec3_t &p : r.positions) {
-            const vec3_t d = p - r.bound_center;
-            const float d2 = d.x * d.x + d.y * d.y + d.z * d.z;
-            if (std::isfinite(d2) && d2 > r2) r2 = d2;
-        }
-        r.bound_radius = std::sqrt(r2) * (1.0f + 1e-6f);
+    // Bounding sphere (finite positions only), in double like the mesh's own.
+    if (const bounding_sphere b = bounding_sphere_of(r.positions); b.radius >= 0.0f) {
+        r.bound_center = b.center;
+        r.bound_radius = b.radius;
     }
     return r;
 }

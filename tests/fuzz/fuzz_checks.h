@@ -75,7 +75,15 @@ inline std::string check_canvas_values(const canvas_t &c) {
 // culling, and checks each image. Only called for meshes that passed the structural checks.
 inline std::string check_renders(const tiny3d::mesh &m) {
     const tiny3d::bounding_sphere bounds = tiny3d::mesh_bounding_sphere(m);
-    if (!(bounds.radius > 0.0f) || !std::isfinite(bounds.radius)) return {};  // nothing to frame
+    // Model: centre the mesh and scale it to radius 1 (any size the framing accepts), 3
+    // units in front of the camera. What it refuses must be a real limit, said in words.
+    const tiny3d::result<mat4_t> fit = tiny3d::mat4_fit_unit_sphere(bounds);
+    if (!fit) {
+        const bool beyond_float = std::isinf(bounds.radius) || (bounds.radius > 0.0f && bounds.radius < 3e-39f);
+        if (bounds.radius == 0.0f || beyond_float) return {};  // nothing or nothing frameable to draw
+        return "mat4_fit_unit_sphere refused a finite sphere of radius " + std::to_string(bounds.radius) + ": " +
+               fit.message();
+    }
     tiny3d::result<tiny3d::raster_mesh> rm = tiny3d::make_raster_mesh(m, tiny3d::mesh_vertex_normals(m));
     if (!rm) return "make_raster_mesh rejected a valid mesh: " + rm.message();
     tiny3d::result<tiny3d::canvas_ptr> canvas = tiny3d::make_canvas(RENDER_SIDE, RENDER_SIDE);
@@ -83,25 +91,34 @@ inline std::string check_renders(const tiny3d::mesh &m) {
     const light_t light = {{0.3f, 0.5f, 1.0f}, 0.8f};
     tiny3d::result<tiny3d::light_rig> rig = tiny3d::make_light_rig({&light, 1}, 0.1f);
     if (!rig) return "make_light_rig failed";
-    // Model: centre the mesh and scale it to radius 1, 3 units in front of the camera.
-    const float s = 1.0f / bounds.radius;
-    const mat4_t model = mat4_multiply(mat4_translate(0.0f, 0.0f, -3.0f),
-                                       mat4_multiply(mat4_scale(s, s, s),
-                                                     mat4_translate(-bounds.center.x, -bounds.center.y,
-                                                                    -bounds.center.z)));
+    const mat4_t model = mat4_multiply(mat4_translate(0.0f, 0.0f, -3.0f), *fit);
     const mat4_t projection = tiny3d::mat4_perspective(1.0f, 1.0f, 0.5f, 10.0f);
     // Wireframes: framed, and raw (the file's own coordinates, however far or huge: clipped).
     tiny3d::wireframe_workspace ws;
-    for (const mat4_t &m_model : {model, mat4_identity()})
+    bool has_long_edge = false;  // an edge whose ends are different points
+    for (const tiny3d::edge &e : m.edges) {
+        const vec3_t a = m.positions[e.a], b = m.positions[e.b];
+        has_long_edge = has_long_edge || a.x != b.x || a.y != b.y || a.z != b.z;
+    }
+    for (const bool framed : {true, false})
         for (tiny3d::line_method method : {tiny3d::line_method::faithful, tiny3d::line_method::coverage}) {
+            const mat4_t m_model = framed ? model : mat4_identity();
             canvas_clear(canvas->get(), 0.0f);
             tiny3d::wireframe_options o;
             o.method = method;
             o.thickness = 1.5f;
             o.depth_cue = true;
-            if (tiny3d::status s = tiny3d::render_wireframe(**canvas, m, mat4_multiply(projection, m_model), o, ws); !s)
+            tiny3d::wireframe_stats stats;
+            if (tiny3d::status s = tiny3d::render_wireframe(**canvas, m, mat4_multiply(projection, m_model), o, ws,
+                                                            &stats);
+                !s)
                 return "render_wireframe rejected a valid mesh: " + s.message();
             if (std::string e = check_canvas_values(**canvas); !e.empty()) return "wireframe image: " + e;
+            // Framed, the whole mesh is in view: an edge must show (no silent blank frame).
+            if (framed && has_long_edge &&
+                (stats.edges_drawn == 0 || canvas_count_differing(canvas->get(), 0.0f) == 0))
+                return "the framed wireframe came out blank (" + std::to_string(stats.edges_drawn) + " of " +
+                       std::to_string(m.edges.size()) + " edges drawn)";
         }
     tiny3d::render_context ctx(1);
     for (tiny3d::shading shade : {tiny3d::shading::flat, tiny3d::shading::gouraud, tiny3d::shading::phong}) {
