@@ -2,6 +2,7 @@
 #   make          build/libtiny3d.a
 #   make demo     build and run every demo, frames under build/frames/<demo>/
 #   make test     build and run every test, then again under ASan + UBSan
+#   make test-portable  every test again with all SIMD paths off, under build/portable/
 #   make bench    speed-vs-accuracy benchmarks, CSV + charts under build/bench/
 #   make install  headers, libtiny3d.a and tiny3d.pc under PREFIX (default /usr/local), DESTDIR honoured
 #   make clean
@@ -14,7 +15,9 @@ CXX      := g++
 endif
 STD      := -std=c++20
 WARN     := -Wall -Wextra -Wpedantic -Werror
-CPPFLAGS := -Iinclude -MMD -MP
+# SIMD_FLAGS=-DTINY3D_PORTABLE compiles every SIMD path out (src/simd_config.h).
+SIMD_FLAGS ?=
+CPPFLAGS := -Iinclude -MMD -MP $(SIMD_FLAGS)
 OPT      ?= -O2
 # float-cast-overflow is not part of GCC's "undefined" group: out-of-range float→int is UB too.
 # -g1 (line tables only): reports still name file:line, and the sanitizer build — most of
@@ -46,7 +49,7 @@ SAN_BENCH_LIB     := $(BUILD)/san/bench/libtiny3d_bench.a
 BENCH_SRCS := $(sort $(wildcard tests/bench/*.cpp))
 BENCH_BINS := $(BENCH_SRCS:tests/bench/%.cpp=$(BUILD)/bench/bin/%)
 
-.PHONY: all lib demo demos test tests bench clean
+.PHONY: all lib demo demos test tests plain-tests test-portable bench clean
 .SECONDARY:
 all: lib
 lib: $(LIB)
@@ -101,6 +104,18 @@ test:
 	@$(MAKE) --no-print-directory $(PARALLEL) tests
 	@BUILD=$(BUILD) bash tests/run_tests.sh $(TEST_BINS) -- $(SAN_TESTS)
 include tests/compat/compat.mk
+
+# `make test-portable`: the library, every test and the programs the tests run, built again
+# with every SIMD path off (-DTINY3D_PORTABLE, src/simd_config.h) into $(BUILD)/portable/
+# (plain -O2, no sanitizer build) and run, so the portable reference kernels that the SIMD
+# kernels are tested against keep building and passing. First checks that every SIMD guard
+# in the tree goes through src/simd_config.h (tests/check_simd_guards.sh).
+PORTABLE_BUILD := $(BUILD)/portable
+plain-tests: $(TEST_BINS) $(DEMO_BINS) $(COMPAT_BINS)
+test-portable:
+	@bash tests/check_simd_guards.sh
+	@$(MAKE) --no-print-directory $(PARALLEL) BUILD=$(PORTABLE_BUILD) SIMD_FLAGS=-DTINY3D_PORTABLE plain-tests
+	@BUILD=$(PORTABLE_BUILD) bash tests/run_tests.sh $(TEST_SRCS:tests/%.cpp=$(PORTABLE_BUILD)/tests/%)
 
 # ---- demos: one program per demo/*.cpp, linked with demo/common ----
 $(BUILD)/demo/%: $(BUILD)/obj/demo/%.o $(DEMO_COMMON_OBJS) $(LIB)

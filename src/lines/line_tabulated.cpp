@@ -29,6 +29,7 @@
 #include <string>
 
 #include "line_tabulated_internal.h"
+#include "../simd_config.h"
 
 namespace tiny3d {
 using namespace tabulated;
@@ -138,12 +139,12 @@ void build_stamps(line_table &t, double reach, float thickness, line_cap cap) {
 }  // namespace
 
 line_simd best_line_simd() {
-#if defined(__x86_64__) && defined(__GNUC__)
+#ifdef TINY3D_AVX512
     if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
         __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512bw"))
         return line_simd::avx512;
 #endif
-#ifdef __SSE2__
+#ifdef TINY3D_SSE2
     return line_simd::sse2;
 #else
     return line_simd::portable;
@@ -234,10 +235,10 @@ void draw_prepared(canvas_t *canvas, stroke_kind kind, const stroke_setup &s, co
         return;
     }
     if (kind != stroke_kind::tabulated) return;
-#ifdef TINY3D_LINE_AVX512
+#ifdef TINY3D_AVX512
     if (table.simd() == line_simd::avx512 && table.stamp_size == 4) return draw_batch_avx512(canvas, &s, 1, table);
 #endif
-#ifdef __SSE2__
+#ifdef TINY3D_SSE2
     if (table.simd() != line_simd::portable && canvas->width >= 4) return draw_sse2(canvas, s, table);
 #endif
     draw_portable(canvas, s, table);
@@ -259,7 +260,7 @@ void draw_lines_tabulated(canvas_t *canvas, const line_segment *segments, std::s
         const int n = int(std::min<std::size_t>(kBatch, count - start));
         bool all_wide = true;
         unsigned ready = 0;  // set up by the vector code
-#ifdef TINY3D_LINE_AVX512
+#ifdef TINY3D_AVX512
         if (table.simd() == line_simd::avx512 && table.stamp_size == 4 && canvas && canvas->data && canvas->width > 0 &&
             canvas->height > 0)
             ready = prepare8_avx512(*canvas, segments + start, n, table, strokes);
@@ -273,7 +274,7 @@ void draw_lines_tabulated(canvas_t *canvas, const line_segment *segments, std::s
             kinds[i] = prepare_stroke(canvas, g.x0, g.y0, g.x1, g.y1, table, g.intensity, strokes[i]);
             all_wide = all_wide && kinds[i] == stroke_kind::tabulated;
         }
-#ifdef TINY3D_LINE_AVX512
+#ifdef TINY3D_AVX512
         if (all_wide && table.simd() == line_simd::avx512 && table.stamp_size == 4) {
             draw_batch_avx512(canvas, strokes, n, table);
             continue;

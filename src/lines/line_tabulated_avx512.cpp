@@ -15,8 +15,9 @@
 #include <cstdint>
 
 #include "line_tabulated_internal.h"
+#include "../simd_config.h"
 
-#ifdef TINY3D_LINE_AVX512
+#ifdef TINY3D_AVX512
 #include <immintrin.h>
 
 #if defined(__clang__)

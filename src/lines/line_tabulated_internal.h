@@ -19,6 +19,7 @@
 #include "canvas.h"
 #include "line_clip.h"
 #include "square_cdf.h"
+#include "../simd_config.h"
 
 namespace tiny3d::tabulated {
 
@@ -73,7 +74,7 @@ public:
     // stroke in int range), then ceil(lo) = W − ⌊W − lo⌋ and floor(hi) = ⌊1 + hi⌋ − 1 by
     // truncation of numbers ≥ 0.
     void next(int &first, int &last) {
-#ifdef __SSE2__
+#ifdef TINY3D_SSE2
         const __m128d lo_neg_hi = _mm_max_pd(load(band_), load(slab_));
         const __m128d clamped = _mm_min_pd(_mm_max_pd(lo_neg_hi, _mm_set_pd(1.0 - width_, 0.0)), _mm_set_pd(1.0, width_));
         const __m128i whole = _mm_cvttpd_epi32(_mm_sub_pd(_mm_set_pd(1.0, width_), clamped));
@@ -94,7 +95,7 @@ public:
     }
 
 private:
-#ifdef __SSE2__
+#ifdef TINY3D_SSE2
     static __m128d load(const std::array<double, 2> &pair) { return _mm_loadu_pd(pair.data()); }
 #endif
     int width_;
@@ -106,7 +107,7 @@ private:
 class row_frame {
 public:
     row_frame(double u0, double v0, double dx, double dy)
-#ifdef __SSE2__
+#ifdef TINY3D_SSE2
         : uv_(_mm_set_pd(v0, u0)), down_(_mm_set_pd(dx, dy)), right_(_mm_set_pd(-dy, dx)) {}
     void step() { uv_ = _mm_add_pd(uv_, down_); }
     void at(int i, float &u, float &v) const {
@@ -250,12 +251,11 @@ constexpr int unfolded_index(bool swap, bool flip_x, bool flip_y, int size, int 
 // ---- the kernels (each draws the image of draw_portable to within float rounding) ----
 // One pixel at a time: the reference every other kernel is tested against.
 void draw_portable(canvas_t *canvas, const stroke_setup &s, const line_table &table);
-#ifdef __SSE2__
+#ifdef TINY3D_SSE2
 // Four pixels at a time; canvases at least 4 pixels wide.
 void draw_sse2(canvas_t *canvas, const stroke_setup &s, const line_table &table);
 #endif
-#if defined(__x86_64__) && defined(__GNUC__)
-#define TINY3D_LINE_AVX512 1
+#ifdef TINY3D_AVX512
 // AVX-512 (line_simd::avx512: only on CPUs best_line_simd() reports it for; tables with
 // 4 × 4 blocks). draw_batch_avx512 draws `count` (≤ kBatch) prepared strokes in order;
 // prepare8_avx512 sets up prepare_stroke's common case for n ≤ kBatch segments at once,

@@ -4,8 +4,9 @@
 #include <cmath>
 
 #include "line_tabulated_internal.h"
+#include "../simd_config.h"
 
-#ifdef __SSE2__
+#ifdef TINY3D_SSE2
 #include <emmintrin.h>
 #include <xmmintrin.h>
 

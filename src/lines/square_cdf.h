@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <cmath>
 
-#ifdef __SSE2__
+#include "../simd_config.h"
+
+#ifdef TINY3D_SSE2
 #include <emmintrin.h>
 #endif
 
@@ -68,7 +70,7 @@ public:
     // Pixels lo..hi (0 ≤ lo ≤ hi < row_size) of `row`, pixel lo at signed distance u_lo.
     // Pixels of the row beyond lo..hi are never touched.
     void run(float *row, [[maybe_unused]] int row_size, int lo, int hi, double u_lo) const {
-#ifdef __SSE2__
+#ifdef TINY3D_SSE2
         // Groups of four, the last one moved back inside the row if needed; lanes outside
         // the pixels not yet drawn get coverage 0, and v + 0·(1 − v) leaves them unchanged.
         if (row_size >= 4) {
@@ -91,7 +93,7 @@ public:
     // and free to draw: pixels beyond the band get coverage exactly 0 (both CDF terms
     // saturate at the same value), so a fixed window needs no masks.
     void window(float *p, float u, int groups) const {
-#ifdef __SSE2__
+#ifdef TINY3D_SSE2
         __m128 uv = _mm_add_ps(_mm_set1_ps(u), lane_du_);
         for (int g = 0; g < groups; ++g, p += 4, uv = _mm_add_ps(uv, du4_)) blend4(p, band4(uv));
 #else
@@ -100,7 +102,7 @@ public:
 #endif
     }
 
-#ifdef __SSE2__
+#ifdef TINY3D_SSE2
     // Band coverage of four pixels with signed distances u (square_cdf::band).
     // Four pixels at p with coverages cov: "over" with c = intensity · coverage clamped to
     // 0..1 (the two band terms can sum to 1 + 1 ulp, or −1 ulp where they nearly cancel;
@@ -130,7 +132,7 @@ private:
     const square_cdf &cdf_;
     float half_, ink_;
     double du_;
-#ifdef __SSE2__
+#ifdef TINY3D_SSE2
     const __m128 sign_bit_ = _mm_set1_ps(-0.0f), w_lo_ = _mm_set1_ps(cdf_.w_lo), w_hi_ = _mm_set1_ps(cdf_.w_hi);
     const __m128 inv_amax_ = _mm_set1_ps(cdf_.inv_amax);
     const __m128 inv_2ab_ = _mm_set1_ps(cdf_.inv_2ab), hw_ = _mm_set1_ps(half_), ink4_ = _mm_set1_ps(ink_);

@@ -7,8 +7,9 @@
 #include <string>
 
 #include "math3d.h"
+#include "../simd_config.h"
 
-#ifdef __SSE2__
+#ifdef TINY3D_SSE2
 #include <emmintrin.h>
 #endif
 
@@ -24,7 +25,7 @@ tiny3d::status size_error(const char *function, std::size_t in, std::size_t out)
                              std::to_string(in)};
 }
 
-#ifdef __SSE2__
+#ifdef TINY3D_SSE2
 struct columns {
     __m128 c0, c1, c2, c3;
 };
@@ -76,7 +77,7 @@ vec3_t transform_direction(const mat4_t &m, vec3_t d) {
 
 status transform_points(const mat4_t &m, std::span<const vec3_t> in, std::span<vec3_t> out) {
     if (out.size() < in.size()) return size_error("transform_points", in.size(), out.size());
-#ifdef __SSE2__
+#ifdef TINY3D_SSE2
     const columns c = load_columns(m);
     for (std::size_t i = 0; i < in.size(); ++i) store_xyz(out[i], divide_like_apply_transform(mul_point(c, in[i])));
 #else
@@ -87,7 +88,7 @@ status transform_points(const mat4_t &m, std::span<const vec3_t> in, std::span<v
 
 status transform_points_homogeneous(const mat4_t &m, std::span<const vec3_t> in, std::span<vec4_t> out) {
     if (out.size() < in.size()) return size_error("transform_points_homogeneous", in.size(), out.size());
-#ifdef __SSE2__
+#ifdef TINY3D_SSE2
     const columns c = load_columns(m);
     for (std::size_t i = 0; i < in.size(); ++i) _mm_storeu_ps(&out[i].x, mul_point(c, in[i]));
 #else

@@ -8,8 +8,9 @@
 #define TINY3D_PROJECT4_H
 
 #include "pipeline.h"
+#include "../simd_config.h"
 
-#ifdef __SSE2__
+#ifdef TINY3D_SSE2
 #include <emmintrin.h>
 
 namespace tiny3d::detail {
@@ -55,5 +56,5 @@ inline projected4 project4(__m128 x, __m128 y, __m128 z, __m128 w, float guard, 
 
 }  // namespace tiny3d::detail
 
-#endif  // __SSE2__
+#endif  // TINY3D_SSE2
 #endif

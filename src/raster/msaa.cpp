@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <string>
 
-#ifdef __SSE2__
+#include "../simd_config.h"
+
+#ifdef TINY3D_SSE2
 #include <emmintrin.h>
 #endif
 
@@ -116,7 +118,7 @@ void fill_rows_portable(sample_store &store, const msaa_triangle &f, const sampl
     }
 }
 
-#ifdef __SSE2__
+#ifdef TINY3D_SSE2
 template <depth_func Test>
 inline __m128 compare(__m128 z, __m128 stored) {
     if constexpr (Test == depth_func::never) return _mm_setzero_ps();
@@ -318,7 +320,7 @@ void sample_store::resolve(canvas_t &canvas, zbuffer &depth, float clear_colour)
     for (int y = origin_; y < end_; ++y) {
         const std::uint8_t *touched = touched_row(y);
         float *colour = canvas.pixels[y], *z = depth.row(y);
-#ifdef __SSE2__
+#ifdef TINY3D_SSE2
         switch (S) {
             case 4: resolve_row_sse2<4>(pixel(0, y), touched, width_, clear_colour, colour, z); continue;
             case 8: resolve_row_sse2<8>(pixel(0, y), touched, width_, clear_colour, colour, z); continue;
@@ -379,7 +381,7 @@ void fill_msaa_rows(sample_store &store, const msaa_triangle &f, const sample_pa
     y0 = std::max(y0, f.min_y);
     y1 = std::min(y1, f.max_y + 1);
     if (y0 >= y1 || test == depth_func::never) return;
-#ifdef __SSE2__
+#ifdef TINY3D_SSE2
     if (f.narrow && !portable) {
         switch (pat.count) {
             case 4: return fill_rows_sse2_dispatch<4>(store, f, pat, test, depth_write, clear_colour, y0, y1);

@@ -10,8 +10,9 @@
 #include <string>
 
 #include "render_context_impl.h"
+#include "../simd_config.h"
 
-#ifdef __SSE2__
+#ifdef TINY3D_SSE2
 #include <emmintrin.h>
 #endif
 
@@ -44,7 +45,7 @@ bool indices_below(const std::vector<std::array<std::uint32_t, 3>> &triangles, s
     const std::uint32_t limit = static_cast<std::uint32_t>(count);
     std::size_t k = 0;
     std::uint32_t out_of_range = 0;
-#ifdef __SSE2__
+#ifdef TINY3D_SSE2
     // Unsigned index ≥ limit  ⇔  (index ^ 2³¹) > (limit − 1) ^ 2³¹ as signed (limit ≥ 1).
     if (limit > 0) {
         const __m128i flip = _mm_set1_epi32(static_cast<int>(0x80000000u));

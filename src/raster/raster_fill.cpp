@@ -5,8 +5,9 @@
 #include <cmath>
 
 #include "raster_internal.h"
+#include "../simd_config.h"
 
-#ifdef __SSE2__
+#ifdef TINY3D_SSE2
 #include <emmintrin.h>
 #endif
 
@@ -271,7 +272,7 @@ void fill_rows_scalar64(canvas_t &canvas, zbuffer *depth, const fast_triangle &f
     }
 }
 
-#ifdef __SSE2__
+#ifdef TINY3D_SSE2
 template <depth_func Test>
 inline __m128 depth_mask(__m128 z, __m128 stored) {
     if constexpr (Test == depth_func::less) return _mm_cmplt_ps(z, stored);
@@ -450,7 +451,7 @@ void attribute_planes_at(const double x[3], const double y[3], int px, int py, c
 
 void fill_floats(float *dst, std::size_t count, float value) {
     std::size_t i = 0;
-#ifdef __SSE2__
+#ifdef TINY3D_SSE2
     for (; i < count && (reinterpret_cast<std::uintptr_t>(dst + i) & 15u); ++i) dst[i] = value;
     const __m128 v = _mm_set1_ps(value);
     for (; i + 16 <= count; i += 16) {
@@ -472,7 +473,7 @@ void fill_fast_rows(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, co
         if (wide_edges) fill_rows_scalar64(canvas, depth, f, *wide_edges, test, depth_write, y0, y1);
         return;
     }
-#ifdef __SSE2__
+#ifdef TINY3D_SSE2
     if (depth) fill_rows_dispatch<true>(canvas, depth, f, test, depth_write, y0, y1);
     else fill_rows_dispatch<false>(canvas, depth, f, depth_func::always, false, y0, y1);
 #else

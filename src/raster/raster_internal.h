@@ -8,8 +8,9 @@
 #include <cstdint>
 
 #include "raster.h"
+#include "../simd_config.h"
 
-#ifdef __SSE2__
+#ifdef TINY3D_SSE2
 #include <emmintrin.h>
 #endif
 
@@ -19,7 +20,7 @@ namespace tiny3d::detail {
 // (std::lrint, which GCC -O2 compiles to a library call; cvtss2si is one instruction).
 // Needs |x| ≤ RASTER_MAX_COORD (then x·16 fits in 32 bits).
 inline std::int32_t snap_coord(float x) {
-#ifdef __SSE2__
+#ifdef TINY3D_SSE2
     return _mm_cvtss_si32(_mm_set_ss(x * static_cast<float>(RASTER_SUBPIXEL_ONE)));
 #else
     return static_cast<std::int32_t>(std::lrint(x * static_cast<float>(RASTER_SUBPIXEL_ONE)));
@@ -91,7 +92,7 @@ inline constexpr double CROSS_EPS = 1.0 / (1 << 21);
 // (ceil commutes with the clamp), then ceil(v) = K − trunc(K − v) on a positive K − v.
 class row_spans {
 public:
-#ifdef __SSE2__
+#ifdef TINY3D_SSE2
     explicit row_spans(const fast_triangle &f)
         : a_(_mm_loadu_pd(f.cross)), a_step_(_mm_loadu_pd(f.cross_step)), b_(_mm_loadu_pd(f.cross + 2)),
           b_step_(_mm_loadu_pd(f.cross_step + 2)),

@@ -6,7 +6,9 @@
 #ifndef TINY3D_VERTEX_KERNELS_SSE2_H
 #define TINY3D_VERTEX_KERNELS_SSE2_H
 
-#ifdef __SSE2__
+#include "../simd_config.h"
+
+#ifdef TINY3D_SSE2
 #include <emmintrin.h>
 
 #include <limits>
@@ -106,5 +108,5 @@ inline void shade_gouraud_x4(const light_rig &rig, const normal_transform &nt, c
 }  // namespace
 }  // namespace tiny3d::detail
 
-#endif  // __SSE2__
+#endif  // TINY3D_SSE2
 #endif

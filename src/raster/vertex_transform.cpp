@@ -3,6 +3,7 @@
 #include "vertex_transform.h"
 
 #include "vertex_kernels_sse2.h"  // the SIMD kernels (nothing without SSE2)
+#include "../simd_config.h"
 
 namespace tiny3d::detail {
 
@@ -19,7 +20,7 @@ bool directional_only(const light_rig &rig) {
 void project_vertices(const raster_mesh &m, const vertex_job &job, float guard, vertex_set set, xvertex *vertices,
                       vec4_t *clip) {
     std::size_t first = 0;
-#ifdef __SSE2__
+#ifdef TINY3D_SSE2
     for (; first + 4 <= set.count; first += 4) {
         const std::uint32_t index[4] = {set[first], set[first + 1], set[first + 2], set[first + 3]};
         project_x4(job.mvp, m.positions.data(), index, guard, job.width, job.height, vertices, clip);
@@ -36,7 +37,7 @@ void project_vertices(const raster_mesh &m, const vertex_job &job, float guard, 
 void shade_directional(const raster_mesh &m, const draw_params &p, const vertex_job &job, vertex_set set,
                        xvertex *vertices) {
     std::size_t first = 0;
-#ifdef __SSE2__
+#ifdef TINY3D_SSE2
     for (; first + 4 <= set.count; first += 4) {
         const std::uint32_t index[4] = {set[first], set[first + 1], set[first + 2], set[first + 3]};
         alignas(16) float shade[4];

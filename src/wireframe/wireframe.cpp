@@ -11,6 +11,7 @@
 #include "pipeline.h"
 #include "raster.h"
 #include "../pipeline/project4.h"
+#include "../simd_config.h"
 
 
 namespace tiny3d {
@@ -126,7 +127,7 @@ projected_vertex project_one(const vec4_t &c, bool all_inside, int width, int he
     return {p.x, p.y, p.depth, 0u};
 }
 
-#ifdef __SSE2__
+#ifdef TINY3D_SSE2
 // project_one for clip[0..3], one lane per point: the vertex stage's project4 (the same
 // float operations as clip_outcode and clip_to_screen), then project_one's choices.
 void project_four(const vec4_t *clip, bool all_inside, float width, float height, projected_vertex *out) {
@@ -153,7 +154,7 @@ void project_vertices(wireframe_workspace &ws, bool all_inside, int width, int h
     const std::size_t n = ws.clip.size();
     ws.vertices.resize(n);
     std::size_t i = 0;
-#ifdef __SSE2__
+#ifdef TINY3D_SSE2
     static_assert(sizeof(projected_vertex) == 4 * sizeof(float) && sizeof(vec4_t) == 4 * sizeof(float));
     for (; i + 4 <= n; i += 4) project_four(&ws.clip[i], all_inside, float(width), float(height), &ws.vertices[i]);
 #endif

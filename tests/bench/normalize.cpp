@@ -11,8 +11,9 @@
 
 #include "common/bench.h"
 #include "math3d.h"
+#include "../../src/simd_config.h"
 
-#ifdef __SSE__
+#ifdef TINY3D_SSE2
 #include <xmmintrin.h>
 #endif
 
@@ -25,7 +26,7 @@ using normalize_fn = vec3_t (*)(vec3_t);
 
 vec3_t quake_global(vec3_t v) { return vec3_normalize_fast(v); }
 
-#ifdef __SSE__
+#ifdef TINY3D_SSE2
 float rsqrt_estimate(float x) { return _mm_cvtss_f32(_mm_rsqrt_ss(_mm_set_ss(x))); }
 
 // Candidates are kept out of line like the library's functions (a fair call cost), but
@@ -92,7 +93,7 @@ int main(int argc, char **argv) {
         {"1/sqrtf (vec3_normalize_fast_accurate)", "fast", tiny3d::vec3_normalize_fast_accurate, "chosen fast path"},
         {"double sqrt (vec3_normalize)", "reference", tiny3d::vec3_normalize, "exact: one rounding"},
     };
-#ifdef __SSE__
+#ifdef TINY3D_SSE2
     variants.push_back({"rsqrtss + 1 Newton (candidate)", "other", rsqrt_newton, "candidate, no range check"});
     variants.push_back({"rsqrtss + 2nd-order (candidate)", "other", rsqrt_second_order, "candidate, no range check"});
 #endif
