@@ -377,7 +377,7 @@ bool make_msaa_triangle(const triangle_edges &t, const sample_pattern &pat, pixe
 }
 
 void fill_msaa_rows(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
-                    bool depth_write, float clear_colour, int y0, int y1, bool portable) {
+                    bool depth_write, float clear_colour, int y0, int y1, [[maybe_unused]] bool portable) {
     y0 = std::max(y0, f.min_y);
     y1 = std::min(y1, f.max_y + 1);
     if (y0 >= y1 || test == depth_func::never) return;
