@@ -192,4 +192,6 @@ mesh make_soccer_ball(float radius = 1.0f);
 int generate_soccer_ball(vec3_t **vertices, int *vertex_count, int (**edges)[2], int *edge_count);
 void free_soccer_ball(vec3_t *vertices, int (*edges)[2]);  // NULLs are ignored
 
+#include "compat/mesh_alias.h"  // other libtiny3d programs' name create_cube(…)
+
 #endif

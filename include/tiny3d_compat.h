@@ -2,10 +2,14 @@
 //
 // Include this instead of (or after) tiny3d.h in a program written against another
 // libtiny3d implementation. It is not included by any library header, because these names
-// are also the names user programs give their OWN helpers (a program that defines
-// `static vec3_t vec3_normalize(vec3_t)` must still compile against the normal headers).
+// are also the names user programs give their OWN helpers, and these plain overloads would
+// clash with them (a program that defines `static vec3_t vec3_add(vec3_t, vec3_t)` must
+// still compile against the normal headers).
 // The common alternates (canvas_create, mat4_mul, bezier, …) need no opt-in: they are in
-// the normal headers (include/compat/*_alias.h).
+// the normal headers (include/compat/*_alias.h), and so are the names programs also define
+// themselves that step aside for a program's own function (save_canvas_pgm & co., the
+// 7-argument draw_line_f, vec3_normalize, mat4_perspective, create_cube: see
+// compat/user_first.h).
 //
 // Every function here is a thin inline alias of the one implementation in the normal
 // headers: same conventions (column-major mat4_t, radians, the report's spherical
@@ -92,29 +96,5 @@ inline vec3_t vec3_scale(vec3_t v, float s) { return v * s; }
 inline float vec3_dot(vec3_t a, vec3_t b) { return tiny3d::vec3_dot(a, b); }
 inline vec3_t vec3_cross(vec3_t a, vec3_t b) { return tiny3d::vec3_cross(a, b); }  // right-handed
 inline float vec3_length(vec3_t v) { return tiny3d::vec3_length(v); }
-// Exact unit vector (tiny3d::vec3_normalize); zero or NaN input gives {0, 0, 0}.
-inline vec3_t vec3_normalize(vec3_t v) { return tiny3d::vec3_normalize(v); }
-
-// ---- canvas -------------------------------------------------------------------------------
-// save_canvas under four other names, with the C convention: 0 on success, −1 on failure
-// (binary PGM, atomic write; nothing is left behind on failure). Callers that ignore the
-// result (the void forms) compile unchanged.
-inline int save_canvas_as_pgm(const canvas_t *canvas, const char *path) { return canvas_save_pgm(canvas, path); }
-inline int canvas_save_to_pgm(const canvas_t *canvas, const char *path) { return canvas_save_pgm(canvas, path); }
-inline int save_canvas_pgm(const canvas_t *canvas, const char *path) { return canvas_save_pgm(canvas, path); }
-inline int save_canvas_to_pgm(const canvas_t *canvas, const char *path) { return canvas_save_pgm(canvas, path); }
-
-// draw_line_f with a 7th `intensity` argument. The report's six-argument line has no
-// intensity (its splats always add 1), so this form is tiny3d::draw_line_coverage with
-// round caps: each pixel gets intensity × the exact area of it the stroke covers, combined
-// "over" (v + c·(1 − v)). Its image therefore differs from the six-argument form's even at
-// intensity 1 (no over-inking); intensity is clamped to ≤ 1, ≤ 0 or NaN draws nothing.
-inline void draw_line_f(canvas_t *canvas, float x0, float y0, float x1, float y1, float thickness,
-                        float intensity) {
-    tiny3d::line_style style;
-    style.cap = tiny3d::line_cap::round;
-    style.intensity = intensity;
-    tiny3d::draw_line_coverage(canvas, x0, y0, x1, y1, thickness, style);
-}
 
 #endif

@@ -9,180 +9,20 @@
 // and the images they write against hand-computed pixel values or against the same drawing
 // done through the primary (report) API. It also calls every global name with int and
 // double literals, so an overload that made such calls ambiguous would not compile.
-#include <sys/wait.h>
-#include <unistd.h>
-
+// The programs calling (or defining their own) save_canvas_pgm & co., the 7-argument
+// draw_line_f, create_cube, mat4_perspective and vec3_normalize are checked by
+// tests/compat_names_test.cpp; the helpers both use are in tests/compat_util.h.
 #include <array>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
-#include "harness.h"
-#include "tiny3d.h"
+#include "compat_util.h"
 
 namespace {
 
-namespace fs = std::filesystem;
-
-// ---- running a compat program ------------------------------------------------------------
-
-std::string build_dir() {
-    const char *b = std::getenv("BUILD");
-    return b && *b ? b : "build";
-}
-
-// A fresh empty folder for one program's files, removed when the test case ends.
-struct scratch_dir {
-    fs::path path;
-    scratch_dir() {
-        char tmpl[] = "/tmp/tiny3d_compat_XXXXXX";
-        const char *made = mkdtemp(tmpl);
-        path = made ? made : "";
-    }
-    ~scratch_dir() {
-        std::error_code ec;
-        if (!path.empty()) fs::remove_all(path, ec);
-    }
-    std::string file(const std::string &name) const { return (path / name).string(); }
-};
-
-struct program_run {
-    int exit_code = -1;
-    std::vector<std::string> lines;  // stdout, one entry per line
-};
-
-// Runs $BUILD/compat/<name> with the folder as its only argument; a program that is
-// missing or does not exit with 0 fails the test case.
-program_run run_program(const std::string &name, const scratch_dir &dir) {
-    program_run r;
-    const std::string exe = build_dir() + "/compat/" + name;
-    if (!CHECK_MSG(fs::exists(exe), "missing " + exe + ": build it with `make BUILD=" + build_dir() + " tests`"))
-        return r;
-    const std::string command = "'" + exe + "' '" + dir.path.string() + "'";
-    FILE *pipe = popen(command.c_str(), "r");
-    if (!CHECK_MSG(pipe != nullptr, "cannot run " + exe)) return r;
-    std::string line;
-    for (int ch; (ch = std::fgetc(pipe)) != EOF;) {
-        if (ch == '\n') {
-            r.lines.push_back(line);
-            line.clear();
-        } else {
-            line.push_back(char(ch));
-        }
-    }
-    if (!line.empty()) r.lines.push_back(line);
-    const int status = pclose(pipe);
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    CHECK_MSG(r.exit_code == 0, name + " exited with " + std::to_string(r.exit_code));
-    return r;
-}
-
-// The numbers of every line that starts with `key` (the key itself and "->" skipped).
-std::vector<std::vector<double>> numbers_after(const program_run &r, const std::string &key) {
-    std::vector<std::vector<double>> rows;
-    for (const std::string &line : r.lines) {
-        std::istringstream in(line);
-        std::string word;
-        if (!(in >> word) || word != key) continue;
-        std::vector<double> values;
-        while (in >> word) {
-            if (word == "->") continue;
-            char *end = nullptr;
-            const double v = std::strtod(word.c_str(), &end);
-            if (end != word.c_str() && *end == '\0') values.push_back(v);
-        }
-        rows.push_back(values);
-    }
-    return rows;
-}
-
-// The rows of numbers_after(r, key), each required to hold exactly `width` numbers (a
-// malformed row fails the test case and is dropped).
-std::vector<std::vector<double>> rows_of(const program_run &r, const std::string &key, std::size_t width) {
-    std::vector<std::vector<double>> rows;
-    for (std::vector<double> &v : numbers_after(r, key))
-        if (CHECK_MSG(v.size() == width, "'" + key + "' line with " + std::to_string(v.size()) + " numbers"))
-            rows.push_back(std::move(v));
-    return rows;
-}
-
-// The numbers of the one `key` line, which must hold exactly `width` numbers; empty (and the
-// test case failed) otherwise.
-std::vector<double> single_row(const program_run &r, const std::string &key, std::size_t width) {
-    std::vector<std::vector<double>> rows = rows_of(r, key, width);
-    if (!CHECK_MSG(rows.size() == 1, "expected one '" + key + "' line, got " + std::to_string(rows.size())))
-        return {};
-    return rows[0];
-}
-
-// ---- images ---------------------------------------------------------------------------------
-
-// 8-bit sample the PGM writer stores for an intensity: round(clamp(v, 0, 1)·255).
-int sample_of(float v) { return int(std::lround(std::fmin(std::fmax(double(v), 0.0), 1.0) * 255.0)); }
-
-// The samples of a PGM file (P2 or P5) via the library's reader; empty on failure.
-struct gray_image {
-    int width = 0, height = 0;
-    std::vector<int> samples;
-    int at(int x, int y) const { return samples[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
-};
-gray_image read_image(const std::string &path) {
-    gray_image img;
-    auto loaded = tiny3d::load_pgm(path);
-    if (!loaded) {
-        std::fprintf(stderr, "%s\n", loaded.message().c_str());
-        return img;
-    }
-    const canvas_t &c = **loaded;
-    img.width = c.width;
-    img.height = c.height;
-    for (int y = 0; y < c.height; ++y)
-        for (int x = 0; x < c.width; ++x) img.samples.push_back(sample_of(c.pixels[y][x]));
-    return img;
-}
-
-// Number of pixels where the file differs from the canvas quantised the same way.
-int differing_pixels(const gray_image &img, const canvas_t &expected) {
-    if (img.width != expected.width || img.height != expected.height) return -1;
-    int diff = 0;
-    for (int y = 0; y < img.height; ++y)
-        for (int x = 0; x < img.width; ++x) diff += img.at(x, y) != sample_of(expected.pixels[y][x]);
-    return diff;
-}
-
-std::string file_bytes(const std::string &path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-// ---- double-precision references ---------------------------------------------------------------
-
-struct dvec3 {
-    double x, y, z;
-};
-dvec3 operator+(dvec3 a, dvec3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-dvec3 operator-(dvec3 a, dvec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-dvec3 operator*(double s, dvec3 a) { return {s * a.x, s * a.y, s * a.z}; }
-double dot(dvec3 a, dvec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-dvec3 unit(dvec3 v) {
-    const double n = std::sqrt(dot(v, v));
-    return n > 0 ? (1.0 / n) * v : dvec3{0, 0, 0};
-}
-dvec3 row3(const std::vector<double> &v, std::size_t first) { return {v[first], v[first + 1], v[first + 2]}; }
-// v[first .. first+2] within `tolerance` of `expected`, componentwise.
-void check_near3(const std::vector<double> &v, std::size_t first, dvec3 expected, double tolerance) {
-    CHECK_NEAR(v[first], expected.x, tolerance);
-    CHECK_NEAR(v[first + 1], expected.y, tolerance);
-    CHECK_NEAR(v[first + 2], expected.z, tolerance);
-}
+using namespace compat_util;
 
 // Rotations (right-handed, radians) in double.
 dvec3 rotate_x(dvec3 p, double a) { return {p.x, p.y * std::cos(a) - p.z * std::sin(a), p.y * std::sin(a) + p.z * std::cos(a)}; }
@@ -202,11 +42,6 @@ dvec3 slerp_ref(dvec3 a, dvec3 b, double t) {
     if (theta < 1e-12) return ua;
     return (std::sin((1 - t) * theta) / std::sin(theta)) * ua + (std::sin(t * theta) / std::sin(theta)) * ub;
 }
-
-constexpr double kFloatTolerance = 2e-6;  // a few float roundings of O(1) values
-// The report's vec3_normalize_fast / vec3_slerp (Quake inverse sqrt) are documented to
-// 1.8e-3 relative error (math3d.h); they are what these programs call.
-constexpr double kQuakeTolerance = 3e-3;
 
 }  // namespace
 
@@ -423,6 +258,10 @@ TEST(own_helpers_program_compiles_and_reads_pixels_directly) {
     scratch_dir dir;
     const program_run r = run_program("own_helpers", dir);
     if (const auto v = single_row(r, "own_normalize", 6); !v.empty()) check_near3(v, 3, {0.6, 0.8, 0}, 1e-7);
+    // Its own normalize leaves vectors shorter than 1e-6 alone (the library's would give
+    // (1, 0, 0)), and its own save writes ASCII P2 (the library's: binary P5).
+    if (const auto v = single_row(r, "own_normalize_tiny", 3); !v.empty())
+        CHECK(float(v[0]) == 1e-7f && v[1] == 0 && v[2] == 0);  // %.9g round-trips a float
     CHECK(single_row(r, "own_cross", 9) == (std::vector<double>{1, 0, 0, 0, 1, 0, 0, 0, 1}));
     CHECK(single_row(r, "own_dot", 7) == (std::vector<double>{1, 2, 3, 4, 5, 6, 32}));
     CHECK(single_row(r, "own_add_scale", 3) == (std::vector<double>{2.5, 2, 1}));
@@ -432,6 +271,7 @@ TEST(own_helpers_program_compiles_and_reads_pixels_directly) {
     // The program's own P2 writer: set_pixel_f at a pixel centre (integer coordinates, the
     // report's convention) lands on that pixel only,
     // so row 3 holds (int)(x/15·255 + 0.5) and every other row 0.
+    CHECK(file_bytes(dir.file("own_helpers.pgm")).rfind("P2\n16 8\n255\n", 0) == 0);
     const gray_image img = read_image(dir.file("own_helpers.pgm"));
     CHECK_EQ(img.width, 16);
     CHECK_EQ(img.height, 8);
@@ -473,9 +313,12 @@ TEST(compat_header_program_matches_double_and_saves_identical_files) {
     CHECK(single_row(r, "update_spherical_unchanged", 1) == std::vector<double>{1});
     CHECK(single_row(r, "failed_save", 1) == std::vector<double>{-1});
 
-    // The four save names write the same bytes; the 7-argument line of intensity 0.5 covers
-    // row 10 (y in [10, 11)) completely from x = 1.5 to 30.5 (round caps of radius 0.5), so
-    // columns 2..29 hold 0.5 → 127.5 before rounding, rows 9 and 11 nothing.
+    // The four save names write the same bytes. The 7-argument line (2, 10)–(30, 10) of
+    // thickness 1 and intensity 0.5 is in the report's coordinates (pixel centres on
+    // integers): in the canvas's it runs along y = 10.5 from x = 2.5 to 30.5 with round caps
+    // of radius 0.5, covering row 10 (y in [10, 11)) completely from x = 2.5 to 30.5. So
+    // columns 3..29 hold 0.5 → 127.5 before rounding, the caps end at x = 2 and 31 (columns
+    // 0 and 31 stay empty), rows 9 and 11 get nothing.
     const auto saves = rows_of(r, "save", 1);
     CHECK_EQ(saves.size(), std::size_t(4));
     for (const auto &s : saves) CHECK(s == std::vector<double>{0});
@@ -487,7 +330,7 @@ TEST(compat_header_program_matches_double_and_saves_identical_files) {
     CHECK_EQ(img.width, 32);
     CHECK_EQ(img.height, 20);
     if (img.width != 32 || img.height != 20) return;
-    for (int x = 2; x <= 29; ++x) {
+    for (int x = 3; x <= 29; ++x) {
         CHECK(std::abs(2 * img.at(x, 10) - 255) <= 1);  // 127 or 128
         CHECK_EQ(img.at(x, 9), 0);
         CHECK_EQ(img.at(x, 11), 0);

@@ -1,9 +1,8 @@
 // compat/math_alias.h — other libtiny3d implementations' names for the math API.
 //
 // Included at the end of math3d.h (and self-contained). Thin inline aliases of the one
-// implementation in math3d.h; the alternates used by four or more of the surveyed
-// implementations (../shared/PEER_API.md). Rarer forms (out-parameter builders, pointer
-// forms) are opt-in in tiny3d_compat.h. documentation/compat.md has the full table.
+// implementation in math3d.h. Rarer forms (out-parameter builders, pointer forms) are
+// opt-in in tiny3d_compat.h. documentation/compat.md has the full table.
 //
 // Already in math3d.h itself: the pointer form vec3_normalize_fast(vec3_t *) and M_PI.
 #ifndef TINY3D_COMPAT_MATH_ALIAS_H
@@ -13,6 +12,7 @@
 #include <type_traits>
 
 #include "../math3d.h"
+#include "user_first.h"
 
 // The forms those programs rely on: plain aggregates (so (vec3_t){1, 2, 3}, {.x = 1} and
 // mat4_t m = {0} compile), x, y, z first, m[16] column-major, M_PI, the pointer normalise.
@@ -45,5 +45,29 @@ inline vec3_t mat4_transform_vec3(mat4_t m, vec3_t v) { return apply_transform(m
 // them here; ours computes the spherical form on demand (vec3_to_spherical), so this is
 // just {x, y, z}.
 inline vec3_t vec3_from_cartesian(float x, float y, float z) { return vec3_t{x, y, z}; }
+
+// ---- names programs also give their own functions (compat/user_first.h) ----------------
+// A program that defines or declares its own function of one of these names calls its own.
+
+// tiny3d::vec3_normalize (exact unit vector; zero or NaN input gives {0, 0, 0}) as a global
+// name, by value. Not the report's Quake vec3_normalize_fast. A template: a program's own
+// vec3_normalize(vec3_t) or (const vec3_t &) wins; with `using namespace tiny3d` the call
+// reaches tiny3d::vec3_normalize itself. Braced arguments work: vec3_normalize({3, 4, 0}),
+// vec3_normalize((vec3_t){3, 4, 0}).
+template <class = void>
+vec3_t vec3_normalize(vec3_t v) {
+    return tiny3d::vec3_normalize(v);
+}
+
+// tiny3d::mat4_perspective as a global name: gluPerspective, vertical field of view `fovy`
+// in RADIANS (0 < fovy < π), aspect = width / height > 0, 0 < near < far; bad arguments
+// give the identity (tiny3d::perspective_checked says why). fallback parameters: a
+// program's own mat4_perspective (float or double parameters, degrees or radians) is
+// always the better match, and tiny3d::mat4_perspective is with `using namespace tiny3d`.
+inline mat4_t mat4_perspective(tiny3d::compat::fallback<float> fovy, tiny3d::compat::fallback<float> aspect,
+                               tiny3d::compat::fallback<float> near_plane,
+                               tiny3d::compat::fallback<float> far_plane) {
+    return tiny3d::mat4_perspective(fovy.value, aspect.value, near_plane.value, far_plane.value);
+}
 
 #endif

@@ -289,30 +289,53 @@ mesh make_soccer_ball(float radius) {
 
 }  // namespace tiny3d
 
-int generate_soccer_ball(vec3_t **vertices, int *vertex_count, int (**edges)[2], int *edge_count) {
+namespace {
+
+// Edge i as two ints: the report's int[2] pairs, or a flat array of 2 ints per edge.
+void put_edge(int (*pairs)[2], std::size_t i, int a, int b) {
+    pairs[i][0] = a;
+    pairs[i][1] = b;
+}
+void put_edge(int *flat, std::size_t i, int a, int b) {
+    flat[2 * i] = a;
+    flat[2 * i + 1] = b;
+}
+
+// m's positions and edges copied into malloc'd C arrays (EdgeStore: int[2] or int, see
+// put_edge). Every given output is set to null / 0 first; false when a pointer is null or
+// memory runs out (nothing is left allocated then).
+template <class EdgeStore>
+bool copy_to_c_arrays(const tiny3d::mesh &m, vec3_t **vertices, int *vertex_count, EdgeStore **edges,
+                      int *edge_count) {
     if (vertices) *vertices = nullptr;
     if (edges) *edges = nullptr;
     if (vertex_count) *vertex_count = 0;
     if (edge_count) *edge_count = 0;
-    if (!vertices || !vertex_count || !edges || !edge_count) return 0;
-    const tiny3d::mesh ball = tiny3d::make_soccer_ball(1.0f);
-    auto *v = static_cast<vec3_t *>(std::malloc(ball.positions.size() * sizeof(vec3_t)));
-    auto *e = static_cast<int(*)[2]>(std::malloc(ball.edges.size() * sizeof(int[2])));
+    if (!vertices || !vertex_count || !edges || !edge_count) return false;
+    auto *v = static_cast<vec3_t *>(std::malloc(m.positions.size() * sizeof(vec3_t)));
+    auto *e = static_cast<EdgeStore *>(std::malloc(m.edges.size() * 2 * sizeof(int)));
     if (!v || !e) {
         std::free(v);
         std::free(e);
-        return 0;
+        return false;
     }
-    std::copy(ball.positions.begin(), ball.positions.end(), v);
-    for (std::size_t i = 0; i < ball.edges.size(); ++i) {
-        e[i][0] = int(ball.edges[i].a);
-        e[i][1] = int(ball.edges[i].b);
-    }
+    std::copy(m.positions.begin(), m.positions.end(), v);
+    for (std::size_t i = 0; i < m.edges.size(); ++i) put_edge(e, i, int(m.edges[i].a), int(m.edges[i].b));
     *vertices = v;
     *edges = e;
-    *vertex_count = int(ball.positions.size());
-    *edge_count = int(ball.edges.size());
-    return 1;
+    *vertex_count = int(m.positions.size());
+    *edge_count = int(m.edges.size());
+    return true;
+}
+
+}  // namespace
+
+bool tiny3d::make_cube_arrays(vec3_t **vertices, int **edge_indices, int *vertex_count, int *edge_count) {
+    return copy_to_c_arrays(make_cube(1.0f), vertices, vertex_count, edge_indices, edge_count);
+}
+
+int generate_soccer_ball(vec3_t **vertices, int *vertex_count, int (**edges)[2], int *edge_count) {
+    return copy_to_c_arrays(tiny3d::make_soccer_ball(1.0f), vertices, vertex_count, edges, edge_count) ? 1 : 0;
 }
 
 void free_soccer_ball(vec3_t *vertices, int (*edges)[2]) {

@@ -1,7 +1,8 @@
 /* compat_header.c — a user program written against the rarer forms, with the opt-in
  * tiny3d_compat.h: out-parameter matrix builders, pointer forms of the matrix product and
- * slerp, mat4_frustum, vec3_create, vec3_update_spherical, draw_line_f with a 7th intensity
- * argument, and the four other names of the PGM save.
+ * slerp, mat4_frustum, vec3_create, vec3_update_spherical; and, with it included, the
+ * normal headers' draw_line_f with a 7th intensity argument and the four other names of
+ * the PGM save (taken as function pointers).
  * usage: compat_header OUTDIR   (writes OUTDIR/compat_<name>.pgm for each save name) */
 #include <stdio.h>
 
@@ -45,10 +46,11 @@ int main(int argc, char **argv) {
     printf("slerp_mid -> %.9g %.9g %.9g\n", mid.x, mid.y, mid.z);
     printf("update_spherical_unchanged %d\n", before.x == mid.x && before.y == mid.y && before.z == mid.z);
 
-    /* a horizontal line of intensity 0.5 along row 10 (y = 10.5 is its centre line) */
+    /* a horizontal line of intensity 0.5 along row 10 (integer coordinates are pixel
+     * centres, as for the six-argument draw_line_f) */
     canvas_t *canvas = canvas_create(32, 20);
     if (!canvas) return 1;
-    draw_line_f(canvas, 2, 10.5, 30, 10.5, 1, 0.5);
+    draw_line_f(canvas, 2, 10, 30, 10, 1, 0.5);
 
     const char *names[4] = {"save_canvas_as_pgm", "canvas_save_to_pgm", "save_canvas_pgm", "save_canvas_to_pgm"};
     int (*savers[4])(const canvas_t *, const char *) = {save_canvas_as_pgm, canvas_save_to_pgm, save_canvas_pgm,

@@ -2,7 +2,9 @@
  * implementations export (vec3_normalize, vec3_dot, vec3_cross, vec3_add, vec3_scale,
  * clamp01, save_canvas_as_pgm), as the report's demo/generate_soccer.c does with
  * `static vec3_t vec3_normalize(vec3_t)`. It must compile against the normal headers (all
- * of them, through tiny3d.h): those names are only in the opt-in tiny3d_compat.h.
+ * of them, through tiny3d.h) and call its own: vec3_dot & co. are only in the opt-in
+ * tiny3d_compat.h, and the normal headers' vec3_normalize and save_canvas_as_pgm step aside
+ * for a program's own (include/compat/user_first.h).
  * Its own PGM writer reads canvas->pixels[y][x] directly, as many programs do.
  * usage: own_helpers OUTDIR   (writes OUTDIR/own_helpers.pgm, ASCII P2) */
 #include <math.h>
@@ -43,6 +45,8 @@ int main(int argc, char **argv) {
     const char *dir = argc > 1 ? argv[1] : ".";
     vec3_t n = vec3_normalize((vec3_t){3, 4, 0});
     printf("own_normalize 3 4 0 -> %.9g %.9g %.9g\n", n.x, n.y, n.z);
+    vec3_t tiny = vec3_normalize((vec3_t){1e-7f, 0, 0}); /* left as is by ours, not the library's */
+    printf("own_normalize_tiny -> %.9g %.9g %.9g\n", tiny.x, tiny.y, tiny.z);
     vec3_t c = vec3_cross((vec3_t){1, 0, 0}, (vec3_t){0, 1, 0});
     printf("own_cross 1 0 0 0 1 0 -> %.9g %.9g %.9g\n", c.x, c.y, c.z);
     printf("own_dot 1 2 3 4 5 6 -> %.9g\n", vec3_dot((vec3_t){1, 2, 3}, (vec3_t){4, 5, 6}));
