@@ -322,3 +322,21 @@ TEST(a_nearer_layer_wins_and_a_farther_one_loses_under_less) {
             check_set(pixels_equal_to(*img, 0.75f), block(30, 30, 39, 35), "far part outside the near square");
         }
 }
+
+TEST(segment_clipping_against_each_side_plane_cuts_where_that_coordinate_reaches_w) {
+    // From the centre (0, 0, 0, 1) to a point beyond one side plane only; the cut is where
+    // that coordinate alone reaches ±w: t = 1/3 for 3, t = 1/4 for −4 (the others stay 0.5,
+    // so a plane testing the wrong coordinate would not cut at all).
+    struct side {
+        vec4_t end;
+        double t1;
+    } sides[] = {{{3.0f, 0.5f, 0.0f, 1.0f}, 1.0 / 3}, {{-4.0f, 0.5f, 0.0f, 1.0f}, 0.25},
+                 {{0.5f, 3.0f, 0.0f, 1.0f}, 1.0 / 3}, {{0.5f, -4.0f, 0.0f, 1.0f}, 0.25},
+                 {{0.5f, 0.5f, 3.0f, 1.0f}, 1.0 / 3}, {{0.5f, 0.5f, -4.0f, 1.0f}, 0.25}};
+    for (const side &s : sides) {
+        const segment_clip c = clip_segment({0.0f, 0.0f, 0.0f, 1.0f}, s.end);
+        CHECK(c.visible);
+        CHECK_NEAR(c.t0, 0.0, 1e-12);
+        CHECK_NEAR(c.t1, s.t1, 1e-9);
+    }
+}
