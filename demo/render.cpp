@@ -202,7 +202,7 @@ int main(int argc, char **argv) {
     cli.add_samples(tiny3d::sample_count::x4);
     cli.choice("--mode", s.mode, {"flat", "gouraud", "phong", "wireframe", "hidden-line"},
                "shading (default phong: per-pixel normals), or edges: wireframe draws every edge, hidden-line "
-               "leaves out the edges whose faces all face away (exact for convex meshes)");
+               "draws only the edges the mesh's own surface does not hide (back-facing and depth-tested)");
     cli.text("--texture", "FILE.pgm", s.texture_path,
              "multiply the shading by a grey PGM texture (the mesh needs texture coordinates)");
     cli.choice("--lines", s.lines, {"coverage", "tabulated", "faithful"},
@@ -281,10 +281,13 @@ int main(int argc, char **argv) {
     wire.depth_cue = true;
     wire.depth_cue_far = kFarInk;
     wire.bounds = &bounds;
-    // hidden-line: back-facing edges left out; hook for the depth-tested wireframe.
+    // hidden-line: back-facing edges left out, and every other edge depth-tested against the
+    // mesh's own filled depth (drawn first, its colour cleared), so edges behind the surface
+    // are hidden on concave meshes too.
     const tiny3d::edge_adjacency adjacency = s.mode == "hidden-line" ? tiny3d::mesh_edge_faces(m) : tiny3d::edge_adjacency{};
     wire.hide_back_edges = s.mode == "hidden-line";
     wire.adjacency = wire.hide_back_edges ? &adjacency : nullptr;
+    wire.depth_test = wire.hide_back_edges ? &ctx.depth() : nullptr;
     tiny3d::wireframe_workspace workspace;
 
     if (tiny3d::status st = demo::prepare_out_dir(o); !st) return cli.fail(st.message());
@@ -294,6 +297,12 @@ int main(int argc, char **argv) {
         const mat4_t model = mat4_multiply(tiny3d::mat4_rotate_axis(s.up, angle), *fit);
         timer.start();
         if (edges_only) {
+            if (s.mode == "hidden-line") {  // the surface's depth only: its colour is cleared below
+                if (tiny3d::status st = ctx.begin_frame(**canvas, kBackground); !st) return cli.fail(st.message());
+                params.model = model;
+                ctx.draw(*shape, params);
+                ctx.end_frame();
+            }
             canvas_clear(canvas->get(), kBackground);
             if (tiny3d::status st = tiny3d::render_wireframe(**canvas, m, mat4_multiply(view_projection, model), wire,
                                                              workspace);

@@ -204,6 +204,31 @@ TEST(hidden_line_leaves_out_the_back_face_that_wireframe_draws) {
     CHECK(std::max(hidden.at(104, 80), hidden.at(105, 80)) > 100);  // the front face's edge
 }
 
+TEST(hidden_line_hides_front_facing_edges_behind_the_surface) {
+    if (!render_built()) return;
+    // A big quad (z = 0, side 2) in front of a small one (z = −2, side 0.6), both facing the
+    // eye at z = 10: the small quad's edges face the eye, so only the depth test hides them.
+    // Its right edge (x = 0.3 at distance 12) projects to column (1 + (0.3/12)/tan 20°)/2 · 160
+    // = 85.5, the big quad's (x = 1 at distance 10) to 102.0; row 80 is the middle.
+    temp_dir dir;
+    const fs::path obj = dir.path / "two_quads.obj";
+    write_file(obj, "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
+                    "v -0.3 -0.3 -2\nv 0.3 -0.3 -2\nv 0.3 0.3 -2\nv -0.3 0.3 -2\n"
+                    "f 1 2 3 4\nf 5 6 7 8\n");
+    const std::vector<std::string> view = {obj.string(), "--eye", "0,0,10", "--target", "0,0,-1",
+                                           "--turntable", "1", "--size", "160x160"};
+    temp_dir wire_dir, hidden_dir;
+    CHECK_EQ(render(wire_dir, with(view, {"--mode", "wireframe"})).exit_code, 0);
+    CHECK_EQ(render(hidden_dir, with(view, {"--mode", "hidden-line"})).exit_code, 0);
+    const pgm_image wire = frame(wire_dir, "frame_000.pgm"), hidden = frame(hidden_dir, "frame_000.pgm");
+    CHECK(wire.width == 160 && hidden.width == 160);
+    if (wire.width != 160 || hidden.width != 160) return;
+    CHECK(std::max(wire.at(85, 80), wire.at(86, 80)) > 40);  // the far quad's edge, drawn
+    CHECK_EQ(int(hidden.at(85, 80)), background);             // ... hidden behind the near quad
+    CHECK_EQ(int(hidden.at(86, 80)), background);
+    CHECK(std::max(hidden.at(101, 80), hidden.at(102, 80)) > 100);  // the near quad's edge
+}
+
 TEST(info_prints_counts_bounds_and_warnings_and_renders_nothing) {
     if (!render_built()) return;
     temp_dir dir;
