@@ -148,8 +148,7 @@ struct line_style {
 // Drawing (x1, y1)→(x0, y0) gives the bit-identical image (the ends are put in a
 // canonical order first). thickness ≤ 0, NaN or ±inf anywhere draws nothing; a
 // zero-length segment with round caps is a disc (butt: nothing). Cost grows with the
-// length plus a fixed part per end: ~9.7 ns per px of length at T = 1.5 on 5–300 px lines,
-// ~0.3 µs per end (tests/bench/lines.cpp, documentation/benchmarks.md).
+// length plus a fixed part per end (figures in documentation/benchmarks.md).
 void draw_line_coverage(canvas_t *canvas, float x0, float y0, float x1, float y1, float thickness,
                         const line_style &style = {});
 
@@ -181,8 +180,10 @@ struct cache_line_allocator {
     bool operator==(const cache_line_allocator<U> &) const { return true; }
 };
 
-// The instruction sets draw_line_tabulated can use; each gives the same image to ~1e-6
-// (tests/line_tabulated_test.cpp checks every one this CPU runs against the reference).
+// The instruction sets draw_line_tabulated can use. SSE2 gives the portable path's image to
+// 1e-6 per pixel, AVX-512 to 0.004 (it locates the ends in float; the bounds
+// tests/line_tabulated_test.cpp checks for every path this CPU runs, each also against the
+// reference).
 enum class line_simd {
     portable,  // plain C++, one pixel at a time
     sse2,      // 4 pixels at a time (every x86-64 CPU)
@@ -200,7 +201,7 @@ line_simd best_line_simd();
 // positions within their pixel in steps of 1/24 px per axis; a drawn end blends 8 of them
 // (bilinear in position, linear in direction). Float: 1.35 MB up to thickness 1.75,
 // 5.4 MB beyond; building it evaluates the reference ~690,000 times up to 1.75, ~2.1 M at
-// 4 (measured 77 ms at 1.5, 234 ms at 4): make it once per thickness and keep it (render_wireframe keeps them in
+// 4 (tens to hundreds of ms): make it once per thickness and keep it (render_wireframe keeps them in
 // its workspace). From about 5.35 px (up to kMaxThickness) the table is empty and
 // draw_line_tabulated draws with the exact line.
 class line_table {
@@ -244,10 +245,7 @@ private:
 // with SSE2, or one at a time: table.simd(). Error against line_coverage_reference over
 // random segments (1–40 px, every angle, thickness 0.5–3, round and butt): mean
 // 4e-5–9e-5, max 0.003–0.013 (tests/line_tabulated_test.cpp bounds: mean ≤ 2e-4, max ≤
-// 0.015). Speed per
-// 6.4-px segment at T = 1.5 (random places on a 1024² canvas, this 2-core AMD EPYC):
-// ≈ 128 ns with AVX-512, ≈ 205 ns with SSE2, ≈ 600 ns portable (tests/bench/lines.cpp for
-// the length sweep). Drawing B→A gives the bit-identical image. Non-finite coordinates
+// 0.015; speeds in documentation/benchmarks.md). Drawing B→A gives the bit-identical image. Non-finite coordinates
 // draw nothing; ends far off the canvas are clipped first (the stroke continues, no cap
 // there).
 void draw_line_tabulated(canvas_t *canvas, float x0, float y0, float x1, float y1, const line_table &table,

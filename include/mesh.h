@@ -145,7 +145,7 @@ status mesh_validate(const mesh &m);
 // per-corner uvs (each face maps the unit square, u along the face's first edge).
 mesh make_cube(float half_side = 1.0f);
 
-// The unit icosphere exactly as shared/BENCH_SCENE.md defines it: the regular icosahedron
+// The unit icosphere of Scene S (documentation/benchmarks.md): the regular icosahedron
 // (the 12 cyclic permutations of (±1, ±t, 0), t = (1+√5)/2, normalised), each triangle split
 // into 4 by its edge midpoints `level` times, midpoints pushed onto the unit sphere and
 // shared. level 0: 12 v / 20 t / 30 e; level L: 10·4^L + 2 v, 20·4^L t, 30·4^L e (level 5:

@@ -193,7 +193,7 @@ enum class line_method {
     tabulated, // tiny3d::draw_lines_tabulated: the same stroke and combine, the pixels near
                // each end corrected from a line_table of exact end corrections (max error
                // ≤ 0.015, mean ~5e-5 per line); the workspace builds the
-               // table once per thickness (~80 ms at 1.5 px) and keeps the last few
+               // table once per thickness (an expensive step) and keeps the last few
 };
 
 struct wireframe_options {

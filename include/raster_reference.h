@@ -33,7 +33,7 @@ struct reference_draw {
 inline constexpr int REFERENCE_SAMPLES_PER_AXIS = 16;  // 256 samples per pixel
 
 // Clears `target` to clear_intensity (depth to 1) and draws `draws` in order. Slow by design
-// (~1e2 ns per sample) and allocating (a band of sample buffers); for tests and benchmarks.
+// (every sample shaded in double) and allocating (a band of sample buffers); for tests and benchmarks.
 // Errors: canvas without pixels, samples_per_axis outside 1..64, a null mesh, a mesh whose
 // normals or uvs count differs from its positions, a triangle index out of range, a
 // translucent draw (alpha < 1: not supported).

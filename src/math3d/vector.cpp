@@ -1,6 +1,6 @@
 // vector.cpp — lengths, the three normalisations, the spherical form.
 //
-// Normalisation variants, measured by tests/bench/normalize (AMD EPYC, g++ 12 -O2, one
+// Normalisation variants, measured by tests/bench/normalize (x86-64, g++ 12 -O2, one
 // out-of-line call per vector over 4096 vectors of scale 2^±20, medians of 31 runs, three
 // runs on a shared machine; error = max over components of |computed − exact unit
 // vector|, i.e. relative to the length, over 10⁶ vectors):

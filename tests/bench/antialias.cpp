@@ -1,5 +1,5 @@
 // antialias.cpp — anti-aliased filled rendering against the converged image: Scene S
-// (BENCH_SCENE protocol: 1024², camera (0, 0, 3), fov 45°, Gouraud Lambert, depth LESS,
+// (Scene S protocol, documentation/benchmarks.md: 1024², camera (0, 0, 3), fov 45°, Gouraud Lambert, depth LESS,
 // back-face culling, mesh turned 1° about +y per frame, 5 warm-up + 50 timed frames) at
 // icosphere level 6 and the 3,696-triangle torus knot, rows 1x, 4x, 8x, 16x (samples per
 // pixel) with one and two threads; and a textured plane at a grazing angle, bilinear

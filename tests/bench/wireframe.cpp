@@ -1,4 +1,4 @@
-// wireframe.cpp — Scene S's wireframe variant (shared/BENCH_SCENE.md: the 122,880 unique
+// wireframe.cpp — Scene S's wireframe variant (documentation/benchmarks.md: the 122,880 unique
 // edges of the level-6 icosphere, anti-aliased width 1.5, 1024², colour cleared per frame,
 // no depth test; camera at (0, 0, 3), fov 45°, mesh turned 1° about +y per frame) and the
 // soccer ball (90 edges, 1024²), each drawn with
@@ -13,7 +13,7 @@
 //              clipped and listed but no line is drawn: the cost of this module alone,
 // Time = ms (Scene S) or µs (soccer ball) per frame: clear + transform + clip + lines;
 // median (min–max) of 5 frames after one warm-up, or for the tabulated line and the
-// pipeline alone BENCH_SCENE's protocol: 5 warm-up frames, then 50 timed.
+// pipeline alone Scene S's protocol: 5 warm-up frames, then 50 timed.
 // Error = |pixel − reference| over the pixels either image inks (mean and max).
 #include <algorithm>
 #include <cmath>
