@@ -16,6 +16,7 @@
 #ifndef TINY3D_FUZZ_CHECKS_H
 #define TINY3D_FUZZ_CHECKS_H
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <string>
@@ -79,8 +80,16 @@ inline std::string check_renders(const tiny3d::mesh &m) {
     // units in front of the camera. What it refuses must be a real limit, said in words.
     const tiny3d::result<mat4_t> fit = tiny3d::mat4_fit_unit_sphere(bounds);
     if (!fit) {
-        const bool beyond_float = std::isinf(bounds.radius) || (bounds.radius > 0.0f && bounds.radius < 3e-39f);
-        if (bounds.radius == 0.0f || beyond_float) return {};  // nothing or nothing frameable to draw
+        // Refusals that are real limits: no finite position (radius < 0 or NaN), one point
+        // (radius 0), an extent beyond float, or a map (p − c)/r whose scale 1/r or offset
+        // c/r is not a float (a tiny mesh far from the origin). Computed here in double.
+        const double r = bounds.radius, far = std::max({std::fabs(double(bounds.center.x)),
+                                                        std::fabs(double(bounds.center.y)),
+                                                        std::fabs(double(bounds.center.z))});
+        constexpr double float_max = 3.4028234663852886e38;
+        const bool unframeable = !(r > 0.0) || std::isinf(r) || !std::isfinite(far) || 1.0 / r > float_max ||
+                                 far / r > float_max;
+        if (unframeable) return {};
         return "mat4_fit_unit_sphere refused a finite sphere of radius " + std::to_string(bounds.radius) + ": " +
                fit.message();
     }
