@@ -93,6 +93,10 @@ inline std::string check_renders(const tiny3d::mesh &m) {
         return "mat4_fit_unit_sphere refused a finite sphere of radius " + std::to_string(bounds.radius) + ": " +
                fit.message();
     }
+    // A scale 1/r within 64× of FLT_MAX is a float, but projection · model then overflows
+    // (the projection's entries reach ~2–20): such a mesh (< ~2e-37 across) cannot be drawn
+    // framed in float, a limit of the float pipeline, not a silent failure to catch here.
+    if (1.0 / double(bounds.radius) > 3.4028234663852886e38 / 64) return {};
     tiny3d::result<tiny3d::raster_mesh> rm = tiny3d::make_raster_mesh(m, tiny3d::mesh_vertex_normals(m));
     if (!rm) return "make_raster_mesh rejected a valid mesh: " + rm.message();
     tiny3d::result<tiny3d::canvas_ptr> canvas = tiny3d::make_canvas(RENDER_SIDE, RENDER_SIDE);
@@ -104,10 +108,13 @@ inline std::string check_renders(const tiny3d::mesh &m) {
     const mat4_t projection = tiny3d::mat4_perspective(1.0f, 1.0f, 0.5f, 10.0f);
     // Wireframes: framed, and raw (the file's own coordinates, however far or huge: clipped).
     tiny3d::wireframe_workspace ws;
-    bool has_long_edge = false;  // an edge whose ends are different points
+    // An edge that must show when framed: at least 1/1000 of the bounding radius long (in
+    // double), so float rounding of the framed ends cannot collapse it to a point.
+    bool has_long_edge = false;
     for (const tiny3d::edge &e : m.edges) {
         const vec3_t a = m.positions[e.a], b = m.positions[e.b];
-        has_long_edge = has_long_edge || a.x != b.x || a.y != b.y || a.z != b.z;
+        const double dx = double(a.x) - b.x, dy = double(a.y) - b.y, dz = double(a.z) - b.z;
+        has_long_edge = has_long_edge || std::sqrt(dx * dx + dy * dy + dz * dz) >= 1e-3 * double(bounds.radius);
     }
     for (const bool framed : {true, false})
         for (tiny3d::line_method method : {tiny3d::line_method::faithful, tiny3d::line_method::coverage}) {
