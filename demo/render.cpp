@@ -167,12 +167,6 @@ int print_info(const settings &s, const tiny3d::loaded_mesh &loaded) {
     return 0;
 }
 
-tiny3d::line_method line_method_named(const std::string &name) {
-    if (name == "tabulated") return tiny3d::line_method::tabulated;
-    if (name == "faithful") return tiny3d::line_method::faithful;
-    return tiny3d::line_method::coverage;
-}
-
 tiny3d::shading shading_named(const std::string &mode) {
     if (mode == "flat") return tiny3d::shading::flat;
     if (mode == "gouraud") return tiny3d::shading::gouraud;
@@ -276,7 +270,7 @@ int main(int argc, char **argv) {
     tiny3d::render_context ctx(o.threads);
 
     tiny3d::wireframe_options wire;
-    wire.method = line_method_named(s.lines);
+    wire.method = demo::line_method_named(s.lines);
     wire.thickness = kEdgeThickness;
     wire.depth_cue = true;
     wire.depth_cue_far = kFarInk;

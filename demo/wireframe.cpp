@@ -24,13 +24,6 @@ constexpr float kTilt = 0.45f;       // radians about x
 constexpr float kThickness = 1.2f;   // px
 constexpr float kFarInk = 0.35f;
 
-// The line drawer named on the command line (one of the --lines choices).
-tiny3d::line_method line_method_named(const std::string &name) {
-    if (name == "tabulated") return tiny3d::line_method::tabulated;
-    if (name == "faithful") return tiny3d::line_method::faithful;
-    return tiny3d::line_method::coverage;
-}
-
 }  // namespace
 
 int main(int argc, char **argv) {
@@ -45,7 +38,7 @@ int main(int argc, char **argv) {
                "the line: exact coverage (default), tabulated (faster, <= 0.015 off) or the report's draw_line_f");
     if (const int status = cli.parse(argc, argv); status >= 0) return status;
     const demo::common_options &o = cli.common;
-    const tiny3d::line_method method = line_method_named(lines);
+    const tiny3d::line_method method = demo::line_method_named(lines);
 
     auto loaded = tiny3d::load_mesh(path);
     if (!loaded) return cli.fail(loaded.message());

@@ -410,4 +410,10 @@ void progress::finish() {
                  1000.0 * s.max_s, frame_clock::fps(s.min_s), frame_clock::fps(s.median_s), frame_clock::fps(s.max_s));
 }
 
+tiny3d::line_method line_method_named(const std::string &name) {
+    if (name == "tabulated") return tiny3d::line_method::tabulated;
+    if (name == "faithful") return tiny3d::line_method::faithful;
+    return tiny3d::line_method::coverage;
+}
+
 }  // namespace demo

@@ -31,6 +31,7 @@
 #include "animation.h"
 #include "canvas.h"
 #include "math3d.h"
+#include "pipeline.h"
 #include "raster.h"
 #include "tiny3d_result.h"
 
@@ -168,6 +169,10 @@ private:
     double began_s_, frame_began_s_ = 0.0;
     tiny3d::frame_clock clock_;
 };
+
+// The line drawer named by a --lines choice: "tabulated", "faithful", anything else the
+// exact coverage line (the parser has already restricted the value to the choices).
+tiny3d::line_method line_method_named(const std::string &name);
 
 }  // namespace demo
 
