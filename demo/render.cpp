@@ -224,25 +224,22 @@ int main(int argc, char **argv) {
     if (!loaded) return cli.fail(loaded.message());
     if (s.info) return print_info(s, *loaded);
     for (const tiny3d::load_warning &w : loaded->warnings) std::fprintf(stderr, "render: warning: %s\n", w.message().c_str());
-    const tiny3d::mesh &m = loaded->geometry;
+    tiny3d::mesh &m = loaded->geometry;
     if (m.face_count() == 0 && !m.edges.empty() && s.mode != "wireframe") {
         std::fprintf(stderr, "render: %s has lines but no faces: drawing them as a wireframe\n", s.path.c_str());
         s.mode = "wireframe";
     }
     const bool edges_only = s.mode == "wireframe" || s.mode == "hidden-line";
 
-    const tiny3d::bounding_sphere bounds = tiny3d::mesh_bounding_sphere(m);
-    if (!(bounds.radius > 0.0f) || (edges_only ? m.edges.empty() : m.face_count() == 0))
-        return cli.fail(s.path + ": nothing to draw (no " + (edges_only ? "edges" : "faces") + " of non-zero size)");
-    // The camera works on the mesh mapped onto the unit sphere (scale and offset in double),
+    if (edges_only ? m.edges.empty() : m.face_count() == 0)
+        return cli.fail(s.path + ": nothing to draw (no " + (edges_only ? "edges" : "faces") + ")");
+    // The camera works on the mesh mapped onto the unit sphere in double (positions rewritten),
     // so meshes of any size frame alike; positions given on the command line map with it.
-    const tiny3d::result<mat4_t> fit = tiny3d::mat4_fit_unit_sphere(bounds);
+    const tiny3d::result<tiny3d::unit_sphere_map> fit = tiny3d::mesh_fit_unit_sphere(m);
     if (!fit) return cli.fail(s.path + ": " + fit.message());
+    const tiny3d::bounding_sphere bounds = tiny3d::mesh_bounding_sphere(m);
     settings unit_view = s;
-    for (vec3_t *p : {&unit_view.eye, &unit_view.target}) {
-        const vec4_t q = mat4_mul_vec4(*fit, {p->x, p->y, p->z, 1.0f});
-        *p = {q.x, q.y, q.z};
-    }
+    for (vec3_t *p : {&unit_view.eye, &unit_view.target}) *p = fit->apply(*p);
     tiny3d::texture tex;
     if (!s.texture_path.empty()) {
         if (m.corner_uvs.empty()) return cli.fail(s.path + ": no texture coordinates, which --texture needs");
@@ -288,7 +285,7 @@ int main(int argc, char **argv) {
     demo::progress timer("render", o.frames_to_render());
     for (int frame = o.first_frame; frame <= o.last_frame; ++frame) {
         const float angle = float(2.0 * kPi * frame / s.turntable);
-        const mat4_t model = mat4_multiply(tiny3d::mat4_rotate_axis(s.up, angle), *fit);
+        const mat4_t model = tiny3d::mat4_rotate_axis(s.up, angle);
         timer.start();
         if (edges_only) {
             if (s.mode == "hidden-line") {  // the surface's depth only: its colour is cleared below

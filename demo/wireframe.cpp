@@ -42,9 +42,8 @@ int main(int argc, char **argv) {
 
     auto loaded = tiny3d::load_mesh(path);
     if (!loaded) return cli.fail(loaded.message());
-    const tiny3d::mesh &m = *loaded;
-    const tiny3d::bounding_sphere bounds = tiny3d::mesh_bounding_sphere(m);
-    const tiny3d::result<mat4_t> fit = tiny3d::mat4_fit_unit_sphere(bounds);  // any size, in double
+    tiny3d::mesh &m = *loaded;
+    const tiny3d::result<tiny3d::unit_sphere_map> fit = tiny3d::mesh_fit_unit_sphere(m);  // any size, in double
     if (m.edges.empty() || !fit)
         return cli.fail(path + ": " + (m.edges.empty() ? "the mesh has no edges to draw" : fit.message()));
     auto canvas = tiny3d::make_canvas(o.width, o.height);
@@ -69,7 +68,7 @@ int main(int argc, char **argv) {
         canvas_clear(canvas->get(), 0.0f);
         const float angle = float(2.0 * M_PI * frame / kFrames);
         const mat4_t turn = mat4_multiply(mat4_rotate_xyz(kTilt, 0, 0), tiny3d::mat4_rotate_y(angle));
-        const mat4_t model = mat4_multiply(mat4_translate(0, 0, -distance), mat4_multiply(turn, *fit));
+        const mat4_t model = mat4_multiply(mat4_translate(0, 0, -distance), turn);
         tiny3d::wireframe_stats stats;
         if (tiny3d::status s = tiny3d::render_wireframe(**canvas, m, mat4_multiply(proj, model), options, workspace,
                                                         &stats); !s)

@@ -129,6 +129,26 @@ bounding_sphere bounding_sphere_of(std::span<const vec3_t> positions);
 // 2e-40: too small to frame"), or a centre so far off that c/r overflows.
 result<mat4_t> mat4_fit_unit_sphere(const bounding_sphere &s);
 
+// The similarity p' = (p − c) / r, kept in double, that maps a mesh's bounding sphere (centre
+// c = the box centre, as mesh_bounding_sphere; r = the largest distance to it, unrounded)
+// onto the unit sphere at the origin. apply() evaluates it in double and rounds once, so the
+// mapped positions are as exact as floats allow for a mesh of any extent — from denormal
+// spacing up to ±FLT_MAX — where a float matrix (mat4_fit_unit_sphere) meets its limits.
+struct unit_sphere_map {
+    vec3_t center{0.0f, 0.0f, 0.0f};
+    double inv_radius = 1.0;  // 1 / r
+    vec3_t apply(vec3_t p) const;  // (p − c) / r; non-finite input gives non-finite output
+};
+// The map of the finite positions (non-finite ones are skipped). Errors, in words: no finite
+// position ("nothing to frame: no finite position"), or all of them one point. Never fails
+// for two or more distinct finite positions.
+result<unit_sphere_map> unit_sphere_map_of(std::span<const vec3_t> positions);
+// Frames a mesh in double: rewrites every finite position p of m as map.apply(p) and returns
+// the map (apply it to eye or target points given in the file's coordinates). Normals and
+// texture coordinates are unchanged (a uniform scale and a shift keep directions). Same
+// errors as unit_sphere_map_of; on error m is unchanged.
+result<unit_sphere_map> mesh_fit_unit_sphere(mesh &m);
+
 // Checks the mesh's invariants: face_start starts at 0, is non-decreasing and ends at
 // indices.size(); every face has ≥ 3 corners; every index < positions.size(); corner
 // attribute arrays are empty or one per corner; every edge and line index in range. The error says

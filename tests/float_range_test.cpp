@@ -1,8 +1,8 @@
 // float_range_test.cpp — sizes computed from coordinates over the whole float range:
 // bounding spheres, the framing matrix, face and vertex normals at 1e-38, 1e38 and mixed
 // scales; a framed mesh draws the same image at every scale (wireframe with frustum
-// culling, filled), and the wireframe program frames the 1e19 / 1e38 triangles and
-// refuses what it cannot frame instead of writing a blank frame.
+// culling, filled); framing in double reaches what the float matrix cannot, and the programs
+// frame the 1e19 / 1e38 triangles and any other extent instead of writing a blank frame.
 //
 // References: the same quantities recomputed in long double, and the image of the same mesh
 // at scale 1 (a power-of-two scale changes every float operation by an exact factor, so the
@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -200,6 +201,59 @@ TEST(framing_errors_say_why) {
     CHECK_EQ(double(m.m[15]), 1.0);
 }
 
+// Framing in double (mesh_fit_unit_sphere) where the float matrix cannot: a mesh ~2e-37
+// across (1/r is a float but projection · model overflows), one beyond FLT_MAX, and one of
+// denormals. Reference: (p − c)/r in long double.
+TEST(framing_in_double_reaches_the_whole_float_range) {
+    auto check_map = [](const mesh &before, const char *what) {
+        mesh m = before;
+        const result<unit_sphere_map> map = mesh_fit_unit_sphere(m);
+        CHECK_MSG(map.ok(), what);
+        if (!map) return m;
+        const bounding_sphere s = mesh_bounding_sphere(before);
+        const long double r = max_distance(before, s.center);
+        double farthest = 0;
+        for (std::size_t i = 0; i < m.positions.size(); ++i) {
+            const vec3_t p = before.positions[i], q = m.positions[i];
+            if (!std::isfinite(p.x)) continue;
+            CHECK_NEAR(double(q.x), double(((long double)p.x - s.center.x) / r), 1e-7);
+            CHECK_NEAR(double(q.y), double(((long double)p.y - s.center.y) / r), 1e-7);
+            farthest = std::max(farthest, std::sqrt(double(q.x) * q.x + double(q.y) * q.y + double(q.z) * q.z));
+        }
+        CHECK_MSG(std::fabs(farthest - 1.0) < 1e-6, std::string(what) + ": farthest " + std::to_string(farthest));
+        return m;
+    };
+    const mesh base = base_mesh();
+    mesh unit = base;
+    CHECK(mesh_fit_unit_sphere(unit).ok());
+    const canvas_ptr reference = framed_filled(unit, 0.0f, 1);
+    CHECK(inked(*reference) > 200);
+    // Tiny (2^-122 ≈ 1.9e-37) and huge (2^126): the same image as scale 1 to float rounding.
+    for (double scale : {std::ldexp(1.0, -122), std::ldexp(1.0, 126)}) {
+        const mesh m = check_map(scaled(base, scale), "scaled");
+        CHECK_MSG(max_difference(*framed_filled(m, 0.0f, 1), *reference) < 0.1, std::to_string(std::log2(scale)));
+    }
+    mesh wide;  // radius 5.2e38 > FLT_MAX: the float sphere is infinite, the map is not
+    wide.positions = {{3e38f, 3e38f, 3e38f}, {-3e38f, -3e38f, -3e38f}, {3e38f, -3e38f, 0}};
+    wide.add_face({0, 1, 2});
+    check_map(wide, "±3e38");
+    mesh denormal;  // the smallest float spacing
+    const float d = std::numeric_limits<float>::denorm_min();
+    denormal.positions = {{d, 0, 0}, {0, d, 0}, {0, 0, 0}, {NAN, 0, 0}};
+    denormal.add_face({0, 1, 2});
+    const mesh mapped = check_map(denormal, "denormals");
+    CHECK(std::isnan(mapped.positions[3].x));  // non-finite positions stay so
+    // What it refuses, in words; the mesh is then unchanged.
+    mesh point;
+    point.positions = {{1, 2, 3}, {1, 2, 3}, {1, 2, 3}};
+    const result<unit_sphere_map> one = mesh_fit_unit_sphere(point);
+    CHECK(!one && one.message().find("same point") != std::string::npos);
+    CHECK_EQ(double(point.positions[0].x), 1.0);
+    const vec3_t none[] = {{NAN, 0, 0}, {INFINITY, 0, 0}};
+    const result<unit_sphere_map> empty = unit_sphere_map_of(none);
+    CHECK(!empty && empty.message().find("no finite position") != std::string::npos);
+}
+
 TEST(raster_mesh_bounds_match_the_mesh_sphere) {
     for (double s : {1e-38, 1e19, 1e38}) {
         const mesh m = scaled(base_mesh(), s);
@@ -292,24 +346,33 @@ void check_program_at_scales(const std::string &program, const std::vector<std::
             worst = std::max(worst, std::abs(int(reference[i]) - int(img.pixels[i])));
         CHECK_MSG(worst <= 2, program + " " + s + ": differs from scale 1 by " + std::to_string(worst));
     }
-    // Beyond float (radius > FLT_MAX) and below 1/FLT_MAX: an error, exit 1, no frame.
-    const struct {
-        const char *a, *b, *says;
-    } refused[] = {{"3e38", "3e38", "too large to frame"}, {"1e-45", "0", "too small to frame"}};
-    for (const auto &c : refused) {
-        const pr::fs::path out = dir.path / (std::string("bad_") + c.a);
-        std::vector<std::string> args = {triangle(std::string("bad_") + c.a + ".obj", c.a, c.b), "--out",
-                                          out.string(), "--frames", "0:0", "--size", "48x48"};
+    // Beyond FLT_MAX across, and the smallest denormal spacing: framed in double, drawn.
+    for (const char *s : {"3e38", "1e-45"}) {
+        const pr::fs::path out = dir.path / (std::string("edge_") + s);
+        std::vector<std::string> args = {triangle(std::string("edge_") + s + ".obj", s, s), "--out", out.string(),
+                                          "--frames", "0:0", "--size", "48x48"};
         args.insert(args.end(), mode_args.begin(), mode_args.end());
         const pr::run_result r = pr::run(pr::demo_path(program), args, dir.path);
-        CHECK_EQ(r.exit_code, 1);
-        CHECK_MSG(r.err.find(c.says) != std::string::npos, r.err);
-        CHECK(pr::files_in(out).empty());
+        CHECK_MSG(r.exit_code == 0, program + " " + s + ": " + r.err);
+        const pr::pgm_image img = pr::parse_pgm(pr::file_bytes(out / "frame_000.pgm"));
+        const unsigned char background = img.pixels.empty() ? 0 : img.pixels[0];
+        const long lit =
+            std::count_if(img.pixels.begin(), img.pixels.end(), [&](unsigned char v) { return v != background; });
+        CHECK_MSG(lit > 60, program + " " + s + ": " + std::to_string(lit) + " pixels lit");
     }
+    // Every vertex the same point: an error, exit 1, no frame.
+    const pr::fs::path out = dir.path / "bad_point";
+    std::vector<std::string> args = {triangle("bad_point.obj", "0", "0"), "--out", out.string(), "--frames", "0:0",
+                                      "--size", "48x48"};
+    args.insert(args.end(), mode_args.begin(), mode_args.end());
+    const pr::run_result r = pr::run(pr::demo_path(program), args, dir.path);
+    CHECK_EQ(r.exit_code, 1);
+    CHECK_MSG(r.err.find("same point") != std::string::npos, r.err);
+    CHECK(pr::files_in(out).empty());
 }
 
-TEST(wireframe_program_frames_huge_and_tiny_meshes_and_refuses_the_rest) { check_program_at_scales("wireframe", {}); }
-TEST(render_program_frames_huge_and_tiny_meshes_and_refuses_the_rest) {
+TEST(wireframe_program_frames_meshes_of_any_extent) { check_program_at_scales("wireframe", {}); }
+TEST(render_program_frames_meshes_of_any_extent) {
     check_program_at_scales("render", {"--mode", "flat"});
     check_program_at_scales("render", {"--mode", "wireframe"});
 }

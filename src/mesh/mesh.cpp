@@ -160,9 +160,18 @@ bounding_box bounding_box_of(std::span<const vec3_t> positions) {
 
 bounding_box mesh_bounding_box(const mesh &m) { return bounding_box_of(m.positions); }
 
-bounding_sphere bounding_sphere_of(std::span<const vec3_t> positions) {
+namespace {
+
+// The box centre (rounded to a float: it lies between two floats' extremes) and the largest
+// distance to it, in double. radius < 0 when no position is finite.
+struct sphere_in_double {
+    vec3_t center;
+    double radius;
+};
+
+sphere_in_double measure_sphere(std::span<const vec3_t> positions) {
     const bounding_box box = bounding_box_of(positions);
-    if (!(box.min.x <= box.max.x)) return {{0.0f, 0.0f, 0.0f}, -1.0f};
+    if (!(box.min.x <= box.max.x)) return {{0.0f, 0.0f, 0.0f}, -1.0};
     // Centre and distances in double: in float, (lo + hi) overflows for coordinates near
     // ±FLT_MAX, and |p − c|² overflows from |p − c| ≈ 1.8e19 and underflows below ≈ 1e-19.
     // The centre lies between lo and hi, so it is a finite float; the distances are taken
@@ -175,14 +184,44 @@ bounding_sphere bounding_sphere_of(std::span<const vec3_t> positions) {
         const double dx = double(p.x) - center.x, dy = double(p.y) - center.y, dz = double(p.z) - center.z;
         r2 = std::max(r2, dx * dx + dy * dy + dz * dz);
     }
+    return {center, std::sqrt(r2)};
+}
+
+}  // namespace
+
+bounding_sphere bounding_sphere_of(std::span<const vec3_t> positions) {
+    const sphere_in_double s = measure_sphere(positions);
+    if (s.radius < 0.0) return {s.center, -1.0f};
     // The radius rounded up to a float, so every position tests inside; +inf when the
     // distance itself exceeds the float range (positions near ±FLT_MAX on several axes).
-    const double r = std::sqrt(r2);
     constexpr float inf = std::numeric_limits<float>::infinity();
-    if (r > double(std::numeric_limits<float>::max())) return {center, inf};
-    float radius = float(r);
-    if (double(radius) < r) radius = std::nextafter(radius, inf);
-    return {center, radius};
+    if (s.radius > double(std::numeric_limits<float>::max())) return {s.center, inf};
+    float radius = float(s.radius);
+    if (double(radius) < s.radius) radius = std::nextafter(radius, inf);
+    return {s.center, radius};
+}
+
+vec3_t unit_sphere_map::apply(vec3_t p) const {
+    return {float((double(p.x) - center.x) * inv_radius), float((double(p.y) - center.y) * inv_radius),
+            float((double(p.z) - center.z) * inv_radius)};
+}
+
+result<unit_sphere_map> unit_sphere_map_of(std::span<const vec3_t> positions) {
+    auto fail = [](std::string why) { return result<unit_sphere_map>(error{"", 0, -1, std::move(why)}); };
+    const sphere_in_double s = measure_sphere(positions);
+    if (s.radius < 0.0) return fail("nothing to frame: no finite position");
+    if (s.radius == 0.0) return fail("nothing to frame: every position is the same point");
+    // Positions are floats, so r ≤ √3 · 2 · FLT_MAX and r ≥ the smallest denormal spacing
+    // (1.4e-45): 1/r and (p − c)/r are finite doubles for every finite mesh.
+    return unit_sphere_map{s.center, 1.0 / s.radius};
+}
+
+result<unit_sphere_map> mesh_fit_unit_sphere(mesh &m) {
+    result<unit_sphere_map> map = unit_sphere_map_of(m.positions);
+    if (!map) return map;
+    for (vec3_t &p : m.positions)
+        if (finite3(p)) p = map->apply(p);
+    return map;
 }
 
 bounding_sphere mesh_bounding_sphere(const mesh &m) { return bounding_sphere_of(m.positions); }

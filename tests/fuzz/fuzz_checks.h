@@ -76,35 +76,26 @@ inline std::string check_canvas_values(const canvas_t &c) {
 // culling, and checks each image. Only called for meshes that passed the structural checks.
 inline std::string check_renders(const tiny3d::mesh &m) {
     const tiny3d::bounding_sphere bounds = tiny3d::mesh_bounding_sphere(m);
-    // Model: centre the mesh and scale it to radius 1 (any size the framing accepts), 3
-    // units in front of the camera. What it refuses must be a real limit, said in words.
-    const tiny3d::result<mat4_t> fit = tiny3d::mat4_fit_unit_sphere(bounds);
+    // Framed: the mesh mapped onto the unit sphere in double (any finite extent), 3 units in
+    // front of the camera. The mapping refuses only a mesh with no finite position or with
+    // every position the same point.
+    tiny3d::mesh framed_mesh = m;
+    const tiny3d::result<tiny3d::unit_sphere_map> fit = tiny3d::mesh_fit_unit_sphere(framed_mesh);
     if (!fit) {
-        // Refusals that are real limits: no finite position (radius < 0 or NaN), one point
-        // (radius 0), an extent beyond float, or a map (p − c)/r whose scale 1/r or offset
-        // c/r is not a float (a tiny mesh far from the origin). Computed here in double.
-        const double r = bounds.radius, far = std::max({std::fabs(double(bounds.center.x)),
-                                                        std::fabs(double(bounds.center.y)),
-                                                        std::fabs(double(bounds.center.z))});
-        constexpr double float_max = 3.4028234663852886e38;
-        const bool unframeable = !(r > 0.0) || std::isinf(r) || !std::isfinite(far) || 1.0 / r > float_max ||
-                                 far / r > float_max;
-        if (unframeable) return {};
-        return "mat4_fit_unit_sphere refused a finite sphere of radius " + std::to_string(bounds.radius) + ": " +
+        if (!(bounds.radius > 0.0f)) return {};
+        return "mesh_fit_unit_sphere refused a sphere of radius " + std::to_string(bounds.radius) + ": " +
                fit.message();
     }
-    // A scale 1/r within 64× of FLT_MAX is a float, but projection · model then overflows
-    // (the projection's entries reach ~2–20): such a mesh (< ~2e-37 across) cannot be drawn
-    // framed in float, a limit of the float pipeline, not a silent failure to catch here.
-    if (1.0 / double(bounds.radius) > 3.4028234663852886e38 / 64) return {};
     tiny3d::result<tiny3d::raster_mesh> rm = tiny3d::make_raster_mesh(m, tiny3d::mesh_vertex_normals(m));
-    if (!rm) return "make_raster_mesh rejected a valid mesh: " + rm.message();
+    tiny3d::result<tiny3d::raster_mesh> framed_rm =
+        tiny3d::make_raster_mesh(framed_mesh, tiny3d::mesh_vertex_normals(framed_mesh));
+    if (!rm || !framed_rm) return "make_raster_mesh rejected a valid mesh: " + (rm ? framed_rm : rm).message();
     tiny3d::result<tiny3d::canvas_ptr> canvas = tiny3d::make_canvas(RENDER_SIDE, RENDER_SIDE);
     if (!canvas) return "make_canvas failed";
     const light_t light = {{0.3f, 0.5f, 1.0f}, 0.8f};
     tiny3d::result<tiny3d::light_rig> rig = tiny3d::make_light_rig({&light, 1}, 0.1f);
     if (!rig) return "make_light_rig failed";
-    const mat4_t model = mat4_multiply(mat4_translate(0.0f, 0.0f, -3.0f), *fit);
+    const mat4_t model = mat4_translate(0.0f, 0.0f, -3.0f);
     const mat4_t projection = tiny3d::mat4_perspective(1.0f, 1.0f, 0.5f, 10.0f);
     // Wireframes: framed, and raw (the file's own coordinates, however far or huge: clipped).
     tiny3d::wireframe_workspace ws;
@@ -125,8 +116,8 @@ inline std::string check_renders(const tiny3d::mesh &m) {
             o.thickness = 1.5f;
             o.depth_cue = true;
             tiny3d::wireframe_stats stats;
-            if (tiny3d::status s = tiny3d::render_wireframe(**canvas, m, mat4_multiply(projection, m_model), o, ws,
-                                                            &stats);
+            if (tiny3d::status s = tiny3d::render_wireframe(**canvas, framed ? framed_mesh : m,
+                                                            mat4_multiply(projection, m_model), o, ws, &stats);
                 !s)
                 return "render_wireframe rejected a valid mesh: " + s.message();
             if (std::string e = check_canvas_values(**canvas); !e.empty()) return "wireframe image: " + e;
@@ -140,12 +131,13 @@ inline std::string check_renders(const tiny3d::mesh &m) {
     for (tiny3d::shading shade : {tiny3d::shading::flat, tiny3d::shading::gouraud, tiny3d::shading::phong}) {
         if (!ctx.begin_frame(**canvas)) return "begin_frame failed";
         tiny3d::draw_params p{};
-        p.model = shade == tiny3d::shading::phong ? mat4_identity() : model;  // phong: raw coordinates
+        const bool raw = shade == tiny3d::shading::phong;  // phong: the file's raw coordinates
+        p.model = raw ? mat4_identity() : model;
         p.view_projection = projection;
         p.lights = *rig;
         p.shade = shade;
         p.cull = tiny3d::cull_mode::none;
-        ctx.draw(*rm, p);
+        ctx.draw(raw ? *rm : *framed_rm, p);
         ctx.end_frame();
         if (std::string e = check_canvas_values(**canvas); !e.empty()) return "rendered image: " + e;
     }
