@@ -1,6 +1,6 @@
 // math3d.h — vectors, matrices, quaternions.
 //
-// Conventions (pinned by tests/math3d_test.cpp):
+// Conventions (pinned by tests/math3d_test.cpp and tests/math3d_vector_test.cpp):
 //  * Right-handed coordinates; the camera looks down −z; angles in radians.
 //  * mat4_t::m[16] is column-major: element (row r, column c) is m[c*4 + r]; the
 //    translation sits in m[12], m[13], m[14]. Vectors are columns: v' = M·v.
@@ -108,7 +108,7 @@ void vec3_normalize_fast(vec3_t *v);
 // renormalisation when a·b > 0.9995, otherwise s0·a + s1·b. The Quake inputs are 1.75e-3
 // off unit length, which the acos/1/sin θ₀ form amplifies as θ grows; measured max error
 // of the unit result (t in [0, 1]): 1.8e-3 for θ ≤ 90°, 6e-3 for θ ≤ 135°, 0.05 beyond
-// (tests/math3d_test, tests/bench/slerp). Made safe: pairs within ~17° of antipodal
+// (tests/math3d_vector_test, tests/bench/slerp). Made safe: pairs within ~17° of antipodal
 // (a·b < 0 and sin θ₀ < 0.3, where the report's formula returns vectors of length down
 // to 0 and directions off by up to 0.9, and divides by ~0 at θ₀ = π) are handed to
 // tiny3d::vec3_slerp_robust, so exactly antipodal inputs turn on its deterministic great

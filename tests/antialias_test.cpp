@@ -10,13 +10,13 @@
 #include "alloc_tracker.h"
 #include "harness.h"
 #include "raster_reference.h"
+#include "raster_test_util.h"
 #include "renderer.h"
 
 using namespace tiny3d;
+using raster_test::constant_light;
 
 namespace {
-
-light_rig constant_light(float ambient) { return make_light_rig(std::span<const light_t>(), ambient).value(); }
 
 // A raster mesh straight in clip space (identity matrices, w = 1): quads over x, y ∈ [x0, x1]
 // × [y0, y1] at depth z, uv = (u0 + du·s, v0 + dv·t) for s, t ∈ [0, 1].

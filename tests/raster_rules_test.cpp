@@ -26,9 +26,11 @@
 #include <vector>
 
 #include "harness.h"
+#include "raster_test_util.h"
 #include "renderer.h"
 
 using namespace tiny3d;
+using raster_test::constant_light;
 
 namespace {
 
@@ -129,8 +131,6 @@ raster_mesh to_mesh(const shape &s, float z) {
 
 enum class context_path { fast, phong };
 
-light_rig ambient(float a) { return make_light_rig(std::span<const light_t>(), a).value(); }
-
 // Draws each (shape, depth, intensity) in order with the render context.
 struct layer {
     const shape *geometry;
@@ -145,7 +145,7 @@ canvas_ptr draw_context(const std::vector<layer> &layers, int threads, context_p
     rigs.reserve(layers.size());
     for (const layer &l : layers) {
         const raster_mesh m = to_mesh(*l.geometry, l.z);
-        rigs.push_back(ambient(l.intensity));
+        rigs.push_back(constant_light(l.intensity));
         draw_params p;
         p.model = mat4_identity();
         p.view_projection = pixels_to_ndc();
