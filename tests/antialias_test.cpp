@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "../src/raster/msaa.h"
@@ -15,6 +16,7 @@
 
 using namespace tiny3d;
 using raster_test::constant_light;
+using raster_test::draw_frame;
 
 namespace {
 
@@ -137,9 +139,7 @@ TEST(trilinear_lod_on_a_plane_with_known_derivatives) {
             p.tex = &t;
             p.filter = texture_filter::trilinear;
             p.perspective_correct = perspective;
-            CHECK(ctx.begin_frame(*canvas).ok());
-            ctx.draw(quad, p);
-            ctx.end_frame();
+            CHECK(draw_frame(ctx, *canvas, quad, p).ok());
             const double lod = std::max(0.0, std::max(c.lod_u, c.lod_v));
             const double expected = 0.1 * std::min(lod, 6.0);  // level k shows 0.1·k
             double worst = 0;
@@ -227,10 +227,29 @@ small_scene make_small_scene(const mesh &m, float angle) {
 
 void render(const small_scene &s, canvas_t &c, sample_count n, int threads, float clear = 0.0f) {
     render_context ctx(threads);
-    CHECK(ctx.begin_frame(c, clear, n).ok());
-    ctx.draw(s.mesh, s.params);
-    ctx.end_frame();
+    CHECK(draw_frame(ctx, c, s.mesh, s.params, clear, n).ok());
 }
+
+// The several-draws frame of the multisampling tests: a Gouraud sphere, a Phong quad through
+// it with `tex` (mipmapped here, trilinear, both sides drawn) and a translucent torus knot.
+struct multi_draw_scene {
+    small_scene sphere = make_small_scene(make_icosphere(2), 0.4f);
+    small_scene knot = make_small_scene(make_torus_knot(2, 3, 40, 6), 0.1f);
+    texture tex;
+    raster_mesh quad = clip_quad(-2, -0.5f, 2, 0.5f, 0, 0, 0, 8, 2);
+    draw_params quad_params = sphere.params;
+
+    explicit multi_draw_scene(texture t) : tex(std::move(t)) {
+        knot.params.alpha = 0.5f;
+        CHECK(build_mipmaps(tex).ok());
+        quad_params.shade = shading::phong;
+        quad_params.cull = cull_mode::none;
+        quad_params.tex = &tex;
+        quad_params.filter = texture_filter::trilinear;
+    }
+    multi_draw_scene(const multi_draw_scene &) = delete;  // quad_params points at tex
+    multi_draw_scene &operator=(const multi_draw_scene &) = delete;
+};
 
 struct image_error {
     double all_mean = 0, edge_mean = 0, edge_max = 0;
@@ -308,20 +327,14 @@ TEST(msaa_images_do_not_depend_on_the_thread_count) {
 // quad crossing the near plane, a translucent torus knot): every mode, 1, 2 and 3 threads.
 TEST(msaa_multi_draw_frames_do_not_depend_on_the_thread_count) {
     constexpr int S = 72;
-    const small_scene sphere = make_small_scene(make_icosphere(2), 0.4f);
-    small_scene knot = make_small_scene(make_torus_knot(2, 3, 40, 6), 0.1f);
-    knot.params.alpha = 0.5f;
-    texture tex;
-    tex.width = tex.height = 16;
-    for (int i = 0; i < 256; ++i) tex.texels.push_back(((i + i / 16) % 2) ? 1.0f : 0.2f);
-    CHECK(build_mipmaps(tex).ok());
-    const raster_mesh quad = clip_quad(-2, -0.5f, 2, 0.5f, 0, 0, 0, 8, 2);
-    draw_params qp = sphere.params;
+    texture checker;
+    checker.width = checker.height = 16;
+    for (int i = 0; i < 256; ++i) checker.texels.push_back(((i + i / 16) % 2) ? 1.0f : 0.2f);
+    const multi_draw_scene scene(std::move(checker));
+    const small_scene &sphere = scene.sphere, &knot = scene.knot;
+    const raster_mesh &quad = scene.quad;
+    draw_params qp = scene.quad_params;
     qp.model = mat4_multiply(mat4_rotate_x(-1.2f), mat4_scale(1, 1, 1));
-    qp.shade = shading::phong;
-    qp.cull = cull_mode::none;
-    qp.tex = &tex;
-    qp.filter = texture_filter::trilinear;
     draw_params near = qp;  // reaches behind the camera: clipped
     near.model = mat4_multiply(mat4_translate(0, -0.3f, 2.5f), mat4_rotate_x(-1.5f));
     near.filter = texture_filter::bilinear;
@@ -361,26 +374,17 @@ TEST(msaa_multi_draw_frames_do_not_depend_on_the_thread_count) {
 // every mode with several draws (textured, Phong, translucent) allocate nothing.
 TEST(msaa_frames_allocate_nothing_in_steady_state) {
     constexpr int S = 64;
-    const small_scene sphere = make_small_scene(make_icosphere(2), 0.4f);
-    small_scene knot = make_small_scene(make_torus_knot(2, 3, 40, 6), 0.1f);
-    knot.params.alpha = 0.5f;
-    texture tex;
-    tex.width = tex.height = 8;
-    tex.texels.assign(64, 0.5f);
-    CHECK(build_mipmaps(tex).ok());
-    const raster_mesh quad = clip_quad(-2, -0.5f, 2, 0.5f, 0, 0, 0, 8, 2);
-    draw_params qp = sphere.params;
-    qp.shade = shading::phong;
-    qp.cull = cull_mode::none;
-    qp.tex = &tex;
-    qp.filter = texture_filter::trilinear;
+    texture grey;
+    grey.width = grey.height = 8;
+    grey.texels.assign(64, 0.5f);
+    const multi_draw_scene scene(std::move(grey));
     canvas_ptr c = make_canvas(S, S).value();
     render_context ctx(2);
     auto frame = [&](sample_count n) {
         CHECK(ctx.begin_frame(*c, 0.1f, n).ok());
-        ctx.draw(sphere.mesh, sphere.params);
-        ctx.draw(quad, qp);
-        ctx.draw(knot.mesh, knot.params);
+        ctx.draw(scene.sphere.mesh, scene.sphere.params);
+        ctx.draw(scene.quad, scene.quad_params);
+        ctx.draw(scene.knot.mesh, scene.knot.params);
         ctx.end_frame();
     };
     for (sample_count n : MODES) frame(n);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "harness.h"
+#include "raster_test_util.h"
 #include "renderer.h"
 
 using namespace tiny3d;
@@ -20,9 +21,7 @@ struct rendered {
 
 rendered render_frame(render_context &ctx, canvas_t &c, const raster_mesh &m, const draw_params &p) {
     rendered r;
-    if (!ctx.begin_frame(c, 0.05f).ok()) return r;
-    ctx.draw(m, p);
-    ctx.end_frame();
+    if (!raster_test::draw_frame(ctx, c, m, p, 0.05f).ok()) return r;
     const std::size_t n = static_cast<std::size_t>(c.width) * c.height;
     r.colour.assign(c.data, c.data + n);
     r.depth.assign(ctx.depth().row(0), ctx.depth().row(0) + n);

@@ -11,56 +11,22 @@
 
 using namespace tiny3d;
 using raster_test::constant_light;
-
-namespace {
-
-// A quad facing the camera (at the origin looking down −z): y = −1 at z = −1.5, y = 1 at
-// z = −6, x in [−1, 1]; u runs along the depth (u = (y + 1)/2).
-raster_mesh tilted_quad() {
-    raster_mesh m;
-    m.positions = {{-1, -1, -1.5f}, {1, -1, -1.5f}, {1, 1, -6}, {-1, 1, -6}};
-    m.normals.assign(4, {0, 0, 1});
-    m.uvs = {{0, 0}, {0, 0}, {1, 0}, {1, 0}};
-    m.triangles = {{0, 1, 2}, {0, 2, 3}};
-    m.bound_center = {0, 0, -3.75f};
-    m.bound_radius = 3;
-    return m;
-}
-
-}  // namespace
+using raster_test::draw_frame;
+using raster_test::slanted_quad;
 
 TEST(perspective_correct_uv_matches_the_analytic_value) {
     constexpr int S = 256;
-    const float fov = static_cast<float>(M_PI / 2);
-    texture ramp;  // texel value = u (bilinear of a linear ramp reproduces u exactly)
-    ramp.width = 4096;
-    ramp.height = 1;
-    for (int i = 0; i < ramp.width; ++i) ramp.texels.push_back((i + 0.5f) / ramp.width);
-    const raster_mesh quad = tilted_quad();
+    const slanted_quad quad;
     double worst_persp = 0, worst_affine = 0;
     int samples = 0;
     for (bool perspective : {true, false}) {
         canvas_ptr c = make_canvas(S, S).value();
         render_context ctx(1);
-        draw_params p;
-        p.model = mat4_identity();
-        p.view_projection = mat4_perspective(fov, 1.0f, 0.1f, 100.0f);
-        p.lights = constant_light(1.0f);
-        p.shade = shading::flat;
-        p.tex = &ramp;
-        p.wrap = texture_wrap::clamp;
-        p.perspective_correct = perspective;
-        CHECK(ctx.begin_frame(*c).ok());
-        ctx.draw(quad, p);
-        ctx.end_frame();
+        CHECK(draw_frame(ctx, *c, quad.mesh, quad.params(perspective)).ok());
         for (int y = 4; y < S - 4; y += 5)
             for (int x = 4; x < S - 4; x += 5) {
-                // Ray through the pixel centre; plane z = −3.75 − 2.25·y.
-                const double dx = ((x + 0.5) / S * 2 - 1), dy = 1 - (y + 0.5) / S * 2;  // tan(45°) = 1
-                const double t = 3.75 / (1 - 2.25 * dy);
-                const double hx = t * dx, hy = t * dy;
-                if (std::fabs(hx) > 0.95 || std::fabs(hy) > 0.95) continue;  // keep off the quad's edges
-                const double u = (hy + 1) / 2;
+                double u;
+                if (!slanted_quad::exact_u(x, y, S, 0.95, u)) continue;  // keep off the quad's edges
                 const double err = std::fabs(c->pixels[y][x] - u);
                 if (perspective) {
                     worst_persp = std::max(worst_persp, err);
@@ -100,9 +66,7 @@ TEST(backface_culling_removes_exactly_the_clockwise_ones) {
     p.model = mat4_identity();
     p.view_projection = mat4_perspective(static_cast<float>(M_PI / 2), 1.0f, 0.1f, 100.0f);
     p.lights = constant_light(0.5f);
-    CHECK(ctx.begin_frame(*c).ok());
-    ctx.draw(m, p);
-    ctx.end_frame();
+    CHECK(draw_frame(ctx, *c, m, p).ok());
     CHECK_EQ(ctx.stats().culled_backface, static_cast<std::size_t>(clockwise));
     CHECK_EQ(ctx.stats().rasterized, m.triangles.size() - clockwise);
 }
@@ -125,9 +89,7 @@ TEST(vertex_behind_the_camera_renders_only_the_visible_part) {
     p.view_projection = mat4_perspective(static_cast<float>(M_PI / 2), 1.0f, static_cast<float>(near_plane), 100.0f);
     p.lights = constant_light(1.0f);
     p.cull = cull_mode::none;
-    CHECK(ctx.begin_frame(*c).ok());
-    ctx.draw(m, p);
-    ctx.end_frame();
+    CHECK(draw_frame(ctx, *c, m, p).ok());
     CHECK_EQ(ctx.stats().clipped, std::size_t{1});
     // Double-precision ray cast (Möller–Trumbore) per pixel centre: hit with −z ≥ near.
     auto sub = [](vec3_t a, vec3_t b) { return std::array<double, 3>{a.x - b.x + 0.0, a.y - b.y + 0.0, a.z - b.z + 0.0}; };

@@ -1,8 +1,10 @@
-// raster_test_util.h — helpers shared by the raster tests: a light rig of ambient light
-// only (every pixel shades to the given value).
+// raster_test_util.h — helpers shared by the raster tests (and tests/bench/fill.cpp): a
+// light rig of ambient light only, a frame holding one draw, and the slanted textured quad
+// whose exact u at every pixel centre is known in closed form.
 #ifndef TINY3D_RASTER_TEST_UTIL_H
 #define TINY3D_RASTER_TEST_UTIL_H
 
+#include <cmath>
 #include <span>
 
 #include "renderer.h"
@@ -13,6 +15,67 @@ namespace raster_test {
 inline tiny3d::light_rig constant_light(float ambient) {
     return tiny3d::make_light_rig(std::span<const light_t>(), ambient).value();
 }
+
+// One frame with one draw: begin_frame (cleared to `clear_intensity`, `samples` per pixel),
+// draw, end_frame. The status is begin_frame's; nothing is drawn when it fails.
+inline tiny3d::status draw_frame(tiny3d::render_context &ctx, canvas_t &target, const tiny3d::raster_mesh &mesh,
+                                 const tiny3d::draw_params &params, float clear_intensity = 0.0f,
+                                 tiny3d::sample_count samples = tiny3d::sample_count::x1) {
+    tiny3d::status s = ctx.begin_frame(target, clear_intensity, samples);
+    if (!s) return s;
+    ctx.draw(mesh, params);
+    ctx.end_frame();
+    return s;
+}
+
+// A quad facing the camera (at the origin looking down −z, 90° field of view, aspect 1):
+// y = −1 at z = −1.5, y = 1 at z = −6, x in [−1, 1]; u runs along the depth, u = (y + 1)/2.
+// Its texture is a ramp whose bilinear sample is u itself (texel i holds (i + 0.5)/4096)
+// and the light is ambient 1, so each pixel shows the u the pipeline interpolated.
+struct slanted_quad {
+    tiny3d::texture ramp;
+    tiny3d::raster_mesh mesh;
+
+    slanted_quad() {
+        ramp.width = 4096;
+        ramp.height = 1;
+        for (int i = 0; i < ramp.width; ++i) ramp.texels.push_back((i + 0.5f) / ramp.width);
+        mesh.positions = {{-1, -1, -1.5f}, {1, -1, -1.5f}, {1, 1, -6}, {-1, 1, -6}};
+        mesh.normals.assign(4, {0, 0, 1});
+        mesh.uvs = {{0, 0}, {0, 0}, {1, 0}, {1, 0}};
+        mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
+        mesh.bound_center = {0, 0, -3.75f};
+        mesh.bound_radius = 3;
+    }
+    slanted_quad(const slanted_quad &) = delete;  // params() points at this ramp
+    slanted_quad &operator=(const slanted_quad &) = delete;
+
+    // Flat shading, the ramp clamped, uv perspective-correct or affine.
+    tiny3d::draw_params params(bool perspective_correct) const {
+        tiny3d::draw_params p;
+        p.model = mat4_identity();
+        p.view_projection = tiny3d::mat4_perspective(static_cast<float>(M_PI / 2), 1.0f, 0.1f, 100.0f);
+        p.lights = constant_light(1.0f);
+        p.shade = tiny3d::shading::flat;
+        p.tex = &ramp;
+        p.wrap = tiny3d::texture_wrap::clamp;
+        p.perspective_correct = perspective_correct;
+        return p;
+    }
+
+    // The exact u at the centre of pixel (x, y) of a side × side frame: the ray through the
+    // centre (direction (dx, dy, −1), tan 45° = 1) meets the quad's plane z = −3.75 − 2.25·y
+    // at t = 3.75 / (1 − 2.25·dy). False where the hit lies within 1 − margin of the quad's
+    // edges (|x| or |y| > margin) or off it.
+    static bool exact_u(int x, int y, int side, double margin, double &u) {
+        const double dx = (x + 0.5) / side * 2 - 1, dy = 1 - (y + 0.5) / side * 2;
+        const double t = 3.75 / (1 - 2.25 * dy);
+        const double hx = t * dx, hy = t * dy;
+        if (std::fabs(hx) > margin || std::fabs(hy) > margin) return false;
+        u = (hy + 1) / 2;
+        return true;
+    }
+};
 
 }  // namespace raster_test
 

@@ -176,28 +176,34 @@ void command_line::flag(const std::string &name, bool &target, const std::string
          }});
 }
 
+namespace {
+
+// The setter of a numeric option: `parse` reads the value as a Wide (long or double) within
+// [min, max]; on success the target takes it converted to its own type.
+template <class T, class Wide>
+std::function<std::string(const std::string &)> numeric_setter(
+    T &target, std::string (*parse)(const std::string &, const std::string &, Wide, Wide, Wide &), std::string name,
+    Wide min, Wide max) {
+    return [&target, parse, name, min, max](const std::string &v) {
+        Wide out = 0;
+        std::string e = parse(name, v, min, max, out);
+        if (e.empty()) target = T(out);
+        return e;
+    };
+}
+
+}  // namespace
+
 void command_line::integer(const std::string &name, int &target, int min, int max, const std::string &help) {
-    add({name, "N", help, true, false, [&target, name, min, max](const std::string &v) {
-             long out = 0;
-             std::string e = parse_int(name, v, min, max, out);
-             if (e.empty()) target = int(out);
-             return e;
-         }});
+    add({name, "N", help, true, false, numeric_setter<int, long>(target, parse_int, name, min, max)});
 }
 
 void command_line::number(const std::string &name, double &target, double min, double max, const std::string &help) {
-    add({name, "X", help, true, false, [&target, name, min, max](const std::string &v) {
-             return parse_number(name, v, min, max, target);
-         }});
+    add({name, "X", help, true, false, numeric_setter<double, double>(target, parse_number, name, min, max)});
 }
 
 void command_line::number(const std::string &name, float &target, float min, float max, const std::string &help) {
-    add({name, "X", help, true, false, [&target, name, min, max](const std::string &v) {
-             double out = 0;
-             std::string e = parse_number(name, v, min, max, out);
-             if (e.empty()) target = float(out);
-             return e;
-         }});
+    add({name, "X", help, true, false, numeric_setter<float, double>(target, parse_number, name, min, max)});
 }
 
 void command_line::choice(const std::string &name, std::string &target, std::vector<std::string> choices,

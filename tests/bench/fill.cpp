@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "../raster_test_util.h"
 #include "common/bench.h"
 #include "loaders.h"
 #include "renderer.h"
@@ -189,41 +190,20 @@ int main(int argc, char **argv) {
     // ---- texture mapping: affine vs perspective-correct -------------------------------------
     {
         constexpr int S = 512;
-        texture ramp;
-        ramp.width = 4096;
-        ramp.height = 1;
-        for (int i = 0; i < ramp.width; ++i) ramp.texels.push_back((i + 0.5f) / ramp.width);
-        raster_mesh quad;
-        quad.positions = {{-1, -1, -1.5f}, {1, -1, -1.5f}, {1, 1, -6}, {-1, 1, -6}};
-        quad.normals.assign(4, {0, 0, 1});
-        quad.uvs = {{0, 0}, {0, 0}, {1, 0}, {1, 0}};
-        quad.triangles = {{0, 1, 2}, {0, 2, 3}};
-        quad.bound_center = {0, 0, -3.75f};
-        quad.bound_radius = 3;
+        const raster_test::slanted_quad quad;
         canvas_ptr c = make_canvas(S, S).value();
         render_context ctx(1);
         for (bool perspective : {false, true}) {
-            draw_params p;
-            p.model = mat4_identity();
-            p.view_projection = tiny3d::mat4_perspective(static_cast<float>(M_PI / 2), 1.0f, 0.1f, 100.0f);
-            p.lights = make_light_rig(std::span<const light_t>(), 1.0f).value();
-            p.shade = shading::flat;
-            p.tex = &ramp;
-            p.wrap = texture_wrap::clamp;
-            p.perspective_correct = perspective;
+            const draw_params p = quad.params(perspective);
             long covered = 0;
-            const bench::timing t = bench::measure_ns(repeats, 1.0, [&] {
-                if (!ctx.begin_frame(*c).ok()) return;
-                ctx.draw(quad, p);
-                ctx.end_frame();
-            });
+            const bench::timing t =
+                bench::measure_ns(repeats, 1.0, [&] { (void)raster_test::draw_frame(ctx, *c, quad.mesh, p); });
             double sum = 0, worst = 0;
             for (int y = 0; y < S; ++y)
                 for (int x = 0; x < S; ++x) {
-                    const double dx = (x + 0.5) / S * 2 - 1, dy = 1 - (y + 0.5) / S * 2;
-                    const double tt = 3.75 / (1 - 2.25 * dy), hx = tt * dx, hy = tt * dy;
-                    if (std::fabs(hx) > 0.98 || std::fabs(hy) > 0.98) continue;
-                    const double e = std::fabs(c->pixels[y][x] - (hy + 1) / 2);
+                    double u;
+                    if (!raster_test::slanted_quad::exact_u(x, y, S, 0.98, u)) continue;
+                    const double e = std::fabs(c->pixels[y][x] - u);
                     sum += e, worst = std::max(worst, e), ++covered;
                 }
             bench::timing per_px = t;
