@@ -503,35 +503,43 @@ TEST(msaa_watertight_per_sample) {
 }
 
 // The SSE2 kernel against the portable one: random overlapping triangles with depth, every
-// sample bit-identical.
+// sample bit-identical; large triangles (boxes wider than 8 columns: walked by row spans)
+// and small ones (at most 8 columns: the box walked whole), some off the canvas' edges.
 TEST(msaa_sse2_kernel_matches_the_portable_kernel) {
     constexpr int W = 41, H = 33;
     std::mt19937 rng(11);
-    std::uniform_int_distribution<int> coord(-80, 45 * 16);
+    std::uniform_int_distribution<int> coord(-80, 45 * 16), near(-3 * 16, 3 * 16);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-    for (int samples : {4, 8, 16}) {
-        const detail::sample_pattern &pat = detail::pattern_of(samples);
-        detail::sample_store a, b;
-        for (detail::sample_store *st : {&a, &b}) st->resize(W, H, samples), st->start(0, H);
-        for (int t = 0; t < 60; ++t) {
-            const std::int32_t X[3] = {coord(rng), coord(rng), coord(rng)}, Y[3] = {coord(rng), coord(rng), coord(rng)};
-            const triangle_edges e = detail::triangle_setup_snapped(X, Y, {0, 0, W, H}, cull_mode::none);
-            const float depth[3] = {unit(rng), unit(rng), unit(rng)}, intensity[3] = {unit(rng), unit(rng), unit(rng)};
-            detail::msaa_triangle f;
-            if (e.area2 == 0 || !detail::make_msaa_triangle(e, pat, {0, 0, W, H}, depth, intensity, f)) continue;
-            CHECK(f.narrow);
-            detail::fill_msaa_rows(a, f, pat, depth_func::less, true, 0.25f, 0, H, false);
-            detail::fill_msaa_rows(b, f, pat, depth_func::less, true, 0.25f, 0, H, true);
-        }
-        int differ = 0, touched = 0;
-        for (int y = 0; y < H; ++y)
-            for (int x = 0; x < W; ++x) {
-                touched += a.touched_row(y)[x];
-                differ += a.touched_row(y)[x] != b.touched_row(y)[x];
-                if (!a.touched_row(y)[x]) continue;
-                for (int s = 0; s < 2 * samples; ++s) differ += a.pixel(x, y)[s] != b.pixel(x, y)[s];
+    for (bool small : {false, true})
+        for (int samples : {4, 8, 16}) {
+            const detail::sample_pattern &pat = detail::pattern_of(samples);
+            detail::sample_store a, b;
+            for (detail::sample_store *st : {&a, &b}) st->resize(W, H, samples), st->start(0, H);
+            int narrow_boxes = 0, drawn = 0;
+            for (int t = 0; t < (small ? 600 : 60); ++t) {
+                std::int32_t X[3] = {coord(rng), coord(rng), coord(rng)}, Y[3] = {coord(rng), coord(rng), coord(rng)};
+                if (small)
+                    for (int k = 1; k < 3; ++k) X[k] = X[0] + near(rng), Y[k] = Y[0] + near(rng);
+                const triangle_edges e = detail::triangle_setup_snapped(X, Y, {0, 0, W, H}, cull_mode::none);
+                const float depth[3] = {unit(rng), unit(rng), unit(rng)}, intensity[3] = {unit(rng), unit(rng), unit(rng)};
+                detail::msaa_triangle f;
+                if (e.area2 == 0 || !detail::make_msaa_triangle(e, pat, {0, 0, W, H}, depth, intensity, f)) continue;
+                CHECK(f.narrow);
+                ++drawn;
+                narrow_boxes += f.max_x - f.min_x < 8;
+                detail::fill_msaa_rows(a, f, pat, depth_func::less, true, 0.25f, 0, H, false);
+                detail::fill_msaa_rows(b, f, pat, depth_func::less, true, 0.25f, 0, H, true);
             }
-        CHECK(touched > W * H / 2);
-        CHECK_EQ(differ, 0);
-    }
+            CHECK(small ? narrow_boxes == drawn : narrow_boxes < drawn / 4);
+            int differ = 0, touched = 0;
+            for (int y = 0; y < H; ++y)
+                for (int x = 0; x < W; ++x) {
+                    touched += a.touched_row(y)[x];
+                    differ += a.touched_row(y)[x] != b.touched_row(y)[x];
+                    if (!a.touched_row(y)[x]) continue;
+                    for (int s = 0; s < 2 * samples; ++s) differ += a.pixel(x, y)[s] != b.pixel(x, y)[s];
+                }
+            CHECK(touched > W * H / 2);
+            CHECK_EQ(differ, 0);
+        }
 }

@@ -47,11 +47,13 @@ inline void axis_bounds(std::int64_t lo, std::int64_t hi, int lo_off, int hi_off
 // from the value at the pixel centre.
 struct edge_extremes {
     std::int64_t lo[3], hi[3];
-    // The columns (relative to min_x) of a row whose edge values at the first column's
-    // centre are e[]: where some sample could pass every edge. Empty when lo > hi.
-    void row_span(const std::int64_t e[3], const msaa_triangle &f, int &lo_x, int &hi_x) const {
+    // Row y of f: the edge values e[] at the centre of its first column (min_x) and the
+    // columns [lo_x, hi_x] (relative to min_x) where some sample could pass every edge.
+    // False when that span is empty.
+    bool row(const msaa_triangle &f, int y, std::int64_t e[3], int &lo_x, int &hi_x) const {
         std::int64_t first = 0, last = f.max_x - f.min_x;
         for (int k = 0; k < 3; ++k) {
+            e[k] = f.e[k] + f.b[k] * (y - f.min_y);
             const std::int64_t top = e[k] + hi[k];  // the best sample's value at column 0
             if (f.a[k] > 0) first = std::max(first, -floor_div(top, f.a[k]));  // top + a·x ≥ 0
             else if (f.a[k] < 0) last = std::min(last, floor_div(top, -f.a[k]));
@@ -59,6 +61,7 @@ struct edge_extremes {
         }
         lo_x = static_cast<int>(first);
         hi_x = static_cast<int>(std::max<std::int64_t>(last, first - 1));
+        return lo_x <= hi_x;
     }
 };
 
@@ -88,9 +91,8 @@ void fill_rows_portable(sample_store &store, const msaa_triangle &f, const sampl
     for (int y = y0; y < y1; ++y) {
         const int dy = y - f.min_y;
         std::int64_t e[3];
-        for (int k = 0; k < 3; ++k) e[k] = f.e[k] + f.b[k] * dy;
         int lo, hi;
-        off.row_span(e, f, lo, hi);
+        off.row(f, y, e, lo, hi);
         std::uint8_t *touched = store.touched_row(y);
         const float zr = f.z + f.zdy * static_cast<float>(dy), ir = f.i + f.idy * static_cast<float>(dy);
         for (int x = lo; x <= hi; ++x) {
@@ -133,6 +135,9 @@ inline __m128 compare(__m128 z, __m128 stored) {
 
 inline __m128 select(__m128 mask, __m128 a, __m128 b) { return _mm_or_ps(_mm_and_ps(mask, a), _mm_andnot_ps(mask, b)); }
 
+// Boxes at most this many columns wide are walked whole by the SSE2 kernel (no row spans).
+constexpr int SCAN_COLUMNS = 8;
+
 // The SSE2 kernel (f.narrow: 32-bit edges), S = 4, 8 or 16 samples in groups of four: the
 // same integer tests and float operations as the portable kernel, lane by lane.
 template <int S, depth_func Test>
@@ -165,53 +170,81 @@ void fill_rows_sse2(sample_store &store, const msaa_triangle &f, const sample_pa
         off.lo[k] = _mm_cvtss_si32(l);
         off.hi[k] = _mm_cvtss_si32(h);
     }
-    const std::int32_t a[3] = {static_cast<std::int32_t>(f.a[0]), static_cast<std::int32_t>(f.a[1]),
-                               static_cast<std::int32_t>(f.a[2])};
-    const __m128i minus_one = _mm_set1_epi32(-1);
-    const __m128 ones = _mm_set1_ps(1.0f), clear = _mm_set1_ps(clear_colour);
-    const float zdx = f.zdx, idx = f.idx;  // locals: the sample stores could alias f's floats
+    // Per pixel: the three edges' values at the samples (narrow: 32 bits), stepped by a per
+    // column. With one group (4×) the sample offsets are folded into the stepped values;
+    // with more, the centre's values are stepped and the offsets added per group, and a
+    // pixel inside every edge for the pattern's worst sample skips the per-sample tests.
+    const std::uint32_t a[3] = {static_cast<std::uint32_t>(f.a[0]), static_cast<std::uint32_t>(f.a[1]),
+                                static_cast<std::uint32_t>(f.a[2])};
+    const std::int32_t worst[3] = {static_cast<std::int32_t>(off.lo[0]), static_cast<std::int32_t>(off.lo[1]),
+                                   static_cast<std::int32_t>(off.lo[2])};
+    const __m128i step0 = _mm_set1_epi32(static_cast<std::int32_t>(f.a[0])), step1 = _mm_set1_epi32(static_cast<std::int32_t>(f.a[1])),
+                  step2 = _mm_set1_epi32(static_cast<std::int32_t>(f.a[2]));
+    const __m128 ones = _mm_set1_ps(1.0f), clear = _mm_set1_ps(clear_colour), zero = _mm_setzero_ps();
+    const __m128 write = depth_write ? _mm_castsi128_ps(_mm_set1_epi32(-1)) : zero;
+    // Depth in lane 0, intensity in lane 1: both planes' row value plus step · column in one
+    // multiply and add (the portable kernel's float operations, lane by lane).
+    const __m128 plane_dx = _mm_setr_ps(f.zdx, f.idx, 0.0f, 0.0f);
+    // A box at most SCAN_COLUMNS wide is walked whole (a pixel without a covered sample
+    // costs less than the row span's divisions); a wider one from each row's span.
+    const int columns = f.max_x - f.min_x + 1;
+    const bool scan = G == 1 && columns <= SCAN_COLUMNS;
     for (int y = y0; y < y1; ++y) {
         const int dy = y - f.min_y;
         std::int64_t e64[3];
-        for (int k = 0; k < 3; ++k) e64[k] = f.e[k] + f.b[k] * dy;
-        int lo, hi;
-        off.row_span(e64, f, lo, hi);
-        if (lo > hi) continue;
-        std::int32_t e[3];
-        for (int k = 0; k < 3; ++k) e[k] = static_cast<std::int32_t>(e64[k] + f.a[k] * lo);
+        int lo = 0, hi = columns - 1;
+        if (scan) {
+            for (int k = 0; k < 3; ++k) e64[k] = f.e[k] + f.b[k] * dy;
+        } else if (!off.row(f, y, e64, lo, hi)) {
+            continue;
+        }
+        // 32 bits (narrow), unsigned: stepping past the row's last column wraps, never overflows.
+        std::uint32_t e[3];
+        for (int k = 0; k < 3; ++k) e[k] = static_cast<std::uint32_t>(e64[k] + f.a[k] * lo);
+        __m128i b0 = _mm_set1_epi32(static_cast<std::int32_t>(e[0])), b1 = _mm_set1_epi32(static_cast<std::int32_t>(e[1])),
+                b2 = _mm_set1_epi32(static_cast<std::int32_t>(e[2]));
+        if constexpr (G == 1) b0 = _mm_add_epi32(b0, d[0][0]), b1 = _mm_add_epi32(b1, d[1][0]), b2 = _mm_add_epi32(b2, d[2][0]);
         std::uint8_t *touched = store.touched_row(y) + f.min_x + lo;
         float *p = store.pixel(f.min_x + lo, y);
-        const float zr = f.z + f.zdy * static_cast<float>(dy), ir = f.i + f.idy * static_cast<float>(dy);
-        for (int x = lo; x <= hi; ++x, e[0] += a[0], e[1] += a[1], e[2] += a[2], p += 2 * S, ++touched) {
-            __m128 cover[G];
-            // With 8 or 16 samples, a pixel inside every edge for the pattern's worst sample
-            // skips the per-sample tests (with 4, one group of tests is as cheap).
-            const bool full = S > 4 && e[0] + off.lo[0] >= 0 && e[1] + off.lo[1] >= 0 && e[2] + off.lo[2] >= 0;
-            if (full) {
-                for (int g = 0; g < G; ++g) cover[g] = _mm_castsi128_ps(minus_one);
-            } else {
-                const __m128i e0 = _mm_set1_epi32(e[0]), e1 = _mm_set1_epi32(e[1]), e2 = _mm_set1_epi32(e[2]);
-                int any = 0;
+        const float dy_f = static_cast<float>(dy);
+        const __m128 plane_row = _mm_setr_ps(f.z + f.zdy * dy_f, f.i + f.idy * dy_f, 0.0f, 0.0f);
+        __m128 column = _mm_set1_ps(static_cast<float>(lo));  // exactly (< 2^24)
+        for (int x = lo; x <= hi; ++x, p += 2 * S, ++touched, column = _mm_add_ps(column, ones)) {
+            // n[g]: the OR of the three edge values, negative in a lane whose sample is out.
+            __m128i n[G];
+            bool full = false;
+            if constexpr (G > 1) {
+                full = (static_cast<std::int32_t>(e[0] + worst[0]) | static_cast<std::int32_t>(e[1] + worst[1]) |
+                        static_cast<std::int32_t>(e[2] + worst[2])) >= 0;
+                e[0] += a[0], e[1] += a[1], e[2] += a[2];
+            }
+            if (!full) {
+                __m128i all_out = _mm_set1_epi32(-1);
                 for (int g = 0; g < G; ++g) {
-                    const __m128i in = _mm_and_si128(_mm_and_si128(_mm_cmpgt_epi32(_mm_add_epi32(e0, d[0][g]), minus_one),
-                                                                   _mm_cmpgt_epi32(_mm_add_epi32(e1, d[1][g]), minus_one)),
-                                                     _mm_cmpgt_epi32(_mm_add_epi32(e2, d[2][g]), minus_one));
-                    cover[g] = _mm_castsi128_ps(in);
-                    any |= _mm_movemask_ps(cover[g]);
+                    n[g] = G == 1 ? _mm_or_si128(_mm_or_si128(b0, b1), b2)
+                                  : _mm_or_si128(_mm_or_si128(_mm_add_epi32(b0, d[0][g]), _mm_add_epi32(b1, d[1][g])),
+                                                 _mm_add_epi32(b2, d[2][g]));
+                    all_out = G == 1 ? n[g] : _mm_and_si128(all_out, n[g]);
                 }
-                if (!any) continue;
+                b0 = _mm_add_epi32(b0, step0), b1 = _mm_add_epi32(b1, step1), b2 = _mm_add_epi32(b2, step2);
+                if (_mm_movemask_ps(_mm_castsi128_ps(all_out)) == 0xF) continue;
+            } else {
+                for (int g = 0; g < G; ++g) n[g] = _mm_setzero_si128();  // every sample in
+                b0 = _mm_add_epi32(b0, step0), b1 = _mm_add_epi32(b1, step1), b2 = _mm_add_epi32(b2, step2);
             }
             if (!*touched) {  // first touch this frame: depth 1, the clear colour
                 for (int g = 0; g < G; ++g) _mm_storeu_ps(p + 4 * g, ones), _mm_storeu_ps(p + S + 4 * g, clear);
                 *touched = 1;
             }
-            const __m128 zc = _mm_set1_ps(zr + zdx * static_cast<float>(x));
-            const __m128 shade = _mm_set1_ps(clamp01(ir + idx * static_cast<float>(x)));
+            const __m128 at = _mm_add_ps(plane_row, _mm_mul_ps(plane_dx, column));
+            const __m128 zc = _mm_shuffle_ps(at, at, 0x00);
+            const __m128 shade = _mm_min_ps(_mm_max_ps(_mm_shuffle_ps(at, at, 0x55), zero), ones);  // clamp01
             for (int g = 0; g < G; ++g) {
                 const __m128 z = _mm_add_ps(zc, dz[g]);
                 const __m128 stored = _mm_loadu_ps(p + 4 * g);
-                const __m128 pass = _mm_and_ps(cover[g], compare<Test>(z, stored));
-                if (depth_write) _mm_storeu_ps(p + 4 * g, select(pass, z, stored));
+                __m128 pass = compare<Test>(z, stored);
+                if (!full) pass = _mm_andnot_ps(_mm_castsi128_ps(_mm_srai_epi32(n[g], 31)), pass);
+                _mm_storeu_ps(p + 4 * g, select(_mm_and_ps(pass, write), z, stored));
                 _mm_storeu_ps(p + S + 4 * g, select(pass, shade, _mm_loadu_ps(p + S + 4 * g)));
             }
         }
