@@ -3,6 +3,8 @@
 #include "msaa.h"
 
 #include <algorithm>
+#include <cstring>
+#include <numeric>
 #include <string>
 
 #include "../simd_config.h"
@@ -79,6 +81,18 @@ struct sample_offsets : edge_extremes {
     }
 };
 
+// The sum of a pixel's S sample colours in the order of the SSE2 resolve: lane j of four
+// sums samples j, j + 4, … in turn, then (lane 0 + lane 2) + (lane 1 + lane 3).
+inline float resolve_sum(const float *c, int S) {
+    if (S % 4) return std::accumulate(c, c + S, 0.0f);
+    float lane[4];
+    for (int j = 0; j < 4; ++j) {
+        lane[j] = c[j];
+        for (int g = 4; g < S; g += 4) lane[j] += c[g + j];
+    }
+    return (lane[0] + lane[2]) + (lane[1] + lane[3]);
+}
+
 // The portable kernel: 64-bit edges, one sample at a time.
 void fill_rows_portable(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
                         bool depth_write, float clear_colour, int y0, int y1) {
@@ -135,7 +149,7 @@ inline __m128 compare(__m128 z, __m128 stored) {
 
 inline __m128 select(__m128 mask, __m128 a, __m128 b) { return _mm_or_ps(_mm_and_ps(mask, a), _mm_andnot_ps(mask, b)); }
 
-// Boxes at most this many columns wide are walked whole by the SSE2 kernel (no row spans).
+// Boxes at most this many columns wide are walked whole by the 4-sample SSE2 kernel (no row spans).
 constexpr int SCAN_COLUMNS = 8;
 
 // The SSE2 kernel (f.narrow: 32-bit edges), S = 4, 8 or 16 samples in groups of four: the
@@ -185,8 +199,8 @@ void fill_rows_sse2(sample_store &store, const msaa_triangle &f, const sample_pa
     // Depth in lane 0, intensity in lane 1: both planes' row value plus step · column in one
     // multiply and add (the portable kernel's float operations, lane by lane).
     const __m128 plane_dx = _mm_setr_ps(f.zdx, f.idx, 0.0f, 0.0f);
-    // A box at most SCAN_COLUMNS wide is walked whole (a pixel without a covered sample
-    // costs less than the row span's divisions); a wider one from each row's span.
+    // With 4 samples, a box at most SCAN_COLUMNS wide is walked whole (a pixel without a
+    // covered sample costs less than the row span's divisions); others by each row's span.
     const int columns = f.max_x - f.min_x + 1;
     const bool scan = G == 1 && columns <= SCAN_COLUMNS;
     for (int y = y0; y < y1; ++y) {
@@ -270,12 +284,42 @@ void fill_rows_sse2_dispatch(sample_store &store, const msaa_triangle &f, const 
     }
 }
 
-// resolve() for S = 4, 8, 16: the same sums in the same order as the scalar loop would
-// not be (lanes add in parallel), but the order is fixed, so the image is deterministic.
+// resolve() for S = 4, 8, 16, the sums in the portable loop's order (resolve_pixel).
 template <int S>
 void resolve_row_sse2(const float *p, const std::uint8_t *touched, int width, float clear_colour, float *colour, float *z) {
     const __m128 inv = _mm_set1_ps(1.0f / S), clear = _mm_set1_ps(clear_colour), far = _mm_set1_ps(1.0f);
-    for (int x = 0; x < width; ++x, p += 2 * S) {
+    int x = 0;
+    if constexpr (S == 4) {
+        // Four pixels at a time: per pixel (s0 + s2) + (s1 + s3) and the nearest sample, by
+        // transposing the four pixels' sample vectors; untouched pixels get the clear values.
+        const __m128i none = _mm_setzero_si128();
+        for (; x + 4 <= width; x += 4, p += 4 * 2 * S) {
+            std::uint32_t t4;
+            std::memcpy(&t4, touched + x, sizeof t4);
+            if (t4 == 0) {
+                _mm_storeu_ps(colour + x, clear), _mm_storeu_ps(z + x, far);
+                continue;
+            }
+            auto pairs = [&](int offset, auto op) {  // op over (s0, s2) and (s1, s3) of pixels 0..3
+                const __m128 q0 = _mm_loadu_ps(p + offset), q1 = _mm_loadu_ps(p + 2 * S + offset);
+                const __m128 q2 = _mm_loadu_ps(p + 4 * S + offset), q3 = _mm_loadu_ps(p + 6 * S + offset);
+                const __m128 v01 = op(_mm_unpacklo_ps(q0, q1), _mm_unpackhi_ps(q0, q1));  // (0:02, 1:02, 0:13, 1:13)
+                const __m128 v23 = op(_mm_unpacklo_ps(q2, q3), _mm_unpackhi_ps(q2, q3));
+                return op(_mm_movelh_ps(v01, v23), _mm_movehl_ps(v23, v01));
+            };
+            __m128 c = _mm_mul_ps(pairs(S, [](__m128 u, __m128 v) { return _mm_add_ps(u, v); }), inv);
+            __m128 d = pairs(0, [](__m128 u, __m128 v) { return _mm_min_ps(u, v); });
+            if (t4 != 0x01010101u) {
+                const __m128i bytes = _mm_cvtsi32_si128(static_cast<int>(t4));
+                const __m128 out = _mm_castsi128_ps(
+                    _mm_cmpeq_epi32(_mm_unpacklo_epi16(_mm_unpacklo_epi8(bytes, none), none), none));
+                c = select(out, clear, c);
+                d = select(out, far, d);
+            }
+            _mm_storeu_ps(colour + x, c), _mm_storeu_ps(z + x, d);
+        }
+    }
+    for (; x < width; ++x, p += 2 * S) {
         if (!touched[x]) {
             // Sixteen untouched pixels at once (the background).
             if (x + 16 <= width &&
@@ -347,14 +391,14 @@ void sample_store::initialise(float *pixel, float clear_colour) const {
     std::fill(pixel + samples_, pixel + 2 * samples_, clear_colour);
 }
 
-void sample_store::resolve(canvas_t &canvas, zbuffer &depth, float clear_colour) {
+void sample_store::resolve(canvas_t &canvas, zbuffer &depth, float clear_colour, [[maybe_unused]] bool portable) {
     const int S = samples_;
     const float inv = 1.0f / static_cast<float>(S);
     for (int y = origin_; y < end_; ++y) {
         const std::uint8_t *touched = touched_row(y);
         float *colour = canvas.pixels[y], *z = depth.row(y);
 #ifdef TINY3D_SSE2
-        switch (S) {
+        switch (portable ? 0 : S) {
             case 4: resolve_row_sse2<4>(pixel(0, y), touched, width_, clear_colour, colour, z); continue;
             case 8: resolve_row_sse2<8>(pixel(0, y), touched, width_, clear_colour, colour, z); continue;
             case 16: resolve_row_sse2<16>(pixel(0, y), touched, width_, clear_colour, colour, z); continue;
@@ -368,10 +412,8 @@ void sample_store::resolve(canvas_t &canvas, zbuffer &depth, float clear_colour)
                 continue;
             }
             const float *p = pixel(x, y);
-            float sum = 0.0f, nearest = p[0];
-            for (int s = 0; s < S; ++s) sum += p[S + s], nearest = std::min(nearest, p[s]);
-            colour[x] = sum * inv;
-            z[x] = nearest;
+            colour[x] = resolve_sum(p + S, S) * inv;
+            z[x] = *std::min_element(p, p + S);
         }
     }
 }

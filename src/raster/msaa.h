@@ -48,8 +48,9 @@ public:
     // A pixel's first touch: every sample := (depth 1, clear_colour).
     void initialise(float *pixel, float clear_colour) const;
     // The tile's rows: canvas := the mean of each pixel's sample colours (clear_colour when
-    // untouched), depth := the nearest sample depth (1 when untouched).
-    void resolve(canvas_t &canvas, zbuffer &depth, float clear_colour);
+    // untouched), depth := the nearest sample depth (1 when untouched). The sums run in one
+    // fixed order (portable and SSE2 alike: bit-identical); `portable` forces the scalar loop.
+    void resolve(canvas_t &canvas, zbuffer &depth, float clear_colour, bool portable = false);
 
 private:
     int width_ = 0, rows_ = 0, samples_ = 1, origin_ = 0, end_ = 0;
