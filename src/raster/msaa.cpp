@@ -203,25 +203,33 @@ void fill_rows_sse2(sample_store &store, const msaa_triangle &f, const sample_pa
     // covered sample costs less than the row span's divisions); others by each row's span.
     const int columns = f.max_x - f.min_x + 1;
     const bool scan = G == 1 && columns <= SCAN_COLUMNS;
-    for (int y = y0; y < y1; ++y) {
-        const int dy = y - f.min_y;
-        std::int64_t e64[3];
+    // The scan's row starts: the values at column 0 (offsets folded in), stepped by b per row
+    // (lane-wise wrap past the last row is harmless); the tile's rows by pointer steps.
+    auto lanes = [](std::int64_t v) { return _mm_set1_epi32(static_cast<std::int32_t>(v)); };
+    const int first_dy = y0 - f.min_y;
+    __m128i r0 = _mm_add_epi32(lanes(f.e[0] + f.b[0] * first_dy), d[0][0]);
+    __m128i r1 = _mm_add_epi32(lanes(f.e[1] + f.b[1] * first_dy), d[1][0]);
+    __m128i r2 = _mm_add_epi32(lanes(f.e[2] + f.b[2] * first_dy), d[2][0]);
+    const __m128i down0 = lanes(f.b[0]), down1 = lanes(f.b[1]), down2 = lanes(f.b[2]);
+    const __m128 plane0 = _mm_setr_ps(f.z, f.i, 0.0f, 0.0f), plane_dy = _mm_setr_ps(f.zdy, f.idy, 0.0f, 0.0f);
+    float *row_p = store.pixel(f.min_x, y0);
+    std::uint8_t *row_touched = store.touched_row(y0) + f.min_x;
+    const std::ptrdiff_t row_floats = static_cast<std::ptrdiff_t>(store.width()) * 2 * S;
+    for (int y = y0; y < y1; ++y, r0 = _mm_add_epi32(r0, down0), r1 = _mm_add_epi32(r1, down1),
+             r2 = _mm_add_epi32(r2, down2), row_p += row_floats, row_touched += store.width()) {
         int lo = 0, hi = columns - 1;
-        if (scan) {
-            for (int k = 0; k < 3; ++k) e64[k] = f.e[k] + f.b[k] * dy;
-        } else if (!off.row(f, y, e64, lo, hi)) {
-            continue;
+        std::uint32_t e[3] = {};  // (G > 1) the centre's values, 32 bits, wrapping past the row's end
+        __m128i b0 = r0, b1 = r1, b2 = r2;
+        if (!scan) {
+            std::int64_t e64[3];
+            if (!off.row(f, y, e64, lo, hi)) continue;
+            for (int k = 0; k < 3; ++k) e[k] = static_cast<std::uint32_t>(e64[k] + f.a[k] * lo);
+            b0 = lanes(e[0]), b1 = lanes(e[1]), b2 = lanes(e[2]);
+            if constexpr (G == 1) b0 = _mm_add_epi32(b0, d[0][0]), b1 = _mm_add_epi32(b1, d[1][0]), b2 = _mm_add_epi32(b2, d[2][0]);
         }
-        // 32 bits (narrow), unsigned: stepping past the row's last column wraps, never overflows.
-        std::uint32_t e[3];
-        for (int k = 0; k < 3; ++k) e[k] = static_cast<std::uint32_t>(e64[k] + f.a[k] * lo);
-        __m128i b0 = _mm_set1_epi32(static_cast<std::int32_t>(e[0])), b1 = _mm_set1_epi32(static_cast<std::int32_t>(e[1])),
-                b2 = _mm_set1_epi32(static_cast<std::int32_t>(e[2]));
-        if constexpr (G == 1) b0 = _mm_add_epi32(b0, d[0][0]), b1 = _mm_add_epi32(b1, d[1][0]), b2 = _mm_add_epi32(b2, d[2][0]);
-        std::uint8_t *touched = store.touched_row(y) + f.min_x + lo;
-        float *p = store.pixel(f.min_x + lo, y);
-        const float dy_f = static_cast<float>(dy);
-        const __m128 plane_row = _mm_setr_ps(f.z + f.zdy * dy_f, f.i + f.idy * dy_f, 0.0f, 0.0f);
+        std::uint8_t *touched = row_touched + lo;
+        float *p = row_p + static_cast<std::ptrdiff_t>(lo) * 2 * S;
+        const __m128 plane_row = _mm_add_ps(plane0, _mm_mul_ps(plane_dy, _mm_set1_ps(static_cast<float>(y - f.min_y))));
         __m128 column = _mm_set1_ps(static_cast<float>(lo));  // exactly (< 2^24)
         for (int x = lo; x <= hi; ++x, p += 2 * S, ++touched, column = _mm_add_ps(column, ones)) {
             // n[g]: the OR of the three edge values, negative in a lane whose sample is out.
