@@ -327,8 +327,10 @@ struct frame_stats {
 // Samples per pixel of a frame's filled triangles (render_context::begin_frame).
 //  x1: one sample at the pixel centre (the aliased image; the fastest).
 //  x4, x8, x16: multisampling. Coverage is decided at each sample of a fixed pattern (the
-//    4-sample rotated grid, the standard 8- and 16-sample patterns; offsets on the 1/16 px
-//    snapping grid) by the same snapped edge functions and top-left rule as x1, so a mesh
+//    4-sample rotated grid and the standard 8-sample pattern, offsets on the 1/16 px
+//    snapping grid; for 16 a 4 × 4 grid rotated by atan(1/4), every row and column distinct,
+//    centred on the pixel, offsets on that grid plus 1/32 px, exact all the same) by the
+//    same snapped edge functions and top-left rule as x1, so a mesh
 //    that shares edges covers every SAMPLE exactly once; depth is interpolated and tested
 //    per sample; the shading (intensity, texture, Phong) is evaluated once per pixel per
 //    triangle, at the pixel centre; the pixel is the mean of its samples (box resolve).

@@ -502,6 +502,63 @@ TEST(msaa_watertight_per_sample) {
             }
 }
 
+// The 16-sample pattern: a 4 × 4 rotated grid, every row and column distinct, centred on the
+// pixel (its samples at (dx + ½, dy + ½)/16 px); and the coverage the edge functions give
+// with the half step folded in equals an independent exact test in 1/32 px units (the
+// top-left rule at a tie), for random snapped triangles of either winding.
+TEST(msaa_16_pattern_is_centred_and_its_coverage_exact) {
+    const detail::sample_pattern &pat = detail::pattern_of(16);
+    CHECK(pat.half);
+    int sum_x = 0, sum_y = 0;
+    unsigned columns = 0, rows = 0;
+    for (int s = 0; s < 16; ++s) {
+        sum_x += 2 * pat.dx[s] + 1, sum_y += 2 * pat.dy[s] + 1;
+        columns |= 1u << (pat.dx[s] + 8), rows |= 1u << (pat.dy[s] + 8);
+    }
+    CHECK_EQ(sum_x, 0);
+    CHECK_EQ(sum_y, 0);
+    CHECK_EQ(columns, 0xFFFFu);
+    CHECK_EQ(rows, 0xFFFFu);
+    constexpr int W = 12, H = 10;
+    std::mt19937 rng(5);
+    std::uniform_int_distribution<int> coord(-20, 12 * 16 + 20);
+    int checked = 0, mismatches = 0, ties = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+        std::int32_t X[3], Y[3];
+        for (int k = 0; k < 3; ++k) {
+            X[k] = coord(rng), Y[k] = coord(rng);
+            if (trial % 3 == 0) X[k] &= ~7, Y[k] &= ~7;  // coarse vertices: many samples on edges
+        }
+        const triangle_edges t = detail::triangle_setup_snapped(X, Y, {0, 0, W, H}, cull_mode::none);
+        if (!t.valid) continue;
+        const std::int64_t s = t.area2 == detail::snapped_area2(X, Y) ? 1 : -1;
+        std::vector<unsigned> masks(W * H, 0);
+        detail::for_each_covered_pixel(t, pat, {0, 0, W, H}, [&](int x, int y, unsigned m) { masks[y * W + x] = m; });
+        for (int y = 0; y < H; ++y)
+            for (int x = 0; x < W; ++x) {
+                unsigned expect = 0;
+                for (int q = 0; q < 16; ++q) {
+                    // Sample and vertices in 1/32 px: exact integers.
+                    const std::int64_t qx = 2 * (16 * x + 8 + pat.dx[q]) + 1, qy = 2 * (16 * y + 8 + pat.dy[q]) + 1;
+                    bool in = true;
+                    for (int k = 0; k < 3; ++k) {
+                        const int a = (k + 1) % 3, b = (k + 2) % 3;
+                        const std::int64_t dx = s * (X[b] - X[a]), dy = s * (Y[b] - Y[a]);
+                        const std::int64_t e = dx * (qy - 2 * Y[a]) - dy * (qx - 2 * X[a]);
+                        ties += e == 0;
+                        in = in && (e > 0 || (e == 0 && (dy < 0 || (dy == 0 && dx > 0))));
+                    }
+                    expect |= static_cast<unsigned>(in) << q;
+                }
+                mismatches += masks[y * W + x] != expect;
+                ++checked;
+            }
+    }
+    CHECK(checked > 10000);
+    CHECK(ties > 0);
+    CHECK_EQ(mismatches, 0);
+}
+
 // The SSE2 kernel against the portable one: random overlapping triangles with depth, every
 // sample bit-identical; large triangles (boxes wider than 8 columns: walked by row spans)
 // and small ones (at most 8 columns: the box walked whole), some off the canvas' edges.

@@ -17,9 +17,10 @@ namespace tiny3d::detail {
 
 namespace {
 
-sample_pattern make_pattern(std::initializer_list<std::pair<int, int>> offsets) {
+sample_pattern make_pattern(std::initializer_list<std::pair<int, int>> offsets, bool half = false) {
     sample_pattern p;
     p.count = static_cast<int>(offsets.size());
+    p.half = half;
     int s = 0;
     for (const auto &[x, y] : offsets) {
         p.dx[s] = static_cast<std::int8_t>(x);
@@ -30,6 +31,7 @@ sample_pattern make_pattern(std::initializer_list<std::pair<int, int>> offsets) 
         p.min_dy = std::min(p.min_dy, y), p.max_dy = std::max(p.max_dy, y);
         ++s;
     }
+    if (half) ++p.max_dx, ++p.max_dy;  // the samples lie up to ½ beyond the largest offsets
     return p;
 }
 
@@ -363,9 +365,11 @@ const sample_pattern &pattern_of(int samples) {
     static const sample_pattern one = make_pattern({{0, 0}});
     static const sample_pattern four = make_pattern({{-2, -6}, {6, -2}, {-6, 2}, {2, 6}});
     static const sample_pattern eight = make_pattern({{1, -3}, {-1, 3}, {5, 1}, {-3, -5}, {-5, 5}, {-7, -1}, {3, 7}, {7, -7}});
+    // Sample (i, j), i, j = 0..3, at grid point (4i + j, 4j − i + 3) − 8, plus ½ (msaa.h).
     static const sample_pattern sixteen =
-        make_pattern({{1, 1}, {-1, -3}, {-3, 2}, {4, -1}, {-5, -2}, {2, 5}, {5, 3}, {3, -5},
-                      {-2, 6}, {0, -7}, {-4, -6}, {-6, 4}, {-8, 0}, {7, -4}, {6, 7}, {-7, -8}});
+        make_pattern({{-8, -5}, {-7, -1}, {-6, 3}, {-5, 7}, {-4, -6}, {-3, -2}, {-2, 2}, {-1, 6},
+                      {0, -7}, {1, -3}, {2, 1}, {3, 5}, {4, -8}, {5, -4}, {6, 0}, {7, 4}},
+                     true);
     switch (samples) {
         case 4: return four;
         case 8: return eight;
@@ -446,7 +450,7 @@ bool make_msaa_triangle(const triangle_edges &t, const sample_pattern &pat, pixe
     msaa_bounds(t, pat, clip, out.min_x, out.max_x, out.min_y, out.max_y);
     if (out.min_x > out.max_x || out.min_y > out.max_y) return false;
     for (int k = 0; k < 3; ++k) {
-        out.e[k] = t.c[k] + t.a[k] * out.min_x + t.b[k] * out.min_y;
+        out.e[k] = t.c[k] + t.a[k] * out.min_x + t.b[k] * out.min_y + (pat.half ? msaa_half_step(t.a[k], t.b[k]) : 0);
         out.a[k] = t.a[k];
         out.b[k] = t.b[k];
     }
@@ -455,6 +459,8 @@ bool make_msaa_triangle(const triangle_edges &t, const sample_pattern &pat, pixe
     float planes[6];
     attribute_planes_at(t.x, t.y, out.min_x, out.min_y, depth, intensity, planes);
     out.z = planes[0], out.zdx = planes[1], out.zdy = planes[2];
+    // A half pattern's depth at sample s: the plane at its grid point plus the half step.
+    if (pat.half) out.z += (out.zdx + out.zdy) * (0.5f / RASTER_SUBPIXEL_ONE);
     out.i = planes[3], out.idx = planes[4], out.idy = planes[5];
     return true;
 }

@@ -16,13 +16,30 @@ inline constexpr int MSAA_MAX_SAMPLES = 16;
 
 // Sample offsets from the pixel centre in 1/16 px (y down), on the snapping grid, so the
 // edge functions at every sample are exact integers: the standard 4-sample rotated grid and
-// 8- and 16-sample patterns (those of Direct3D 10.1 / Vulkan's standard sample locations).
+// 8-sample pattern (those of Direct3D 10.1 / Vulkan's standard sample locations), and for 16
+// a 4 × 4 grid rotated by atan(1/4) (every row and column distinct) whose samples sit at
+// (dx + ½, dy + ½)/16 (`half`): sixteen distinct columns of a 1/16 grid cannot be centred
+// on the pixel (the standard 16-sample pattern's mean is (−1/32, −1/32) px), sixteen of the
+// half-shifted grid can. The half step is exact too: make_msaa_triangle folds it into each
+// edge's constant (msaa_half_step) and the depth plane's, so the kernels see integer offsets.
 struct sample_pattern {
     int count = 1;
+    bool half = false;  // samples at (dx + ½, dy + ½)/16 px from the centre
     std::int8_t dx[MSAA_MAX_SAMPLES] = {}, dy[MSAA_MAX_SAMPLES] = {};
     alignas(16) float fdx[MSAA_MAX_SAMPLES] = {}, fdy[MSAA_MAX_SAMPLES] = {};  // dx/16, dy/16 (px), exact
-    int min_dx = 0, max_dx = 0, min_dy = 0, max_dy = 0;
+    int min_dx = 0, max_dx = 0, min_dy = 0, max_dy = 0;  // offsets' bounds (1/16 px; half: max + 1)
 };
+
+// With a `half` pattern: what moving a sample by (½, ½)/16 px adds to an edge function of
+// steps a, b per pixel (triangle_edges, top-left biased) so that "inside" stays E ≥ 0 on
+// integers. The exact change h = (a + b)/32 is an integer or an integer plus ½; in the second
+// case no sample lies on the edge, so the tie rule no longer applies and the bias is undone.
+inline std::int64_t msaa_half_step(std::int64_t a, std::int64_t b) {
+    const std::int64_t twice = a / RASTER_SUBPIXEL_ONE + b / RASTER_SUBPIXEL_ONE;  // 2h = dX − dY (1/16 px units)
+    if (twice % 2 == 0) return twice / 2;
+    const bool biased = !top_left_edge(b / RASTER_SUBPIXEL_ONE, -a / RASTER_SUBPIXEL_ONE);
+    return (twice - 1) / 2 + (biased ? 1 : 0);  // floor(h), and E_b + bias = the unbiased E
+}
 // The pattern of 1, 4, 8 or 16 samples (1: the pixel centre); other counts give the centre.
 const sample_pattern &pattern_of(int samples);
 
@@ -111,7 +128,8 @@ void for_each_covered_pixel(const triangle_edges &t, const sample_pattern &pat, 
     std::int64_t d[3][MSAA_MAX_SAMPLES];
     for (int k = 0; k < 3; ++k)
         for (int s = 0; s < pat.count; ++s)
-            d[k][s] = t.a[k] / RASTER_SUBPIXEL_ONE * pat.dx[s] + t.b[k] / RASTER_SUBPIXEL_ONE * pat.dy[s];
+            d[k][s] = t.a[k] / RASTER_SUBPIXEL_ONE * pat.dx[s] + t.b[k] / RASTER_SUBPIXEL_ONE * pat.dy[s] +
+                      (pat.half ? msaa_half_step(t.a[k], t.b[k]) : 0);
     for (int y = y0; y <= y1; ++y)
         for (int x = x0; x <= x1; ++x) {
             unsigned mask = 0;

@@ -105,9 +105,10 @@ void draw_generic_samples(sample_store &tile, const sample_pattern &pat, float c
     const float zv[3] = {g.v[0].z, g.v[1].z, g.v[2].z};
     float zdx, zdy, dz[MSAA_MAX_SAMPLES];
     screen_gradient(g.v, zv, zdx, zdy);
+    const float half = pat.half ? 0.5f : 0.0f;  // the sample's offset beyond its grid point (msaa.h)
     for (int k = 0; k < S; ++k)
-        dz[k] = zdx * (static_cast<float>(pat.dx[k]) / RASTER_SUBPIXEL_ONE) +
-                zdy * (static_cast<float>(pat.dy[k]) / RASTER_SUBPIXEL_ONE);
+        dz[k] = zdx * ((static_cast<float>(pat.dx[k]) + half) / RASTER_SUBPIXEL_ONE) +
+                zdy * ((static_cast<float>(pat.dy[k]) + half) / RASTER_SUBPIXEL_ONE);
     const double inv_area = 1.0 / static_cast<double>(t.area2);
     for_each_covered_pixel(t, pat, band, [&](int x, int y, unsigned mask) {
         // Barycentrics of the centre (unbiased edge values, as rasterize_triangle).
