@@ -87,12 +87,13 @@ $(BUILD)/san/tests/%: $(BUILD)/san/obj/tests/%.o $(SAN_LIB)
 	@mkdir -p $(@D)
 	$(CXX) $(STD) $(SANFLAGS) $< $(SAN_LIB) -o $@ $(LDLIBS)
 
-# chart_test tests the benchmarks' library (charts, font, CSV) too.
-$(BUILD)/tests/chart_test: $(BUILD)/obj/tests/chart_test.o $(BENCH_LIB) $(LIB)
+# These test the benchmarks' library too (charts, font, CSV; the analytic-coverage prototype).
+BENCH_LINKED_TESTS := chart_test analytic_coverage_test
+$(BENCH_LINKED_TESTS:%=$(BUILD)/tests/%): $(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(BENCH_LIB) $(LIB)
 	@mkdir -p $(@D)
 	$(CXX) $(STD) $(OPT) $< $(BENCH_LIB) $(LIB) -o $@ $(LDLIBS)
 
-$(BUILD)/san/tests/chart_test: $(BUILD)/san/obj/tests/chart_test.o $(SAN_BENCH_LIB) $(SAN_LIB)
+$(BENCH_LINKED_TESTS:%=$(BUILD)/san/tests/%): $(BUILD)/san/tests/%: $(BUILD)/san/obj/tests/%.o $(SAN_BENCH_LIB) $(SAN_LIB)
 	@mkdir -p $(@D)
 	$(CXX) $(STD) $(SANFLAGS) $< $(SAN_BENCH_LIB) $(SAN_LIB) -o $@ $(LDLIBS)
 

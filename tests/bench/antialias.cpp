@@ -2,7 +2,8 @@
 // (Scene S protocol, documentation/benchmarks.md: 1024², camera (0, 0, 3), fov 45°, Gouraud Lambert, depth LESS,
 // back-face culling, mesh turned 1° about +y per frame, 5 warm-up + 50 timed frames) at
 // icosphere level 6 and the 3,696-triangle torus knot, rows 1x, 4x, 8x, 16x (samples per
-// pixel) with one and two threads; and a textured plane at a grazing angle, bilinear
+// pixel) with one and two threads, and `analytic` (exact area coverage, a prototype in
+// common/analytic_coverage.h; one thread); and a textured plane at a grazing angle, bilinear
 // against trilinear.
 //
 // Error: the frame at angle 0 against render_reference (raster_reference.h: 16 × 16 = 256
@@ -19,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "common/analytic_coverage.h"
 #include "common/bench.h"
 #include "raster_reference.h"
 #include "renderer.h"
@@ -55,21 +57,28 @@ scene make_scene(const mesh &m) {
     return s;
 }
 
-// Times frames (the mesh turned 1° per frame), then draws the frame at angle 0 into canvas.
-bench::timing time_frames(scene &s, int threads, sample_count n, canvas_t &canvas, int frames) {
-    render_context ctx(threads);
+// Times frames drawn by draw() (the mesh turned 1° per frame), then draws the frame at angle 0.
+template <class Draw>
+bench::timing time_turning(scene &s, int frames, Draw &&draw) {
     int frame = 0;
     auto render = [&] {
         s.params.model = mat4_rotate_y(static_cast<float>(frame++ * M_PI / 180));
-        if (!ctx.begin_frame(canvas, 0.0f, n).ok()) return;
-        ctx.draw(s.mesh, s.params);
-        ctx.end_frame();
+        draw();
     };
     for (int k = 0; k < WARMUP_FRAMES - 1; ++k) render();  // measure_ns adds one more
     const bench::timing t = bench::measure_ns(frames, NS_PER_MS, render);
     frame = 0;
     render();
     return t;
+}
+
+bench::timing time_frames(scene &s, int threads, sample_count n, canvas_t &canvas, int frames) {
+    render_context ctx(threads);
+    return time_turning(s, frames, [&] {
+        if (!ctx.begin_frame(canvas, 0.0f, n).ok()) return;
+        ctx.draw(s.mesh, s.params);
+        ctx.end_frame();
+    });
 }
 
 struct image_error {
@@ -178,6 +187,16 @@ int main(int argc, char **argv) {
                             e.edge_max, "grey levels",
                             same_image(*one, *two) ? "image identical to 1 thread" : "IMAGE DIFFERS FROM 1 THREAD"});
         }
+        // The analytic-coverage prototype (common/analytic_coverage.h): exact area per pixel,
+        // front to back with saturating coverage; one thread.
+        bench::analytic_renderer analytic;
+        const bench::timing ta = time_turning(s, frames, [&] { analytic.render(*one, s.mesh, s.params, 0.0f); });
+        const image_error ea = error_against(*one, *reference, coverage.get());
+        rows.push_back({"antialias", w.name + " analytic 1 thread", "fast", "ms/frame", ta, ea.edge_mean, ea.edge_max,
+                        "grey levels",
+                        "exact area, front to back saturating; all pixels: mean " + fixed(ea.all_mean, 3) + " max " +
+                            fixed(ea.all_max, 1) + "; " + std::to_string(ea.edge_pixels) + " silhouette px; " +
+                            std::to_string(analytic.skipped()) + " triangles skipped"});
     }
     // The grazing plane: bilinear (the faithful filter) against trilinear, one sample per pixel.
     plane_scene plane = make_plane();
