@@ -454,7 +454,8 @@ bool make_msaa_triangle(const triangle_edges &t, const sample_pattern &pat, pixe
         out.a[k] = t.a[k];
         out.b[k] = t.b[k];
     }
-    // Sample points lie within 16/16 px of the snapped box: |E| < 2·(span + 16)·span < 2^31.
+    // Sample points lie within 16/16 px of the snapped box: |E| < 2·(span + 16)·span + span
+    // < 2^31 (the last term: a half pattern's step, |h| ≤ (|dX| + |dY|)/2 + 1).
     out.narrow = t.span_x < FAST_SPAN_LIMIT && t.span_y < FAST_SPAN_LIMIT;
     float planes[6];
     attribute_planes_at(t.x, t.y, out.min_x, out.min_y, depth, intensity, planes);
