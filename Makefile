@@ -110,11 +110,13 @@ include tests/compat/compat.mk
 # with every SIMD path off (-DTINY3D_PORTABLE, src/simd_config.h) into $(BUILD)/portable/
 # (plain -O2, no sanitizer build) and run, so the portable reference kernels that the SIMD
 # kernels are tested against keep building and passing. First checks that every SIMD guard
-# in the tree goes through src/simd_config.h (tests/check_simd_guards.sh).
+# in the tree goes through src/simd_config.h (tests/check_simd_guards.sh) and that the
+# modules include each other one way (tests/check_header_layers.sh).
 PORTABLE_BUILD := $(BUILD)/portable
 plain-tests: $(TEST_BINS) $(DEMO_BINS) $(COMPAT_BINS)
 test-portable:
 	@bash tests/check_simd_guards.sh
+	@bash tests/check_header_layers.sh
 	@$(MAKE) --no-print-directory $(PARALLEL) BUILD=$(PORTABLE_BUILD) SIMD_FLAGS=-DTINY3D_PORTABLE plain-tests
 	@BUILD=$(PORTABLE_BUILD) bash tests/run_tests.sh $(TEST_SRCS:tests/%.cpp=$(PORTABLE_BUILD)/tests/%)
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "canvas.h"
+#include "lines.h"
 #include "common/demo_cli.h"
 
 namespace {

@@ -11,8 +11,9 @@
 #include <string>
 
 #include "canvas.h"
-#include "common/demo_cli.h"
+#include "lines.h"
 #include "math3d.h"
+#include "common/demo_cli.h"
 
 namespace {
 

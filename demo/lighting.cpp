@@ -22,6 +22,12 @@
 
 #include "common/demo_cli.h"
 #include "animation.h"
+#include "canvas.h"
+#include "lighting.h"
+#include "math3d.h"
+#include "mesh.h"
+#include "pipeline.h"
+#include "raster.h"
 #include "scene.h"
 
 namespace {

@@ -12,8 +12,8 @@
 #include <string>
 
 #include "common/demo_cli.h"
-#include "loaders.h"
-#include "renderer.h"
+#include "lab.h"
+#include "mesh.h"
 
 namespace {
 

@@ -20,8 +20,13 @@
 #include <vector>
 
 #include "common/demo_cli.h"
-#include "loaders.h"
-#include "renderer.h"
+#include "canvas.h"
+#include "lighting.h"
+#include "lines.h"
+#include "math3d.h"
+#include "mesh.h"
+#include "raster.h"
+#include "wireframe.h"
 
 namespace {
 

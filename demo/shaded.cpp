@@ -8,7 +8,11 @@
 #include <vector>
 
 #include "common/demo_cli.h"
-#include "renderer.h"
+#include "canvas.h"
+#include "lighting.h"
+#include "math3d.h"
+#include "mesh.h"
+#include "raster.h"
 
 namespace {
 

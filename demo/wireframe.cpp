@@ -12,7 +12,11 @@
 #include <string>
 
 #include "common/demo_cli.h"
-#include "renderer.h"
+#include "canvas.h"
+#include "lines.h"
+#include "math3d.h"
+#include "mesh.h"
+#include "wireframe.h"
 
 namespace {
 

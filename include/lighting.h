@@ -16,10 +16,8 @@
 
 #include <cmath>
 #include <span>
-#include <vector>
 
 #include "math3d.h"
-#include "mesh.h"
 #include "tiny3d_result.h"
 
 namespace tiny3d {
@@ -48,7 +46,7 @@ typedef struct light_t {
 // A zero-length edge or zero light direction gives 0 (no NaN). Known flaw, kept on purpose
 // and measured by tests/bench/edge_lighting.cpp: an edge direction is not a surface normal
 // and has no preferred sign, so under any light about half of a wireframe's edges come out
-// black (and an edge lying along the light is fully lit). tiny3d::edge_normals plus
+// black (and an edge lying along the light is fully lit). tiny3d::mesh_edge_normals plus
 // tiny3d::shade_edge is the corrected model.
 float lambert_intensity(vec3_t start, vec3_t end, vec3_t light_dir);
 
@@ -126,14 +124,10 @@ enum class edge_lighting {
     face_normals,      // corrected: the edge's normal = mean of its adjacent faces' normals
 };
 
-// The corrected model's normal of every edge of m.edges (same order): the unit mean of the
-// unit normals of the faces that border it (two for a closed mesh). An edge with no face,
-// or whose faces' normals cancel, gets (0, 0, 0) and is then lit by the ambient term only.
-// Needs m.edges derived (mesh_derive_edges). Computed once per mesh, in model space.
-std::vector<vec3_t> edge_normals(const mesh &m);
-
 // Intensity of the edge a–b (world space) under the corrected model: shade_point at the
-// edge's midpoint with its world-space unit normal. With ambient > 0 no edge is ever black.
+// edge's midpoint with its world-space unit normal (mesh_edge_normals, mesh.h, gives the
+// model-space ones once per mesh; an edge with no face has (0, 0, 0) and is lit by the
+// ambient term only). With ambient > 0 no edge is ever black.
 inline float shade_edge(const light_rig &rig, vec3_t a, vec3_t b, vec3_t unit_edge_normal) {
     return shade_point(rig, (a + b) * 0.5f, unit_edge_normal);
 }

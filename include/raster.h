@@ -1,6 +1,7 @@
 // raster.h — filled triangles: z-buffer, half-space and scan-line rasterizers, culling,
-// triangle clipping, shading levels, textures, transparency, tiled two-thread rendering,
-// and the PLY ray-cast lab (seed 002). Part of the renderer module (renderer.h includes it).
+// shading levels, textures, transparency, multisampling, cluster culling, the render
+// context (banded, multi-threaded) and its converged reference image. Triangles are
+// clipped by the vertex stage (pipeline.h). Implementations: src/raster/.
 //
 // Conventions (pinned by tests/raster_test.cpp):
 //  * Screen space: pixels, origin top-left, y down; pixel (x, y) covers [x, x+1) × [y, y+1)
@@ -35,7 +36,6 @@
 #include "lighting.h"
 #include "math3d.h"
 #include "mesh.h"
-#include "pipeline.h"
 #include "tiny3d_result.h"
 
 namespace tiny3d {
@@ -380,41 +380,41 @@ private:
     std::unique_ptr<impl> impl_;
 };
 
-// ---- the PLY ray-cast lab (seed 002) ----------------------------------------------------
+// ---- the reference image (src/raster/raster_reference.cpp) ----------------------------
+//
+// The converged image of a filled scene: the yardstick every anti-aliasing mode and texture
+// filter of the render context is measured against (tests/antialias_test.cpp,
+// tests/bench/antialias.cpp).
+//
+// An independent, deliberately simple implementation in double precision: no snapping, no
+// fixed point, no bands or threads. Each pixel gets N = n² samples on a rank-1 lattice:
+// sample k of pixel (px, py) at (px + frac(½ + k/φ), py + (k + ½)/N), φ the golden ratio —
+// one sample in each of the N rows of height 1/N, and well spread along x for every edge
+// direction (a plain or sheared n × n grid counts edges near its own directions in steps
+// of 1/n; this lattice has no such direction) — and every
+// sample is depth-tested and shaded on its own (depth, barycentrics and attributes at the
+// sample); the pixel is the box-filtered mean of its samples. Shading follows draw_params
+// (above): flat per triangle, Gouraud intensities interpolated screen-affine, Phong
+// position and normal interpolated per sample; a texture is looked up bilinearly in its
+// BASE level at every sample (the supersampled texture, whatever the draw's filter);
+// perspective_correct as in the draw. Clipping: near and far planes in clip space (double),
+// attributes interpolated linearly in clip space; x and y are cut by the canvas.
+// Cull mode and depth function as in each draw.
 
-inline constexpr int LAB_IMAGE_SIDE = 256;
-
-// The lab's camera: bounding box centre and extent E, the rotated camera and up vectors
-// (eq. 1–4) and the image rectangle (eq. 5–12), in double precision.
-struct lab_camera {
-    double center[3], extent;
-    double camera[3], up[3];
-    double left[3], right[3], top[3], bottom[3], topleft[3];
+struct reference_draw {
+    const raster_mesh *mesh = nullptr;
+    draw_params params;
 };
 
-// Builds the lab camera for mesh positions and rotation angles in RADIANS (X, then Y,
-// then Z, eq. 1–3 applied as Rz·Ry·Rx). Error when the mesh has no finite position.
-result<lab_camera> ply_lab_camera(const mesh &m, double rx, double ry, double rz);
+inline constexpr int REFERENCE_SAMPLES_PER_AXIS = 16;  // 256 samples per pixel
 
-// A lab image: side × side bytes, row-major, 0 = background, 155 + (i mod 100) for the
-// triangle i (faces fan-split in file order) nearest along the pixel's ray.
-struct lab_image {
-    int width = 0, height = 0;
-    std::vector<std::uint8_t> pixels;
-};
-
-// The faithful method: for each pixel the ray through eq. 13, every triangle tested with
-// eq. 14–21, z-buffer on n/d (a later triangle wins exact ties, as the lab's "greater
-// than" test implies); rays within 1e-9 relative of parallel to a plane skip it.
-lab_image raycast_lab(const mesh &m, const lab_camera &cam, int side = LAB_IMAGE_SIDE);
-
-// The fast path: the same per-pixel tests, but each triangle only visits the pixels of its
-// projected bounding box (projection through the lab camera, widened by 2 px). The image
-// is identical to raycast_lab's (same arithmetic, same order per pixel).
-lab_image render_lab_fast(const mesh &m, const lab_camera &cam, int side = LAB_IMAGE_SIDE);
-
-// Writes the lab image as P6 PPM (grey: r = g = b) or, when path ends in ".pgm", as P5.
-status save_lab_image(const lab_image &img, const std::string &path);
+// Clears `target` to clear_intensity (depth to 1) and draws `draws` in order. Slow by design
+// (every sample shaded in double) and allocating (a band of sample buffers); for tests and benchmarks.
+// Errors: canvas without pixels, samples_per_axis outside 1..64, a null mesh, a mesh whose
+// normals or uvs count differs from its positions, a triangle index out of range, a
+// translucent draw (alpha < 1: not supported).
+status render_reference(canvas_t &target, std::span<const reference_draw> draws, float clear_intensity = 0.0f,
+                        int samples_per_axis = REFERENCE_SAMPLES_PER_AXIS);
 
 }  // namespace tiny3d
 

@@ -24,8 +24,9 @@
 #include "lighting.h"
 #include "math3d.h"
 #include "mesh.h"
-#include "renderer.h"
+#include "raster.h"
 #include "tiny3d_result.h"
+#include "wireframe.h"
 
 namespace tiny3d {
 

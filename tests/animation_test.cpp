@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "animation.h"
+#include "math3d.h"
 #include "harness.h"
 
 namespace {

@@ -10,9 +10,12 @@
 #include "../src/raster/msaa.h"
 #include "alloc_tracker.h"
 #include "harness.h"
-#include "raster_reference.h"
+#include "canvas.h"
+#include "lighting.h"
+#include "math3d.h"
+#include "mesh.h"
+#include "raster.h"
 #include "raster_test_util.h"
-#include "renderer.h"
 
 using namespace tiny3d;
 using raster_test::constant_light;

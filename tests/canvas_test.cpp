@@ -12,6 +12,7 @@
 #include <string>
 
 #include "canvas.h"
+#include "lines.h"
 
 TEST(create_canvas_contiguous_rows) {
     canvas_t *c = create_canvas(7, 5);

@@ -16,7 +16,12 @@
 
 #include "harness.h"
 #include "program_runner.h"
-#include "renderer.h"
+#include "canvas.h"
+#include "lighting.h"
+#include "math3d.h"
+#include "mesh.h"
+#include "raster.h"
+#include "wireframe.h"
 
 using namespace tiny3d;
 

@@ -4,8 +4,13 @@
 #include <cmath>
 
 #include "harness.h"
-#include "renderer.h"
+#include "canvas.h"
+#include "lighting.h"
+#include "math3d.h"
+#include "mesh.h"
+#include "raster.h"
 #include "scene.h"
+#include "wireframe.h"
 
 using namespace tiny3d;
 

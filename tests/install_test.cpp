@@ -136,9 +136,17 @@ TEST(readme_program_builds_against_the_tree_and_from_a_staged_install) {
     r = run_shell(make + " install", dir.path);
     CHECK_MSG(r.exit_code == 0, "make install failed: " + r.err);
     const fs::path root = stage / "opt/tiny3d";
-    for (const char *file : {"include/tiny3d/tiny3d.h", "include/tiny3d/canvas.h", "include/tiny3d/compat/math_alias.h",
-                             "lib/libtiny3d.a", "lib/pkgconfig/tiny3d.pc"})
+    for (const char *file : {"include/tiny3d/tiny3d.h", "lib/libtiny3d.a", "lib/pkgconfig/tiny3d.pc"})
         CHECK_MSG(fs::is_regular_file(root / file), std::string(file) + " not installed");
+    // Every header of the tree (the module headers, renderer.h, the compat headers), in place.
+    std::size_t headers = 0;
+    for (const auto &entry : fs::recursive_directory_iterator("include")) {
+        if (!entry.is_regular_file() || entry.path().extension() != ".h") continue;
+        ++headers;
+        const fs::path installed = root / "include/tiny3d" / fs::relative(entry.path(), "include");
+        CHECK_MSG(fs::is_regular_file(installed), installed.string() + " not installed");
+    }
+    CHECK(headers >= 20);
 
     // 3. tiny3d.pc as written: the final paths (PREFIX, not DESTDIR), the flags a build needs.
     const auto pc = read_pc(file_bytes(root / "lib/pkgconfig/tiny3d.pc"));

@@ -7,6 +7,8 @@
 
 #include "harness.h"
 #include "lighting.h"
+#include "math3d.h"
+#include "mesh.h"
 
 namespace {
 
@@ -203,7 +205,7 @@ double reference_brightness(const edge_reference &r, const double light[3]) {
 
 TEST(edge_normals_of_a_cube_are_the_mean_of_two_faces) {
     const tiny3d::mesh cube = tiny3d::make_cube(1.0f);
-    const auto normals = tiny3d::edge_normals(cube);
+    const auto normals = tiny3d::mesh_edge_normals(cube);
     CHECK_EQ(normals.size(), std::size_t(12));
     const double h = 1.0 / std::sqrt(2.0);
     for (std::size_t e = 0; e < cube.edges.size(); ++e) {
@@ -220,7 +222,7 @@ TEST(edge_normals_of_a_lone_edge_are_zero) {
     tiny3d::mesh m;
     m.positions = {{0, 0, 0}, {1, 0, 0}};
     m.edges = {{0, 1}};
-    const auto normals = tiny3d::edge_normals(m);
+    const auto normals = tiny3d::mesh_edge_normals(m);
     CHECK(normals.size() == 1 && normals[0] == (vec3_t{0, 0, 0}));
 }
 
@@ -228,7 +230,7 @@ TEST(soccer_ball_corrected_model_never_black_faithful_half_black) {
     // 100 seeded random light directions (uniform on the sphere), ambient 0.1.
     const tiny3d::mesh ball = tiny3d::make_soccer_ball(1.0f);
     CHECK_EQ(ball.edges.size(), std::size_t(90));
-    const auto normals = tiny3d::edge_normals(ball);
+    const auto normals = tiny3d::mesh_edge_normals(ball);
     const auto ref = reference_edges(ball);
     constexpr float AMBIENT = 0.1f;
     std::mt19937 rng(6);

@@ -13,8 +13,11 @@
 #include <vector>
 
 #include "canvas.h"
+#include "lines.h"
+#include "math3d.h"
+#include "mesh.h"
+#include "wireframe.h"
 #include "line_test_util.h"
-#include "renderer.h"
 
 namespace {
 

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "canvas.h"
+#include "lines.h"
 #include "line_test_util.h"
 
 namespace {

@@ -6,7 +6,8 @@
 #include <vector>
 
 #include "harness.h"
-#include "loaders.h"
+#include "math3d.h"
+#include "mesh.h"
 
 using namespace tiny3d;
 

@@ -7,7 +7,9 @@
 #include <vector>
 
 #include "harness.h"
-#include "renderer.h"
+#include "canvas.h"
+#include "math3d.h"
+#include "mesh.h"
 
 using namespace tiny3d;
 

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "canvas.h"
+#include "lines.h"
 #include "math3d.h"
 #include "math3d_reference.h"
 

@@ -8,7 +8,8 @@
 #include <utility>
 
 #include "harness.h"
-#include "renderer.h"
+#include "math3d.h"
+#include "mesh.h"
 
 using namespace tiny3d;
 

@@ -7,7 +7,12 @@
 #include <vector>
 
 #include "harness.h"
-#include "renderer.h"
+#include "canvas.h"
+#include "lines.h"
+#include "math3d.h"
+#include "mesh.h"
+#include "pipeline.h"
+#include "wireframe.h"
 
 using namespace tiny3d;
 

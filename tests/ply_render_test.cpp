@@ -9,8 +9,10 @@
 #include <string>
 
 #include "harness.h"
-#include "loaders.h"
-#include "renderer.h"
+#include "canvas.h"
+#include "lab.h"
+#include "math3d.h"
+#include "mesh.h"
 
 using namespace tiny3d;
 

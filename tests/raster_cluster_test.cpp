@@ -7,8 +7,13 @@
 #include <vector>
 
 #include "harness.h"
+#include "canvas.h"
+#include "lighting.h"
+#include "math3d.h"
+#include "mesh.h"
+#include "pipeline.h"
+#include "raster.h"
 #include "raster_test_util.h"
-#include "renderer.h"
 
 using namespace tiny3d;
 

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <span>
 
-#include "renderer.h"
+#include "raster.h"
 
 namespace raster_test {
 

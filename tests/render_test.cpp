@@ -10,7 +10,8 @@
 
 #include "harness.h"
 #include "program_runner.h"
-#include "renderer.h"
+#include "math3d.h"
+#include "mesh.h"
 
 using namespace program_runner;
 

@@ -16,7 +16,7 @@
 
 #include "harness.h"
 #include "program_runner.h"
-#include "renderer.h"
+#include "canvas.h"
 
 namespace fs = std::filesystem;
 using program_runner::file_bytes;

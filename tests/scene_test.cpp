@@ -4,8 +4,15 @@
 #include <vector>
 
 #include "animation.h"
-#include "harness.h"
+#include "canvas.h"
+#include "lighting.h"
+#include "math3d.h"
+#include "mesh.h"
+#include "pipeline.h"
+#include "raster.h"
 #include "scene.h"
+#include "wireframe.h"
+#include "harness.h"
 
 namespace {
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "harness.h"
+#include "math3d.h"
 #include "mesh.h"
 #include "raster.h"
 

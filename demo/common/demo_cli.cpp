@@ -11,7 +11,11 @@
 #include <filesystem>
 #include <system_error>
 
+#include "animation.h"
 #include "canvas.h"  // save_pgm, save_png
+#include "math3d.h"
+#include "raster.h"
+#include "wireframe.h"
 
 namespace demo {
 namespace {

@@ -31,9 +31,9 @@
 #include "animation.h"
 #include "canvas.h"
 #include "math3d.h"
-#include "pipeline.h"
 #include "raster.h"
 #include "tiny3d_result.h"
+#include "wireframe.h"
 
 namespace demo {
 

@@ -8,7 +8,7 @@
 // already compile against the float form (int → float), while an int overload would make
 // mixed calls such as (c, 1.5f, 2) ambiguous. project_vertex, render_wireframe and
 // generate_soccer_ball have no form shared between implementations; the report's are
-// the ones declared (pipeline.h, mesh.h). documentation/compat.md has the full table.
+// the ones declared (pipeline.h, wireframe.h, mesh.h). documentation/compat.md has the full table.
 #ifndef TINY3D_COMPAT_RENDERER_ALIAS_H
 #define TINY3D_COMPAT_RENDERER_ALIAS_H
 

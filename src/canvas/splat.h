@@ -1,6 +1,7 @@
 // splat.h — (internal) the report's bilinear splat, inline so the faithful line's inner
 // loop (a disc of splats every 0.5 px) does not pay a call and libm floorf per splat.
 // set_pixel_f (canvas.cpp) is this function; the pixels are bit-identical either way.
+// Also floor_to_int, which the line drawers (src/lines/) use too.
 #ifndef TINY3D_SPLAT_H
 #define TINY3D_SPLAT_H
 
@@ -8,11 +9,19 @@
 
 #include "canvas.h"
 #include "math3d.h"
-#include "../lines/line_clip.h"
 
 namespace tiny3d::detail {
 
 using tiny3d::clamp01;  // math3d.h
+
+// floor(v) as an int for |v| < 2^31: truncate, then step down for negative non-integers
+// (exact, unlike adding an offset first, which can round; and no libm call, which
+// std::floor is on baseline x86-64).
+template <class T>
+inline int floor_to_int(T v) {
+    const int t = static_cast<int>(v);
+    return t - (v < static_cast<T>(t) ? 1 : 0);
+}
 
 // The report's set_pixel_f in the report's convention (integer coordinates are pixel
 // centres): x0 = floor(x), dx = x − x0, and pixel (x0 + i, y0 + j), i, j ∈ {0, 1}, gains

@@ -7,7 +7,9 @@
 #include <string>
 
 #include "../math3d/dvec3.h"
-#include "raster.h"
+#include "canvas.h"  // write_file_atomic
+#include "lab.h"
+#include "mesh.h"
 
 namespace tiny3d {
 

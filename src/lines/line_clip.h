@@ -104,15 +104,6 @@ inline bool clip_segment(double x0, double y0, double x1, double y1, double xmin
     return near_box(out.x0, out.y0) && near_box(out.x1, out.y1);
 }
 
-// floor(v) as an int for |v| < 2^31: truncate, then step down for negative non-integers
-// (exact, unlike adding an offset first, which can round; and no libm call, which
-// std::floor is on baseline x86-64).
-template <class T>
-inline int floor_to_int(T v) {
-    const int t = static_cast<int>(v);
-    return t - (v < static_cast<T>(t) ? 1 : 0);
-}
-
 // The "over" combine used by the anti-aliased lines: v ← v + c·(1 − v), for c, v in 0..1.
 // c is clamped to 0..1 so float rounding of a coverage (1 + 1 ulp, or −1 ulp where a
 // band's two CDF terms nearly cancel) never lifts a pixel above 1 or below 0.

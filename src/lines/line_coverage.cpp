@@ -15,8 +15,10 @@
 #include <vector>
 
 #include "canvas.h"
+#include "lines.h"
 #include "coverage_geometry.h"
 #include "line_clip.h"
+#include "../canvas/splat.h"  // floor_to_int
 #include "square_cdf.h"
 #include "stroke_outline.h"
 

@@ -3,6 +3,7 @@
 #include <cstdint>
 
 #include "canvas.h"
+#include "lines.h"
 #include "line_clip.h"
 #include "../canvas/splat.h"
 

@@ -1,4 +1,4 @@
-// line_tabulated.cpp — the tabulated thick line (include/canvas.h): the stroke of
+// line_tabulated.cpp — the tabulated thick line (include/lines.h): the stroke of
 // draw_line_coverage with the pixels near its ends interpolated from a table of exact
 // end corrections instead of integrated.
 //

@@ -17,7 +17,9 @@
 #include <cstdint>
 
 #include "canvas.h"
+#include "lines.h"
 #include "line_clip.h"
+#include "../canvas/splat.h"  // floor_to_int
 #include "square_cdf.h"
 #include "../simd_config.h"
 

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "canvas.h"
+#include "lines.h"
 #include "line_clip.h"
 
 namespace tiny3d {

@@ -6,8 +6,9 @@
 #include <cmath>
 #include <cstring>
 
+#include "canvas.h"  // read_file_bytes: the library's one file reader
 #include "loader_util.h"
-#include "loaders.h"
+#include "mesh.h"
 
 namespace tiny3d {
 

@@ -10,7 +10,7 @@
 #include <string_view>
 #include <unordered_map>
 
-#include "loaders.h"
+#include "mesh.h"
 #include "tiny3d_result.h"
 
 namespace tiny3d::loader {

@@ -1,4 +1,4 @@
-// mesh.cpp — mesh utilities: unique edges, face / vertex normals, edge adjacency, bounds,
+// mesh.cpp — mesh utilities: unique edges, face / vertex / edge normals, edge adjacency, bounds,
 // validation. See include/mesh.h. Triangulation: triangulate.cpp.
 #include <algorithm>
 #include <cmath>
@@ -145,6 +145,18 @@ edge_adjacency mesh_edge_faces(const mesh &m) {
             });
     }
     return adj;
+}
+
+std::vector<vec3_t> mesh_edge_normals(const mesh &m) {
+    const std::vector<vec3_t> face_normals = mesh_face_normals(m);
+    const edge_adjacency adjacency = mesh_edge_faces(m);
+    std::vector<vec3_t> normals(m.edges.size(), vec3_t{0.0f, 0.0f, 0.0f});
+    for (std::size_t e = 0; e < m.edges.size(); ++e) {
+        vec3_t sum = {0.0f, 0.0f, 0.0f};
+        for (const std::uint32_t *f = adjacency.begin(e); f != adjacency.end(e); ++f) sum += face_normals[*f];
+        normals[e] = unit_or_zero(sum);  // the mean's direction (its length is irrelevant)
+    }
+    return normals;
 }
 
 bounding_box bounding_box_of(std::span<const vec3_t> positions) {

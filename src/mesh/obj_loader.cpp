@@ -1,10 +1,10 @@
-// obj_loader.cpp — Wavefront OBJ text → mesh. Accepted statements and limits: loaders.h.
+// obj_loader.cpp — Wavefront OBJ text → mesh. Accepted statements and limits: mesh.h (loaders).
 #include <algorithm>
 #include <string>
 #include <vector>
 
 #include "loader_util.h"
-#include "loaders.h"
+#include "mesh.h"
 
 namespace tiny3d {
 

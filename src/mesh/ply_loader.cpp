@@ -1,5 +1,5 @@
 // ply_loader.cpp — PLY (ascii, binary little / big endian) → mesh. Accepted headers and
-// limits: loaders.h.
+// limits: mesh.h (loaders).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "loader_util.h"
-#include "loaders.h"
+#include "mesh.h"
 
 namespace tiny3d {
 

@@ -1,6 +1,6 @@
-// raster_reference.cpp — the converged reference image (raster_reference.h): double
+// raster_reference.cpp — the converged reference image (raster.h): double
 // precision, n² golden-ratio lattice samples per pixel, per-sample depth and shading, box filter.
-#include "raster_reference.h"
+#include "raster.h"
 
 #include <algorithm>
 #include <array>

@@ -9,6 +9,7 @@
 #include <cstdint>
 
 #include "lighting.h"
+#include "pipeline.h"
 #include "raster_internal.h"
 
 namespace tiny3d::detail {

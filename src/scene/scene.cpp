@@ -57,7 +57,7 @@ result<std::size_t> scene::add_object(const mesh &m, const object_style &style) 
     if (obj->shape.edges.empty()) mesh_derive_edges(obj->shape);
     if (status s = mesh_validate(obj->shape); !s) return scene_error("object " + std::to_string(objects_.size()) + ": " + s.message());
     obj->style = style;
-    obj->edge_normal = edge_normals(obj->shape);
+    obj->edge_normal = mesh_edge_normals(obj->shape);
     obj->adjacency = mesh_edge_faces(obj->shape);
     auto tris = make_raster_mesh(obj->shape, mesh_vertex_normals(obj->shape));
     if (!tris) return scene_error("object " + std::to_string(objects_.size()) + ": " + tris.message());

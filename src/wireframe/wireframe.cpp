@@ -1,6 +1,6 @@
 // wireframe.cpp — edges → clip space → clipped screen segments → lines, with the report's
 // far-to-near Z-sort, depth cueing, back-edge hiding and the circular viewport.
-// See include/pipeline.h.
+// See include/wireframe.h.
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -8,8 +8,12 @@
 #include <limits>
 #include <string>
 
+#include "canvas.h"
+#include "lines.h"
+#include "mesh.h"
 #include "pipeline.h"
-#include "raster.h"
+#include "raster.h"  // zbuffer: the hidden-line test reads the filled pipeline's depth
+#include "wireframe.h"
 #include "../pipeline/project4.h"
 #include "../simd_config.h"
 

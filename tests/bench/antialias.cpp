@@ -6,7 +6,7 @@
 // common/analytic_coverage.h; one thread); and a textured plane at a grazing angle, bilinear
 // against trilinear.
 //
-// Error: the frame at angle 0 against render_reference (raster_reference.h: 16 × 16 = 256
+// Error: the frame at angle 0 against render_reference (raster.h: 16 × 16 = 256
 // samples per pixel, depth and shading per sample, box filter; 8 × 8 with --quick), in grey
 // levels 0–255. error_mean / error_max: over the SILHOUETTE pixels — those whose exact
 // coverage by the object (the reference of the same scene drawn flat white on black) lies
@@ -22,8 +22,11 @@
 
 #include "common/analytic_coverage.h"
 #include "common/bench.h"
-#include "raster_reference.h"
-#include "renderer.h"
+#include "canvas.h"
+#include "lighting.h"
+#include "math3d.h"
+#include "mesh.h"
+#include "raster.h"
 
 using namespace tiny3d;
 

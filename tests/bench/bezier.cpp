@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "animation.h"
+#include "math3d.h"
 #include "common/bench.h"
 
 namespace {

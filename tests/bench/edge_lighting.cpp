@@ -13,6 +13,7 @@
 
 #include "common/bench.h"
 #include "lighting.h"
+#include "math3d.h"
 #include "mesh.h"
 
 namespace {
@@ -32,7 +33,7 @@ int main(int argc, char **argv) {
     const bench::options o = bench::parse_options(argc, argv);
     const int repeats = o.quick ? 3 : 15;
     const tiny3d::mesh ball = tiny3d::make_soccer_ball(1.0f);
-    const std::vector<vec3_t> edge_normal = tiny3d::edge_normals(ball);
+    const std::vector<vec3_t> edge_normal = tiny3d::mesh_edge_normals(ball);
     const std::vector<vec3_t> face_normal = tiny3d::mesh_face_normals(ball);
     const tiny3d::edge_adjacency adjacency = tiny3d::mesh_edge_faces(ball);
     const std::size_t edges = ball.edges.size();

@@ -18,8 +18,12 @@
 
 #include "../raster_test_util.h"
 #include "common/bench.h"
-#include "loaders.h"
-#include "renderer.h"
+#include "canvas.h"
+#include "lab.h"
+#include "lighting.h"
+#include "math3d.h"
+#include "mesh.h"
+#include "raster.h"
 
 using namespace tiny3d;
 

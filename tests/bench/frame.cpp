@@ -16,7 +16,11 @@
 #include <vector>
 
 #include "common/bench.h"
-#include "renderer.h"
+#include "canvas.h"
+#include "lighting.h"
+#include "math3d.h"
+#include "mesh.h"
+#include "raster.h"
 
 namespace {
 

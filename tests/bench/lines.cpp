@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "canvas.h"
+#include "lines.h"
 #include "common/bench.h"
 
 namespace {

@@ -20,7 +20,11 @@
 #include <vector>
 
 #include "common/bench.h"
-#include "renderer.h"
+#include "canvas.h"
+#include "lines.h"
+#include "math3d.h"
+#include "mesh.h"
+#include "wireframe.h"
 
 namespace {
 

@@ -24,11 +24,10 @@
 
 #include "canvas.h"
 #include "lighting.h"
-#include "loaders.h"
 #include "math3d.h"
 #include "mesh.h"
-#include "pipeline.h"
 #include "raster.h"
+#include "wireframe.h"
 
 namespace fuzz_checks {
 

@@ -1,5 +1,6 @@
 // chart.cpp — axes, markers and whole charts drawn with the library's canvas and lines.
 #include "chart.h"
+#include "lines.h"
 
 #include <algorithm>
 #include <cmath>
