@@ -52,22 +52,10 @@ inline void clear_canvas(canvas_t *canvas, float value) { canvas_clear(canvas, v
 // or path fails). Callers that ignore the result (written for void forms) compile
 // unchanged. Templates, so a program's own function of the name wins; their address can
 // still be taken as int (*)(const canvas_t *, const char *), and NULL converts as usual.
-template <class = void>
-int save_canvas_as_pgm(const canvas_t *canvas, const char *path) {
-    return canvas_save_pgm(canvas, path);
-}
-template <class = void>
-int canvas_save_to_pgm(const canvas_t *canvas, const char *path) {
-    return canvas_save_pgm(canvas, path);
-}
-template <class = void>
-int save_canvas_pgm(const canvas_t *canvas, const char *path) {
-    return canvas_save_pgm(canvas, path);
-}
-template <class = void>
-int save_canvas_to_pgm(const canvas_t *canvas, const char *path) {
-    return canvas_save_pgm(canvas, path);
-}
+template <class = void> int save_canvas_as_pgm(const canvas_t *canvas, const char *path) { return canvas_save_pgm(canvas, path); }
+template <class = void> int canvas_save_to_pgm(const canvas_t *canvas, const char *path) { return canvas_save_pgm(canvas, path); }
+template <class = void> int save_canvas_pgm(const canvas_t *canvas, const char *path) { return canvas_save_pgm(canvas, path); }
+template <class = void> int save_canvas_to_pgm(const canvas_t *canvas, const char *path) { return canvas_save_pgm(canvas, path); }
 
 // ---- the report's canvas.h also declared draw_line_f ------------------------------------
 // Its home is now lines.h (the lines module draws on the canvas; the canvas module knows
