@@ -14,6 +14,7 @@
 #include <functional>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace tiny_test {
@@ -37,16 +38,40 @@ struct registrar {
     registrar(const char *name, void (*body)()) { registry().push_back({name, body}); }
 };
 
+// Values in messages as an ostream with precision 9 shows them. Numbers go through a few
+// non-template functions (one copy per program rather than one per type: the tests
+// compile faster); other types through operator<< where they have one.
+[[gnu::noinline]] inline std::string show_number(long double v) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.9Lg", v);
+    return text;
+}
+[[gnu::noinline]] inline std::string show_number(long long v) { return std::to_string(v); }
+[[gnu::noinline]] inline std::string show_number(unsigned long long v) { return std::to_string(v); }
+
 template <class T>
 std::string show(const T &v) {
-    std::ostringstream s;
-    s.precision(9);
-    if constexpr (requires { s << v; }) {
-        s << v;
+    using char_like = std::bool_constant<std::is_same_v<T, char> || std::is_same_v<T, signed char> ||
+                                         std::is_same_v<T, unsigned char> || std::is_same_v<T, char8_t>>;
+    if constexpr (std::is_same_v<T, bool>) {
+        return v ? "1" : "0";
+    } else if constexpr (std::is_floating_point_v<T>) {
+        return show_number(static_cast<long double>(v));
+    } else if constexpr (std::is_integral_v<T> && !char_like::value) {
+        if constexpr (std::is_signed_v<T>) return show_number(static_cast<long long>(v));
+        else return show_number(static_cast<unsigned long long>(v));
+    } else if constexpr (std::is_same_v<T, std::string>) {
+        return v;
     } else {
-        s << "<value>";
+        std::ostringstream s;
+        s.precision(9);
+        if constexpr (requires { s << v; }) {
+            s << v;
+        } else {
+            s << "<value>";
+        }
+        return s.str();
     }
-    return s.str();
 }
 
 inline void fail(const char *file, int line, const std::string &what) {
@@ -54,10 +79,15 @@ inline void fail(const char *file, int line, const std::string &what) {
     std::fprintf(stderr, "%s:%d: FAILED %s\n", file, line, what.c_str());
 }
 
+[[gnu::noinline]] inline void fail_eq(const char *file, int line, const char *ea, const char *eb, const std::string &a,
+                                      const std::string &b) {
+    fail(file, line, std::string("CHECK_EQ(") + ea + ", " + eb + "): " + a + " != " + b);
+}
+
 template <class A, class B>
 bool check_eq(const char *file, int line, const char *ea, const char *eb, const A &a, const B &b) {
     if (a == b) return true;
-    fail(file, line, std::string("CHECK_EQ(") + ea + ", " + eb + "): " + show(a) + " != " + show(b));
+    fail_eq(file, line, ea, eb, show(a), show(b));
     return false;
 }
 
@@ -65,11 +95,9 @@ inline bool check_near(const char *file, int line, const char *ea, const char *e
                        double tol) {
     // NaN never passes: |a - b| <= tol is false when either is NaN.
     if (std::fabs(a - b) <= tol) return true;
-    std::ostringstream s;
-    s.precision(12);
-    s << "CHECK_NEAR(" << ea << ", " << eb << "): " << a << " vs " << b << ", |diff| = " << std::fabs(a - b)
-      << " > tol " << tol;
-    fail(file, line, s.str());
+    char text[160];
+    std::snprintf(text, sizeof text, "): %.12g vs %.12g, |diff| = %.12g > tol %.12g", a, b, std::fabs(a - b), tol);
+    fail(file, line, std::string("CHECK_NEAR(") + ea + ", " + eb + text);
     return false;
 }
 
