@@ -9,8 +9,10 @@
 
 #include "bench/common/analytic_coverage.h"
 #include "harness.h"
-#include "raster_reference.h"
-#include "renderer.h"
+#include "lighting.h"
+#include "math3d.h"
+#include "mesh.h"
+#include "raster.h"
 
 namespace {
 
