@@ -78,6 +78,37 @@ $(BUILD)/san/obj/%.o: %.cpp
 	@mkdir -p $(@D)
 	$(CXX) $(STD) $(SANFLAGS) $(WARN) $(CPPFLAGS) -c $< -o $@
 
+# The test programs' own code (tests/*_test.cpp; not the library they test, not the
+# benchmarks) is compiled at -O0, plain and under the sanitizers: compiling the tests is
+# most of `make test`'s time, and they spend their run time in the library, which keeps
+# $(OPT) and SANFLAGS' -O1. With the precompiled prelude below, compiling eight of the
+# tests took 24 s of CPU against 54 s at -O2 / -O1 without it. (-O1 is no choice for the
+# plain build: GCC 12 then warns falsely of array bounds inside std::string.)
+TEST_OPT       ?= -O0
+SAN_TEST_FLAGS := $(subst -O1,-O0,$(SANFLAGS))
+# tests/test_prelude.h (the standard and library headers most tests include) is compiled
+# once per build into a precompiled header next to a copy of it, which each test is given
+# with -include (-Winvalid-pch: an unusable one is an error, not a silent slow build).
+TEST_PCH     := $(BUILD)/pch/test_prelude.h
+SAN_TEST_PCH := $(BUILD)/san/pch/test_prelude.h
+$(TEST_PCH).gch: tests/test_prelude.h
+	@mkdir -p $(@D)
+	cp $< $(TEST_PCH)
+	$(CXX) $(STD) $(TEST_OPT) $(WARN) $(CPPFLAGS) -x c++-header $(@:.gch=) -o $@
+
+$(SAN_TEST_PCH).gch: tests/test_prelude.h
+	@mkdir -p $(@D)
+	cp $< $(SAN_TEST_PCH)
+	$(CXX) $(STD) $(SAN_TEST_FLAGS) $(WARN) $(CPPFLAGS) -x c++-header $(@:.gch=) -o $@
+
+$(TEST_SRCS:%.cpp=$(BUILD)/obj/%.o): $(BUILD)/obj/%.o: %.cpp $(TEST_PCH).gch
+	@mkdir -p $(@D)
+	$(CXX) $(STD) $(TEST_OPT) $(WARN) -Winvalid-pch $(CPPFLAGS) -include $(TEST_PCH) -c $< -o $@
+
+$(TEST_SRCS:%.cpp=$(BUILD)/san/obj/%.o): $(BUILD)/san/obj/%.o: %.cpp $(SAN_TEST_PCH).gch
+	@mkdir -p $(@D)
+	$(CXX) $(STD) $(SAN_TEST_FLAGS) $(WARN) -Winvalid-pch $(CPPFLAGS) -include $(SAN_TEST_PCH) -c $< -o $@
+
 # ---- tests: one binary per tests/*_test.cpp, plain and sanitized ----
 $(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(LIB)
 	@mkdir -p $(@D)

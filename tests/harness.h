@@ -74,9 +74,21 @@ std::string show(const T &v) {
     }
 }
 
-inline void fail(const char *file, int line, const std::string &what) {
+[[gnu::noinline]] inline void fail(const char *file, int line, const std::string &what) {
     ++current_failures();
     std::fprintf(stderr, "%s:%d: FAILED %s\n", file, line, what.c_str());
+}
+
+// The failure paths below are out of line, one copy per program: each CHECK site compiles
+// to a test and a call (the tests build faster, above all under the sanitizers).
+[[gnu::noinline]] inline bool fail_check(const char *file, int line, const char *what) {
+    fail(file, line, what);
+    return false;
+}
+
+[[gnu::noinline]] inline bool fail_check_msg(const char *file, int line, const char *what, const std::string &msg) {
+    fail(file, line, std::string(what) + ": " + msg);
+    return false;
 }
 
 [[gnu::noinline]] inline void fail_eq(const char *file, int line, const char *ea, const char *eb, const std::string &a,
@@ -91,14 +103,19 @@ bool check_eq(const char *file, int line, const char *ea, const char *eb, const 
     return false;
 }
 
-inline bool check_near(const char *file, int line, const char *ea, const char *eb, double a, double b,
-                       double tol) {
-    // NaN never passes: |a - b| <= tol is false when either is NaN.
-    if (std::fabs(a - b) <= tol) return true;
+[[gnu::noinline]] inline bool fail_near(const char *file, int line, const char *ea, const char *eb, double a, double b,
+                                        double tol) {
     char text[160];
     std::snprintf(text, sizeof text, "): %.12g vs %.12g, |diff| = %.12g > tol %.12g", a, b, std::fabs(a - b), tol);
     fail(file, line, std::string("CHECK_NEAR(") + ea + ", " + eb + text);
     return false;
+}
+
+inline bool check_near(const char *file, int line, const char *ea, const char *eb, double a, double b,
+                       double tol) {
+    // NaN never passes: |a - b| <= tol is false when either is NaN.
+    if (std::fabs(a - b) <= tol) return true;
+    return fail_near(file, line, ea, eb, a, b, tol);
 }
 
 inline int run_all(int argc, char **argv) {
@@ -129,11 +146,8 @@ inline int run_all(int argc, char **argv) {
                                                                      &TINY_TEST_CAT(test_body_, name)); \
     static void TINY_TEST_CAT(test_body_, name)()
 
-#define CHECK(cond) \
-    ((cond) ? true : (tiny_test::fail(__FILE__, __LINE__, std::string("CHECK(") + #cond + ")"), false))
-#define CHECK_MSG(cond, msg)                                                                        \
-    ((cond) ? true                                                                                  \
-            : (tiny_test::fail(__FILE__, __LINE__, std::string("CHECK(") + #cond + "): " + (msg)), false))
+#define CHECK(cond) ((cond) ? true : tiny_test::fail_check(__FILE__, __LINE__, "CHECK(" #cond ")"))
+#define CHECK_MSG(cond, msg) ((cond) ? true : tiny_test::fail_check_msg(__FILE__, __LINE__, "CHECK(" #cond ")", (msg)))
 #define CHECK_EQ(a, b) tiny_test::check_eq(__FILE__, __LINE__, #a, #b, (a), (b))
 #define CHECK_NEAR(a, b, tol) tiny_test::check_near(__FILE__, __LINE__, #a, #b, (a), (b), (tol))
 
