@@ -1,6 +1,7 @@
 // raster_test_util.h — helpers shared by the raster tests (and tests/bench/fill.cpp): a
 // light rig of ambient light only, a frame holding one draw, and the slanted textured quad
-// whose exact u at every pixel centre is known in closed form.
+// whose exact u at every pixel centre is known in closed form; a quad straight in clip
+// space and flat, constant-light draw parameters for it.
 #ifndef TINY3D_RASTER_TEST_UTIL_H
 #define TINY3D_RASTER_TEST_UTIL_H
 
@@ -76,6 +77,30 @@ struct slanted_quad {
         return true;
     }
 };
+
+// A raster mesh straight in clip space (identity matrices, w = 1): quads over x, y ∈ [x0, x1]
+// × [y0, y1] at depth z, uv = (u0 + du·s, v0 + dv·t) for s, t ∈ [0, 1].
+inline tiny3d::raster_mesh clip_quad(float x0, float y0, float x1, float y1, float z, float u0, float v0, float du,
+                                     float dv) {
+    tiny3d::raster_mesh m;
+    m.positions = {{x0, y0, z}, {x1, y0, z}, {x1, y1, z}, {x0, y1, z}};
+    m.normals.assign(4, vec3_t{0, 0, 1});
+    m.uvs = {{u0, v0}, {u0 + du, v0}, {u0 + du, v0 + dv}, {u0, v0 + dv}};
+    m.triangles = {{0, 1, 2}, {0, 2, 3}};  // counter-clockwise seen from +z
+    m.bound_center = {(x0 + x1) / 2, (y0 + y1) / 2, z};
+    m.bound_radius = std::hypot(x1 - x0, y1 - y0);
+    return m;
+}
+
+// Flat, constant-light parameters with identity matrices (positions are clip coordinates).
+inline tiny3d::draw_params flat_params(float intensity) {
+    tiny3d::draw_params p;
+    p.model = mat4_identity();
+    p.view_projection = mat4_identity();
+    p.lights = constant_light(intensity);
+    p.shade = tiny3d::shading::flat;
+    return p;
+}
 
 }  // namespace raster_test
 
