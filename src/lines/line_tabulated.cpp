@@ -190,17 +190,16 @@ stroke_kind prepare_stroke(const canvas_t *canvas, float x0, float y0, float x1,
         std::swap(x0, x1);
         std::swap(y0, y1);
     }
-    // Float ends: their differences and squares are finite in double.
-    const double full_dx = double(x1) - x0, full_dy = double(y1) - y0;
-    const double full_length = std::sqrt(full_dx * full_dx + full_dy * full_dy);
+    namespace lanes = detail::scalar_lanes;  // the arithmetic prepare8_avx512 repeats on eight lanes
+    const lanes::segment_extent<double> full = lanes::extent_of<double>(x0, y0, x1, y1);
     // (1) needs L ≥ h; beyond kExactFromLength, or without stamps (thick lines), the exact line draws.
-    if (!(full_length >= h) || full_length > kExactFromLength || table.stamp_size == 0) {
+    if (!lanes::tabulates(full.length, h, kExactFromLength) || table.stamp_size == 0) {
         s.exact = {x0, y0, x1, y1};
         return stroke_kind::exact;
     }
-    const double inv_length = 1.0 / full_length;
-    s.dx = full_dx * inv_length;
-    s.dy = full_dy * inv_length;
+    const lanes::unit_direction<double> d = lanes::direction_of(full);
+    s.dx = d.x;
+    s.dy = d.y;
     // Clip to the canvas grown by 2R + 2: a clipped end is then so far off the canvas that
     // no canvas pixel within reach of the stroke lies near it; it gets no cap.
     s.reach = table.reach;
@@ -208,13 +207,13 @@ stroke_kind prepare_stroke(const canvas_t *canvas, float x0, float y0, float x1,
     const int width = canvas->width, height = canvas->height;
     detail::clipped_segment clip{x0, y0, x1, y1, false, false};
     // (x0 ≤ x1 here.) The common case, both ends in the grown canvas, needs no call.
-    const double y_min = std::min(y0, y1), y_max = std::max(y0, y1);
-    if (!(x0 >= -margin && x1 <= width + margin && y_min >= -margin && y_max <= height + margin) &&
+    if (!lanes::inside_grown_canvas<double>(x0, y0, x1, y1, margin, width, height) &&
         !detail::clip_segment(x0, y0, x1, y1, -margin, -margin, width + margin, height + margin, clip))
         return stroke_kind::nothing;
     s.ax = clip.x0;
     s.ay = clip.y0;
-    s.length = std::max(0.0, (clip.x1 - s.ax) * s.dx + (clip.y1 - s.ay) * s.dy);
+    const lanes::stroke_span<double, int> span = lanes::span_of(s.ax, s.ay, clip.x1, clip.y1, d, s.reach, height);
+    s.length = span.length;
     s.end_a = !clip.start_clipped;
     s.end_b = !clip.end_clipped;
     s.cdf = detail::square_cdf(-s.dy, s.dx);
@@ -223,8 +222,8 @@ stroke_kind prepare_stroke(const canvas_t *canvas, float x0, float y0, float x1,
     s.du = float(s.dx);
     s.dv = float(-s.dy);
     // Rows whose centre lies within R of the segment's y range (the stroke's full extent).
-    s.row_first = clamped_ceil(std::min(s.ay, clip.y1) - s.reach - 0.5, 0.0, height);
-    s.row_last = clamped_floor(std::max(s.ay, clip.y1) + s.reach - 0.5, -1.0, height - 1.0);
+    s.row_first = span.row_first;
+    s.row_last = span.row_last;
     return stroke_kind::tabulated;
 }
 

@@ -269,12 +269,58 @@ void draw_avx512(canvas_t *canvas, const stroke_setup &s, const block16 &block_a
 
 }  // namespace
 
+namespace {
+// D = eight doubles for stroke_math.inc: the set-up arithmetic of prepare_stroke, the
+// same operations lane by lane (compiled here, inside the target region).
+namespace avx512_lanes {
+struct d8 {
+    __m512d v;
+    d8(__m512d x) : v(x) {}
+    d8(double x) : v(_mm512_set1_pd(x)) {}
+};
+struct m8 {
+    __mmask8 k;
+};
+// (Vector types wrapped, as template arguments keep no attributes.)
+struct f8 {
+    __m256 v;
+};
+struct i8 {
+    __m256i v;
+};
+inline d8 operator+(d8 a, d8 b) { return _mm512_add_pd(a.v, b.v); }
+inline d8 operator-(d8 a, d8 b) { return _mm512_sub_pd(a.v, b.v); }
+inline d8 operator*(d8 a, d8 b) { return _mm512_mul_pd(a.v, b.v); }
+inline d8 operator/(d8 a, d8 b) { return _mm512_div_pd(a.v, b.v); }
+inline d8 operator-(d8 a) { return _mm512_xor_pd(a.v, _mm512_set1_pd(-0.0)); }
+inline m8 operator<(d8 a, d8 b) { return {_mm512_cmp_pd_mask(a.v, b.v, _CMP_LT_OQ)}; }
+inline m8 operator>(d8 a, d8 b) { return {_mm512_cmp_pd_mask(a.v, b.v, _CMP_GT_OQ)}; }
+inline m8 operator<=(d8 a, d8 b) { return {_mm512_cmp_pd_mask(a.v, b.v, _CMP_LE_OQ)}; }
+inline m8 operator>=(d8 a, d8 b) { return {_mm512_cmp_pd_mask(a.v, b.v, _CMP_GE_OQ)}; }
+inline m8 operator&(m8 a, m8 b) { return {__mmask8(a.k & b.k)}; }
+inline d8 sqrt_of(d8 a) { return _mm512_sqrt_pd(a.v); }
+inline d8 abs_of(d8 a) { return _mm512_andnot_pd(_mm512_set1_pd(-0.0), a.v); }
+// std::min(a, b) is b < a ? b : a, and MINPD(x, y) is x < y ? x : y: so MINPD(b, a). Likewise max.
+inline d8 min_of(d8 a, d8 b) { return _mm512_min_pd(b.v, a.v); }
+inline d8 max_of(d8 a, d8 b) { return _mm512_max_pd(b.v, a.v); }
+inline d8 select(m8 m, d8 if_true, d8 if_false) { return _mm512_mask_blend_pd(m.k, if_false.v, if_true.v); }
+inline f8 to_float(d8 a) { return {_mm512_cvtpd_ps(a.v)}; }
+inline i8 floor_to_lanes(d8 a) {
+    return {_mm512_cvttpd_epi32(_mm512_roundscale_pd(a.v, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC))};
+}
+inline i8 ceil_to_lanes(d8 a) { return {_mm256_sub_epi32(_mm256_setzero_si256(), floor_to_lanes(-a).v)}; }
+#include "stroke_math.inc"
+}  // namespace avx512_lanes
+}  // namespace
+
 // prepare_stroke's common case (both ends finite and in the grown canvas, h ≤ L ≤ 64 px,
-// intensity > 0) for up to 8 segments at once: the same double operations lane by lane,
-// so the set-ups are bit for bit prepare_stroke's. Returns the lanes it set up; the
-// caller hands the others to prepare_stroke. The table has blocks (stamp_size > 0).
+// intensity > 0) for up to 8 segments at once, through the arithmetic prepare_stroke
+// uses (stroke_math.inc), so the set-ups are bit for bit prepare_stroke's. Returns the
+// lanes it set up; the caller hands the others to prepare_stroke. The table has blocks
+// (stamp_size > 0).
 unsigned prepare8_avx512(const canvas_t &canvas, const line_segment *g, int n, const line_table &table,
                          stroke_setup *out) {
+    using namespace avx512_lanes;
     alignas(32) float fx0[8] = {}, fy0[8] = {}, fx1[8] = {}, fy1[8] = {}, fink[8] = {};
     for (int i = 0; i < n; ++i) {
         fx0[i] = g[i].x0;
@@ -296,66 +342,31 @@ unsigned prepare8_avx512(const canvas_t &canvas, const line_segment *g, int n, c
     y1 = _mm256_mask_blend_ps(swap, y1, y0);
     x0 = sx0;
     y0 = sy0;
-    const __m512d X0 = _mm512_cvtps_pd(x0), Y0 = _mm512_cvtps_pd(y0), X1 = _mm512_cvtps_pd(x1), Y1 = _mm512_cvtps_pd(y1);
-    const __m512d full_dx = _mm512_sub_pd(X1, X0), full_dy = _mm512_sub_pd(Y1, Y0);
-    const __m512d length_full = _mm512_sqrt_pd(_mm512_add_pd(_mm512_mul_pd(full_dx, full_dx), _mm512_mul_pd(full_dy, full_dy)));
+    const d8 X0 = _mm512_cvtps_pd(x0), Y0 = _mm512_cvtps_pd(y0), X1 = _mm512_cvtps_pd(x1), Y1 = _mm512_cvtps_pd(y1);
     const double h = 0.5 * double(table.thickness());
-    ok &= _mm512_cmp_pd_mask(length_full, _mm512_set1_pd(h), _CMP_GE_OQ) &
-          _mm512_cmp_pd_mask(length_full, _mm512_set1_pd(kExactFromLength), _CMP_LE_OQ);
-    const __m512d inv_length = _mm512_div_pd(_mm512_set1_pd(1.0), length_full);
-    const __m512d dx = _mm512_mul_pd(full_dx, inv_length), dy = _mm512_mul_pd(full_dy, inv_length);
     const double reach = table.reach, margin = 2.0 * reach + 2.0;
     const double width = canvas.width, height = canvas.height;
-    const __m512d y_min = _mm512_min_pd(Y1, Y0), y_max = _mm512_max_pd(Y1, Y0);  // equal: either
-    ok &= _mm512_cmp_pd_mask(X0, _mm512_set1_pd(-margin), _CMP_GE_OQ) &
-          _mm512_cmp_pd_mask(X1, _mm512_set1_pd(width + margin), _CMP_LE_OQ) &
-          _mm512_cmp_pd_mask(y_min, _mm512_set1_pd(-margin), _CMP_GE_OQ) &
-          _mm512_cmp_pd_mask(y_max, _mm512_set1_pd(height + margin), _CMP_LE_OQ);
+    const segment_extent<d8> full = extent_of(X0, Y0, X1, Y1);
+    ok &= tabulates(full.length, h, kExactFromLength).k & inside_grown_canvas(X0, Y0, X1, Y1, margin, width, height).k;
     if (!ok) return 0;
-    const __m512d zero = _mm512_setzero_pd();
-    const __m512d length = _mm512_max_pd(_mm512_add_pd(_mm512_mul_pd(full_dx, dx), _mm512_mul_pd(full_dy, dy)), zero);
-    // square_cdf(−dy, dx)
-    const __m512d sign = _mm512_set1_pd(-0.0);
-    const __m512d abs_a = _mm512_andnot_pd(sign, dy), abs_b = _mm512_andnot_pd(sign, dx);
-    const __m512d amax = _mm512_max_pd(abs_a, abs_b), amin = _mm512_min_pd(abs_a, abs_b);
-    const __m512d two = _mm512_set1_pd(2.0);
-    const __m256 w_lo = _mm512_cvtpd_ps(_mm512_div_pd(_mm512_sub_pd(amax, amin), two));
-    const __m256 w_hi = _mm512_cvtpd_ps(_mm512_div_pd(_mm512_add_pd(amax, amin), two));
-    const __mmask8 cornered = _mm512_cmp_pd_mask(amin, _mm512_set1_pd(detail::kNarrowCorner), _CMP_GT_OQ);
-    const __m512d r = _mm512_div_pd(_mm512_set1_pd(1.0), _mm512_mul_pd(amax, amin));
-    const __m256 inv_amax = _mm512_cvtpd_ps(
-        _mm512_mask_blend_pd(cornered, _mm512_div_pd(_mm512_set1_pd(1.0), amax), _mm512_mul_pd(amin, r)));
-    const __m256 inv_2ab = _mm256_maskz_mov_ps(cornered, _mm512_cvtpd_ps(_mm512_mul_pd(_mm512_set1_pd(0.5), r)));
-    // Rows within R of the y range: −⌊−clamp(·)⌋ and ⌊clamp(·)⌋ as in clamped_ceil / clamped_floor.
-    auto clamp = [](__m512d v, double lo, double hi) {
-        return _mm512_mask_blend_pd(_mm512_cmp_pd_mask(v, _mm512_set1_pd(lo), _CMP_LT_OQ),
-                                    _mm512_mask_blend_pd(_mm512_cmp_pd_mask(_mm512_set1_pd(hi), v, _CMP_LT_OQ), v,
-                                                         _mm512_set1_pd(hi)),
-                                    _mm512_set1_pd(lo));
-    };
-    auto floor_int = [](__m512d v) {
-        return _mm512_cvttpd_epi32(_mm512_roundscale_pd(v, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC));
-    };
-    const __m256i row_first = _mm256_sub_epi32(
-        _mm256_setzero_si256(),
-        floor_int(_mm512_sub_pd(zero, clamp(_mm512_sub_pd(_mm512_sub_pd(y_min, _mm512_set1_pd(reach)), _mm512_set1_pd(0.5)), 0.0, height))));
-    const __m256i row_last =
-        floor_int(clamp(_mm512_sub_pd(_mm512_add_pd(y_max, _mm512_set1_pd(reach)), _mm512_set1_pd(0.5)), -1.0, height - 1.0));
+    const unit_direction<d8> d = direction_of(full);
+    const stroke_span<d8, i8> span = span_of(X0, Y0, X1, Y1, d, reach, height);
+    const cdf_factors<f8> cdf = square_cdf_factors(-d.y, d.x);
     alignas(64) double ax[8], ay[8], adx[8], ady[8], alen[8];
     alignas(32) float lo[8], hi[8], ia[8], i2[8], ink_f[8];
     alignas(32) std::int32_t first[8], last[8];
-    _mm512_store_pd(ax, X0);
-    _mm512_store_pd(ay, Y0);
-    _mm512_store_pd(adx, dx);
-    _mm512_store_pd(ady, dy);
-    _mm512_store_pd(alen, length);
-    _mm256_store_ps(lo, w_lo);
-    _mm256_store_ps(hi, w_hi);
-    _mm256_store_ps(ia, inv_amax);
-    _mm256_store_ps(i2, inv_2ab);
+    _mm512_store_pd(ax, X0.v);
+    _mm512_store_pd(ay, Y0.v);
+    _mm512_store_pd(adx, d.x.v);
+    _mm512_store_pd(ady, d.y.v);
+    _mm512_store_pd(alen, span.length.v);
+    _mm256_store_ps(lo, cdf.w_lo.v);
+    _mm256_store_ps(hi, cdf.w_hi.v);
+    _mm256_store_ps(ia, cdf.inv_amax.v);
+    _mm256_store_ps(i2, cdf.inv_2ab.v);
     _mm256_store_ps(ink_f, _mm256_min_ps(ink, _mm256_set1_ps(1.0f)));
-    _mm256_store_si256(reinterpret_cast<__m256i *>(first), row_first);
-    _mm256_store_si256(reinterpret_cast<__m256i *>(last), row_last);
+    _mm256_store_si256(reinterpret_cast<__m256i *>(first), span.row_first.v);
+    _mm256_store_si256(reinterpret_cast<__m256i *>(last), span.row_last.v);
     for (int i = 0; i < n; ++i) {
         if (!(ok >> i & 1)) continue;
         stroke_setup &s = out[i];

@@ -261,7 +261,8 @@ void draw_sse2(canvas_t *canvas, const stroke_setup &s, const line_table &table)
 // AVX-512 (line_simd::avx512: only on CPUs best_line_simd() reports it for; tables with
 // 4 × 4 blocks). draw_batch_avx512 draws `count` (≤ kBatch) prepared strokes in order;
 // prepare8_avx512 sets up prepare_stroke's common case for n ≤ kBatch segments at once,
-// bit for bit as prepare_stroke, and returns the mask of the lanes it set up.
+// with the arithmetic prepare_stroke uses (stroke_math.inc, on eight lanes), so bit for
+// bit as prepare_stroke, and returns the mask of the lanes it set up.
 void draw_batch_avx512(canvas_t *canvas, const stroke_setup *strokes, int count, const line_table &table);
 unsigned prepare8_avx512(const canvas_t &canvas, const line_segment *segments, int n, const line_table &table,
                          stroke_setup *out);

@@ -14,11 +14,26 @@
 #endif
 
 #include "line_clip.h"
+#include "../canvas/splat.h"  // floor_to_int
 
 namespace tiny3d::detail {
 
 // Corner regions of the square-in-band area narrower than this (px) are treated as empty.
 constexpr double kNarrowCorner = 1e-12;
+
+// D = double for stroke_math.inc (the set-up arithmetic the AVX-512 tabulated kernel
+// repeats on eight lanes: see there).
+namespace scalar_lanes {
+inline double sqrt_of(double v) { return std::sqrt(v); }
+inline double abs_of(double v) { return std::fabs(v); }
+inline double min_of(double a, double b) { return std::min(a, b); }
+inline double max_of(double a, double b) { return std::max(a, b); }
+inline double select(bool m, double if_true, double if_false) { return m ? if_true : if_false; }
+inline float to_float(double v) { return float(v); }
+inline int floor_to_lanes(double v) { return floor_to_int(v); }
+inline int ceil_to_lanes(double v) { return -floor_to_int(-v); }
+#include "stroke_math.inc"
+}  // namespace scalar_lanes
 
 // Area of a unit square (centre at offset 0) on the side {s' ≤ s} of a line with unit
 // normal (a, b), as the CDF of U = a·X + b·Y, X, Y ~ U(−½, ½): a trapezoidal density.
@@ -31,21 +46,14 @@ struct square_cdf {
     float w_lo = 0, w_hi = 0, inv_amax = 0, inv_2ab = 0;
 
     square_cdf() = default;  // all zero: no line (set before use)
+    // amin ≈ 0 (axis-aligned line): the quadratic corners are narrower than kNarrowCorner
+    // px and contribute nothing visible; m ≡ 0 then, and a zero factor avoids 0·inf.
     square_cdf(double a, double b) {
-        const double amax = std::max(std::fabs(a), std::fabs(b));
-        const double amin_d = std::min(std::fabs(a), std::fabs(b));
-        w_lo = float((amax - amin_d) / 2);
-        w_hi = float((amax + amin_d) / 2);
-        // amin ≈ 0 (axis-aligned line): the quadratic corners are narrower than kNarrowCorner
-        // px and contribute nothing visible; m ≡ 0 then, and a zero factor avoids 0·inf.
-        if (amin_d > kNarrowCorner) {
-            const double r = 1.0 / (amax * amin_d);  // one division for both factors
-            inv_amax = float(amin_d * r);
-            inv_2ab = float(0.5 * r);
-        } else {
-            inv_amax = float(1.0 / amax);
-            inv_2ab = 0.0f;
-        }
+        const scalar_lanes::cdf_factors<float> f = scalar_lanes::square_cdf_factors(a, b);
+        w_lo = f.w_lo;
+        w_hi = f.w_hi;
+        inv_amax = f.inv_amax;
+        inv_2ab = f.inv_2ab;
     }
     // sign(s)·H(|s|) = F(s) − ½
     float centred(float s) const {
