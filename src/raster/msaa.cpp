@@ -206,7 +206,7 @@ void fill_rows_sse2(sample_store &store, const msaa_triangle &f, const sample_pa
     const int columns = f.max_x - f.min_x + 1;
     const bool scan = G == 1 && columns <= SCAN_COLUMNS;
     // The scan's row starts: the values at column 0 (offsets folded in), stepped by b per row
-    // (lane-wise wrap past the last row is harmless); the tile's rows by pointer steps.
+    // (lane-wise wrap past the last row is harmless).
     auto lanes = [](std::int64_t v) { return _mm_set1_epi32(static_cast<std::int32_t>(v)); };
     const int first_dy = y0 - f.min_y;
     __m128i r0 = _mm_add_epi32(lanes(f.e[0] + f.b[0] * first_dy), d[0][0]);
@@ -214,11 +214,8 @@ void fill_rows_sse2(sample_store &store, const msaa_triangle &f, const sample_pa
     __m128i r2 = _mm_add_epi32(lanes(f.e[2] + f.b[2] * first_dy), d[2][0]);
     const __m128i down0 = lanes(f.b[0]), down1 = lanes(f.b[1]), down2 = lanes(f.b[2]);
     const __m128 plane0 = _mm_setr_ps(f.z, f.i, 0.0f, 0.0f), plane_dy = _mm_setr_ps(f.zdy, f.idy, 0.0f, 0.0f);
-    float *row_p = store.pixel(f.min_x, y0);
-    std::uint8_t *row_touched = store.touched_row(y0) + f.min_x;
-    const std::ptrdiff_t row_floats = static_cast<std::ptrdiff_t>(store.width()) * 2 * S;
-    for (int y = y0; y < y1; ++y, r0 = _mm_add_epi32(r0, down0), r1 = _mm_add_epi32(r1, down1),
-             r2 = _mm_add_epi32(r2, down2), row_p += row_floats, row_touched += store.width()) {
+    for (int y = y0; y < y1;
+         ++y, r0 = _mm_add_epi32(r0, down0), r1 = _mm_add_epi32(r1, down1), r2 = _mm_add_epi32(r2, down2)) {
         int lo = 0, hi = columns - 1;
         std::uint32_t e[3] = {};  // (G > 1) the centre's values, 32 bits, wrapping past the row's end
         __m128i b0 = r0, b1 = r1, b2 = r2;
@@ -229,8 +226,8 @@ void fill_rows_sse2(sample_store &store, const msaa_triangle &f, const sample_pa
             b0 = lanes(e[0]), b1 = lanes(e[1]), b2 = lanes(e[2]);
             if constexpr (G == 1) b0 = _mm_add_epi32(b0, d[0][0]), b1 = _mm_add_epi32(b1, d[1][0]), b2 = _mm_add_epi32(b2, d[2][0]);
         }
-        std::uint8_t *touched = row_touched + lo;
-        float *p = row_p + static_cast<std::ptrdiff_t>(lo) * 2 * S;
+        std::uint8_t *touched = store.touched_row(y) + f.min_x + lo;
+        float *p = store.pixel(f.min_x + lo, y);
         const __m128 plane_row = _mm_add_ps(plane0, _mm_mul_ps(plane_dy, _mm_set1_ps(static_cast<float>(y - f.min_y))));
         __m128 column = _mm_set1_ps(static_cast<float>(lo));  // exactly (< 2^24)
         for (int x = lo; x <= hi; ++x, p += 2 * S, ++touched, column = _mm_add_ps(column, ones)) {
@@ -242,20 +239,20 @@ void fill_rows_sse2(sample_store &store, const msaa_triangle &f, const sample_pa
                         static_cast<std::int32_t>(e[2] + worst[2])) >= 0;
                 e[0] += a[0], e[1] += a[1], e[2] += a[2];
             }
+            __m128i all_out = _mm_setzero_si128();  // negative in a lane whose sample is out in every group
             if (!full) {
-                __m128i all_out = _mm_set1_epi32(-1);
+                all_out = _mm_set1_epi32(-1);
                 for (int g = 0; g < G; ++g) {
                     n[g] = G == 1 ? _mm_or_si128(_mm_or_si128(b0, b1), b2)
                                   : _mm_or_si128(_mm_or_si128(_mm_add_epi32(b0, d[0][g]), _mm_add_epi32(b1, d[1][g])),
                                                  _mm_add_epi32(b2, d[2][g]));
                     all_out = G == 1 ? n[g] : _mm_and_si128(all_out, n[g]);
                 }
-                b0 = _mm_add_epi32(b0, step0), b1 = _mm_add_epi32(b1, step1), b2 = _mm_add_epi32(b2, step2);
-                if (_mm_movemask_ps(_mm_castsi128_ps(all_out)) == 0xF) continue;
             } else {
                 for (int g = 0; g < G; ++g) n[g] = _mm_setzero_si128();  // every sample in
-                b0 = _mm_add_epi32(b0, step0), b1 = _mm_add_epi32(b1, step1), b2 = _mm_add_epi32(b2, step2);
             }
+            b0 = _mm_add_epi32(b0, step0), b1 = _mm_add_epi32(b1, step1), b2 = _mm_add_epi32(b2, step2);
+            if (_mm_movemask_ps(_mm_castsi128_ps(all_out)) == 0xF) continue;
             if (!*touched) {  // first touch this frame: depth 1, the clear colour
                 for (int g = 0; g < G; ++g) _mm_storeu_ps(p + 4 * g, ones), _mm_storeu_ps(p + S + 4 * g, clear);
                 *touched = 1;
