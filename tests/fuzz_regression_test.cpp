@@ -6,6 +6,8 @@
 //    naming the file, or a value meeting every invariant (no crash, no garbage).
 //  * tests/fuzz/corpus/<target>/*: the seed corpora, all valid files: each must LOAD (so
 //    the seeds really start the fuzzer inside the format) and pass the same checks.
+//  * tests/fuzz/found/<target>/*: inputs a long fuzz run grew, the fewest that still reach
+//    every code edge the run reached (valid or not): each must give an error or a valid value.
 // Run from the source root (as `make test` does); TINY3D_SOURCE_DIR overrides.
 #include <algorithm>
 #include <cstdlib>
@@ -66,6 +68,7 @@ TEST(fuzz_folders_exist) {
         CHECK_MSG(fs::is_directory(fuzz_dir() / "regressions" / t), std::string("missing regressions for ") + t);
         CHECK_MSG(files_in(fuzz_dir() / "corpus" / t).size() >= 3, std::string("fewer than 3 seeds for ") + t);
     }
+    CHECK(files_in(fuzz_dir() / "found" / "obj").size() >= 100);  // kept from the 10 M-execution run
 }
 
 TEST(seed_corpora_load_and_pass_checks) {
@@ -77,10 +80,11 @@ TEST(seed_corpora_load_and_pass_checks) {
         }
 }
 
-TEST(crash_regressions_give_error_or_valid_value) {
+TEST(crash_regressions_and_found_inputs_give_error_or_valid_value) {
     for (const char *t : TARGETS)
-        for (const fs::path &f : files_in(fuzz_dir() / "regressions" / t)) {
-            const std::string v = check_file(t, f);
-            CHECK_MSG(v.empty(), f.string() + ": " + v);
-        }
+        for (const char *folder : {"regressions", "found"})
+            for (const fs::path &f : files_in(fuzz_dir() / folder / t)) {
+                const std::string v = check_file(t, f);
+                CHECK_MSG(v.empty(), f.string() + ": " + v);
+            }
 }
