@@ -21,8 +21,9 @@ CPPFLAGS := -Iinclude -MMD -MP $(SIMD_FLAGS)
 OPT      ?= -O2
 # float-cast-overflow is not part of GCC's "undefined" group: out-of-range float→int is UB too.
 # -g1 (line tables only): reports still name file:line, and the sanitizer build — most of
-# `make test`'s time — compiles ~25 % faster than with full -g.
-SANFLAGS := -O1 -g1 -fsanitize=address,undefined,float-cast-overflow -fno-omit-frame-pointer -fno-sanitize-recover=all
+# `make test`'s time — compiles ~25 % faster than with full -g. -Og: the library compiles
+# ~35 % faster than at -O1 and the sanitized tests run as fast (32 s against 31 s, 2 cores).
+SANFLAGS := -Og -g1 -fsanitize=address,undefined,float-cast-overflow -fno-omit-frame-pointer -fno-sanitize-recover=all
 LDLIBS   := -pthread
 
 LIB_SRCS   := $(sort $(shell find src -name '*.cpp'))
@@ -81,11 +82,11 @@ $(BUILD)/san/obj/%.o: %.cpp
 # The test programs' own code (tests/*_test.cpp; not the library they test, not the
 # benchmarks) is compiled at -O0, plain and under the sanitizers: compiling the tests is
 # most of `make test`'s time, and they spend their run time in the library, which keeps
-# $(OPT) and SANFLAGS' -O1. With the precompiled prelude below, compiling eight of the
+# $(OPT) and SANFLAGS' -Og. With the precompiled prelude below, compiling eight of the
 # tests took 24 s of CPU against 54 s at -O2 / -O1 without it. (-O1 is no choice for the
 # plain build: GCC 12 then warns falsely of array bounds inside std::string.)
 TEST_OPT       ?= -O0
-SAN_TEST_FLAGS := $(subst -O1,-O0,$(SANFLAGS))
+SAN_TEST_FLAGS := $(subst -Og,-O0,$(SANFLAGS))
 # tests/test_prelude.h (the standard and library headers most tests include) is compiled
 # once per build into a precompiled header next to a copy of it, which each test is given
 # with -include (-Winvalid-pch: an unusable one is an error, not a silent slow build).
