@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "raster.h"
+#include "../canvas/splat.h"  // floor_to_int
 
 namespace tiny3d {
 
@@ -20,17 +21,26 @@ result<texture> texture_from_canvas(const canvas_t &canvas) {
 
 namespace {
 
-// Texel index along one axis for integer coordinate i (may be outside 0..n−1).
+// Texel index along one axis for integer coordinate i (may be outside 0..n−1). Callers
+// pass coordinates reduced first (reduce): with repeat, x ∈ [0, 1]·n, so i ∈ [−1, n] and one
+// wrap by n suffices (no division per texel: it was most of a bilinear lookup's time).
 int address(int i, int n, texture_wrap wrap) {
     if (wrap == texture_wrap::clamp) return i < 0 ? 0 : (i >= n ? n - 1 : i);
-    const int r = i % n;
-    return r < 0 ? r + n : r;
+    return i < 0 ? i + n : (i >= n ? i - n : i);
 }
 
-// Reduces a coordinate for repeat addressing to [0, 1) so that huge values keep their
+// ⌊t⌋ for finite t, without a libm call (x86-64's baseline has no rounding instruction):
+// from 2^23 on every float is an integer; below, truncation then one step down.
+float floor_of(float t) {
+    if (!(std::fabs(t) < 8388608.0f)) return t;
+    const float f = static_cast<float>(static_cast<int>(t));
+    return f > t ? f - 1.0f : f;
+}
+
+// Reduces a coordinate for repeat addressing to [0, 1] so that huge values keep their
 // fraction's precision relative to the texture and the integer conversion cannot overflow.
 float reduce(float t, texture_wrap wrap) {
-    if (wrap == texture_wrap::repeat) return t - std::floor(t);
+    if (wrap == texture_wrap::repeat) return t - floor_of(t);
     return t < -1.0f ? -1.0f : (t > 2.0f ? 2.0f : t);  // clamp: beyond ±1 texture all edge texels
 }
 
@@ -43,9 +53,8 @@ float bilinear(const float *texels, int width, int height, float u, float v, tex
         return texels[static_cast<std::size_t>(address(j, height, wrap)) * width + address(i, width, wrap)];
     };
     const float fx = x - 0.5f, fy = y - 0.5f;  // centres at i + 0.5
-    const float x0 = std::floor(fx), y0 = std::floor(fy);
-    const float tx = fx - x0, ty = fy - y0;
-    const int i0 = static_cast<int>(x0), j0 = static_cast<int>(y0);
+    const int i0 = detail::floor_to_int(fx), j0 = detail::floor_to_int(fy);  // |fx|, |fy| ≤ 2n
+    const float tx = fx - static_cast<float>(i0), ty = fy - static_cast<float>(j0);
     const float top = texel(i0, j0) + (texel(i0 + 1, j0) - texel(i0, j0)) * tx;
     const float bottom = texel(i0, j0 + 1) + (texel(i0 + 1, j0 + 1) - texel(i0, j0 + 1)) * tx;
     return top + (bottom - top) * ty;
@@ -63,8 +72,8 @@ float texture_sample(const texture &tex, float u, float v, texture_filter filter
     if (filter == texture_filter::nearest) {
         const float x = reduce(u, wrap) * static_cast<float>(tex.width);
         const float y = reduce(v, wrap) * static_cast<float>(tex.height);
-        const int i = address(static_cast<int>(std::floor(x)), tex.width, wrap);
-        const int j = address(static_cast<int>(std::floor(y)), tex.height, wrap);
+        const int i = address(detail::floor_to_int(x), tex.width, wrap);
+        const int j = address(detail::floor_to_int(y), tex.height, wrap);
         return tex.texels[static_cast<std::size_t>(j) * tex.width + i];
     }
     return bilinear(tex.texels.data(), tex.width, tex.height, u, v, wrap);
