@@ -201,15 +201,15 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
                 add_msaa(t, depth, shade, state, out);
                 continue;
             }
-            // Set up in place at the end of the list (no copy); dropped again unless ready.
-            detail::fast_triangle &f = out.fast.emplace_back();
+            // Set up in a local and appended when ready (set up in place at the list's end,
+            // emplace_back() zeroed each entry first, out of line).
+            detail::fast_triangle f;
             const detail::fast_setup verdict = detail::setup_fast_triangle(X, Y, area2, full, depth, shade, f);
             if (verdict == detail::fast_setup::ready) {
                 out.stats.rasterized += counts;
-                bin_last_fast(out);
+                bin_fast(f, out);
                 continue;
             }
-            out.fast.pop_back();
             if (verdict == detail::fast_setup::wide) {
                 const triangle_edges t = detail::triangle_setup_snapped(X, Y, full, p.cull);
                 if (!t.valid) continue;

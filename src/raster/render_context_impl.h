@@ -130,15 +130,12 @@ struct render_context::impl {
         if (f.wide >= 0) out.wide.push_back(t);
         bin_fast(f, out);
     }
-    // Appends a set-up fast triangle and its band bins.
-    void bin_fast(const detail::fast_triangle &f, segment &out) {
+    // Appends a set-up fast triangle and puts it into the bins of the bands it covers. Out
+    // of line, so that the vector appends inline here (in the large set-up loop they were
+    // calls: +0.7 % instructions for Scene S level 6).
+    [[gnu::noinline]] void bin_fast(const detail::fast_triangle &f, segment &out) {
+        const std::uint32_t index = static_cast<std::uint32_t>(out.fast.size());
         out.fast.push_back(f);
-        bin_last_fast(out);
-    }
-    // Puts the last fast triangle into the bins of the bands it covers.
-    void bin_last_fast(segment &out) {
-        const std::uint32_t index = static_cast<std::uint32_t>(out.fast.size() - 1);
-        const detail::fast_triangle &f = out.fast.back();
         for (int b = bands.of(f.min_y); b <= bands.of(f.max_y); ++b) out.bins[b].push_back(index);
     }
     void emit(const clip_vertex *poly, int n, const draw_params &p, std::uint32_t state, bool generic, bool count,
