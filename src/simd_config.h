@@ -21,4 +21,14 @@
 #endif
 #endif
 
+#ifdef TINY3D_AVX512
+namespace tiny3d::detail {
+// Whether this CPU runs the AVX-512 kernels (F, VL, DQ and BW).
+inline bool cpu_has_avx512() {
+    return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
+           __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512bw");
+}
+}  // namespace tiny3d::detail
+#endif
+
 #endif

@@ -29,6 +29,15 @@ namespace {
 
 constexpr sample_count MODES[] = {sample_count::x1, sample_count::x4, sample_count::x8, sample_count::x16};
 
+// Every multisample kernel this build runs on this CPU, the portable reference first.
+std::vector<detail::msaa_kernel> msaa_kernels() {
+    std::vector<detail::msaa_kernel> out = {detail::msaa_kernel::portable};
+    const detail::msaa_kernel best = detail::best_msaa_kernel();
+    if (best != detail::msaa_kernel::portable) out.push_back(detail::msaa_kernel::sse2);
+    if (best == detail::msaa_kernel::avx512) out.push_back(detail::msaa_kernel::avx512);
+    return out;
+}
+
 // A small Scene S: the icosphere (or any mesh) at the origin, camera at (0, 0, 3), fov 45°,
 // Gouraud Lambert with one directional light, turned by `angle` about +y.
 struct small_scene {
@@ -278,7 +287,7 @@ std::vector<std::array<std::int32_t, 6>> jittered_grid(int W, int H, unsigned se
 // test LESS, triangle t in intensity (t + 1) / 1024: each sample keeps the FIRST triangle
 // covering it, and depth 0.5 once covered.
 detail::sample_store fill_all(const std::vector<std::array<std::int32_t, 6>> &tris, int W, int H, int samples,
-                              bool reversed, bool portable) {
+                              bool reversed, detail::msaa_kernel kernel) {
     detail::sample_store store;
     store.resize(W, H, samples);
     store.start(0, H);
@@ -291,7 +300,7 @@ detail::sample_store fill_all(const std::vector<std::array<std::int32_t, 6>> &tr
         const float shade = static_cast<float>(t + 1) / 1024, intensity[3] = {shade, shade, shade};
         detail::msaa_triangle f;
         if (e.area2 == 0 || !detail::make_msaa_triangle(e, pat, {0, 0, W, H}, depth, intensity, f)) continue;
-        detail::fill_msaa_rows(store, f, pat, depth_func::less, true, 0.0f, 0, H, portable);
+        detail::fill_msaa_rows(store, f, pat, depth_func::less, true, 0.0f, 0, H, kernel);
     }
     return store;
 }
@@ -305,10 +314,10 @@ TEST(msaa_watertight_per_sample) {
     constexpr int W = 37, H = 29;
     for (unsigned seed : {1u, 2u, 3u})
         for (int samples : {4, 8, 16})
-            for (bool portable : {false, true}) {
+            for (detail::msaa_kernel kernel : msaa_kernels()) {
                 const auto tris = jittered_grid(W, H, seed);
-                detail::sample_store forward = fill_all(tris, W, H, samples, false, portable);
-                detail::sample_store backward = fill_all(tris, W, H, samples, true, portable);
+                detail::sample_store forward = fill_all(tris, W, H, samples, false, kernel);
+                detail::sample_store backward = fill_all(tris, W, H, samples, true, kernel);
                 int gaps = 0, doubles = 0;
                 for (int y = 0; y < H; ++y)
                     for (int x = 0; x < W; ++x) {
@@ -382,16 +391,20 @@ TEST(msaa_16_pattern_is_centred_and_its_coverage_exact) {
     CHECK_EQ(mismatches, 0);
 }
 
-// The SSE2 kernel against the portable one: random overlapping triangles with depth, every
-// sample bit-identical; large triangles (boxes wider than 8 columns: walked by row spans)
-// and small ones (at most 8 columns: the box walked whole), some off the canvas' edges.
-TEST(msaa_sse2_kernel_matches_the_portable_kernel) {
+// The SSE2 and AVX-512 kernels against the portable one: random overlapping triangles with
+// depth (ties included, every depth test, with and without depth writes), every sample
+// bit-identical; large triangles (boxes wider than 8 columns: walked by
+// row spans) and small ones (at most 8 columns: at 4× the box walked whole), some off the
+// canvas' edges.
+TEST(msaa_simd_kernels_match_the_portable_kernel) {
     constexpr int W = 41, H = 33;
-    std::mt19937 rng(11);
-    std::uniform_int_distribution<int> coord(-80, 45 * 16), near(-3 * 16, 3 * 16);
-    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    const std::vector<detail::msaa_kernel> kernels = msaa_kernels();
+    for (std::size_t kernel = 1; kernel < kernels.size(); ++kernel)
     for (bool small : {false, true})
         for (int samples : {4, 8, 16}) {
+            std::mt19937 rng(11 + static_cast<unsigned>(samples));
+            std::uniform_int_distribution<int> coord(-80, 45 * 16), near(-3 * 16, 3 * 16);
+            std::uniform_real_distribution<float> unit(0.0f, 1.0f);
             const detail::sample_pattern &pat = detail::pattern_of(samples);
             detail::sample_store a, b;
             for (detail::sample_store *st : {&a, &b}) st->resize(W, H, samples), st->start(0, H);
@@ -401,14 +414,25 @@ TEST(msaa_sse2_kernel_matches_the_portable_kernel) {
                 if (small)
                     for (int k = 1; k < 3; ++k) X[k] = X[0] + near(rng), Y[k] = Y[0] + near(rng);
                 const triangle_edges e = detail::triangle_setup_snapped(X, Y, {0, 0, W, H}, cull_mode::none);
-                const float depth[3] = {unit(rng), unit(rng), unit(rng)}, intensity[3] = {unit(rng), unit(rng), unit(rng)};
+                // Every other triangle at a constant depth of 0.25 or 0.5: equal depths, so the
+                // depth test's ties are decided too.
+                float depth[3] = {unit(rng), unit(rng), unit(rng)};
+                if (t % 2) depth[0] = depth[1] = depth[2] = t % 4 == 1 ? 0.25f : 0.5f;
+                const float intensity[3] = {unit(rng), unit(rng), unit(rng)};
                 detail::msaa_triangle f;
                 if (e.area2 == 0 || !detail::make_msaa_triangle(e, pat, {0, 0, W, H}, depth, intensity, f)) continue;
                 CHECK(f.narrow);
                 ++drawn;
                 narrow_boxes += f.max_x - f.min_x < 8;
-                detail::fill_msaa_rows(a, f, pat, depth_func::less, true, 0.25f, 0, H, false);
-                detail::fill_msaa_rows(b, f, pat, depth_func::less, true, 0.25f, 0, H, true);
+                // Mostly `less` with depth writes; every seventh triangle another test, some
+                // without writing depth.
+                constexpr depth_func tests[] = {depth_func::less_equal, depth_func::equal, depth_func::greater,
+                                                depth_func::greater_equal, depth_func::not_equal, depth_func::always,
+                                                depth_func::never};
+                const depth_func test = t % 7 ? depth_func::less : tests[(t / 7) % 7];
+                const bool write = t % 5 != 4;
+                detail::fill_msaa_rows(a, f, pat, test, write, 0.25f, 0, H, kernels[kernel]);
+                detail::fill_msaa_rows(b, f, pat, test, write, 0.25f, 0, H, kernels[0]);
             }
             CHECK(small ? narrow_boxes == drawn : narrow_boxes < drawn / 4);
             int differ = 0, touched = 0;
@@ -426,8 +450,8 @@ TEST(msaa_sse2_kernel_matches_the_portable_kernel) {
             canvas_ptr fast = make_canvas(W, H).value(), plain = make_canvas(W, H).value();
             zbuffer fast_z, plain_z;
             CHECK(fast_z.resize(W, H).ok() && plain_z.resize(W, H).ok());
-            a.resolve(*fast, fast_z, 0.25f, false);
-            a.resolve(*plain, plain_z, 0.25f, true);
+            a.resolve(*fast, fast_z, 0.25f, kernels[kernel]);
+            a.resolve(*plain, plain_z, 0.25f, kernels[0]);
             int resolve_differ = 0, untouched = 0;
             double worst = 0;
             for (int y = 0; y < H; ++y)

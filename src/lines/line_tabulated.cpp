@@ -140,9 +140,7 @@ void build_stamps(line_table &t, double reach, float thickness, line_cap cap) {
 
 line_simd best_line_simd() {
 #ifdef TINY3D_AVX512
-    if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
-        __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512bw"))
-        return line_simd::avx512;
+    if (detail::cpu_has_avx512()) return line_simd::avx512;
 #endif
 #ifdef TINY3D_SSE2
     return line_simd::sse2;

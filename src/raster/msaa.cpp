@@ -1,6 +1,7 @@
 // msaa.cpp — multisampled filled triangles (msaa.h): sample patterns, the sample store and
 // its resolve, the per-triangle setup and the row fill (64-bit portable kernel, SSE2 kernel).
 #include "msaa.h"
+#include "msaa_kernels.h"
 
 #include <algorithm>
 #include <cstring>
@@ -35,9 +36,6 @@ sample_pattern make_pattern(std::initializer_list<std::pair<int, int>> offsets, 
     return p;
 }
 
-// floor(n / d), d > 0.
-inline std::int64_t floor_div(std::int64_t n, std::int64_t d) { return n >= 0 ? n / d : -((-n + d - 1) / d); }
-
 constexpr std::int64_t HALF = RASTER_SUBPIXEL_ONE / 2;
 
 // Pixels p (one axis) whose centre 16p + 8 plus an offset in [lo_off, hi_off] meets [lo, hi].
@@ -46,28 +44,6 @@ inline void axis_bounds(std::int64_t lo, std::int64_t hi, int lo_off, int hi_off
     first = static_cast<int>(std::max<std::int64_t>(-floor_div(HALF + hi_off - lo, RASTER_SUBPIXEL_ONE), clip0));
     last = static_cast<int>(std::min<std::int64_t>(floor_div(hi - HALF - lo_off, RASTER_SUBPIXEL_ONE), clip1 - 1));
 }
-
-// Per edge: the extremes over the pattern of the offsets of the edge value at a sample
-// from the value at the pixel centre.
-struct edge_extremes {
-    std::int64_t lo[3], hi[3];
-    // Row y of f: the edge values e[] at the centre of its first column (min_x) and the
-    // columns [lo_x, hi_x] (relative to min_x) where some sample could pass every edge.
-    // False when that span is empty.
-    bool row(const msaa_triangle &f, int y, std::int64_t e[3], int &lo_x, int &hi_x) const {
-        std::int64_t first = 0, last = f.max_x - f.min_x;
-        for (int k = 0; k < 3; ++k) {
-            e[k] = f.e[k] + f.b[k] * (y - f.min_y);
-            const std::int64_t top = e[k] + hi[k];  // the best sample's value at column 0
-            if (f.a[k] > 0) first = std::max(first, -floor_div(top, f.a[k]));  // top + a·x ≥ 0
-            else if (f.a[k] < 0) last = std::min(last, floor_div(top, -f.a[k]));
-            else if (top < 0) last = -1;
-        }
-        lo_x = static_cast<int>(first);
-        hi_x = static_cast<int>(std::max<std::int64_t>(last, first - 1));
-        return lo_x <= hi_x;
-    }
-};
 
 // The offsets d[k][s] themselves (the portable kernel).
 struct sample_offsets : edge_extremes {
@@ -400,14 +376,25 @@ void sample_store::initialise(float *pixel, float clear_colour) const {
     std::fill(pixel + samples_, pixel + 2 * samples_, clear_colour);
 }
 
-void sample_store::resolve(canvas_t &canvas, zbuffer &depth, float clear_colour, [[maybe_unused]] bool portable) {
+msaa_kernel best_msaa_kernel() {
+#ifdef TINY3D_AVX512
+    if (cpu_has_avx512()) return msaa_kernel::avx512;
+#endif
+#ifdef TINY3D_SSE2
+    return msaa_kernel::sse2;
+#else
+    return msaa_kernel::portable;
+#endif
+}
+
+void sample_store::resolve(canvas_t &canvas, zbuffer &depth, float clear_colour, [[maybe_unused]] msaa_kernel kernel) {
     const int S = samples_;
     const float inv = 1.0f / static_cast<float>(S);
     for (int y = origin_; y < end_; ++y) {
         const std::uint8_t *touched = touched_row(y);
         float *colour = canvas.pixels[y], *z = depth.row(y);
 #ifdef TINY3D_SSE2
-        switch (portable ? 0 : S) {
+        switch (kernel == msaa_kernel::portable ? 0 : S) {
             case 4: resolve_row_sse2<4>(pixel(0, y), touched, width_, clear_colour, colour, z); continue;
             case 8: resolve_row_sse2<8>(pixel(0, y), touched, width_, clear_colour, colour, z); continue;
             case 16: resolve_row_sse2<16>(pixel(0, y), touched, width_, clear_colour, colour, z); continue;
@@ -464,12 +451,16 @@ bool make_msaa_triangle(const triangle_edges &t, const sample_pattern &pat, pixe
 }
 
 void fill_msaa_rows(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
-                    bool depth_write, float clear_colour, int y0, int y1, [[maybe_unused]] bool portable) {
+                    bool depth_write, float clear_colour, int y0, int y1, [[maybe_unused]] msaa_kernel kernel) {
     y0 = std::max(y0, f.min_y);
     y1 = std::min(y1, f.max_y + 1);
     if (y0 >= y1 || test == depth_func::never) return;
+#ifdef TINY3D_AVX512
+    if (f.narrow && kernel == msaa_kernel::avx512 && (pat.count == 8 || pat.count == 16))
+        return fill_rows_avx512(store, f, pat, test, depth_write, clear_colour, y0, y1);
+#endif
 #ifdef TINY3D_SSE2
-    if (f.narrow && !portable) {
+    if (f.narrow && kernel != msaa_kernel::portable) {
         switch (pat.count) {
             case 4: return fill_rows_sse2_dispatch<4>(store, f, pat, test, depth_write, clear_colour, y0, y1);
             case 8: return fill_rows_sse2_dispatch<8>(store, f, pat, test, depth_write, clear_colour, y0, y1);

@@ -43,6 +43,16 @@ inline std::int64_t msaa_half_step(std::int64_t a, std::int64_t b) {
 // The pattern of 1, 4, 8 or 16 samples (1: the pixel centre); other counts give the centre.
 const sample_pattern &pattern_of(int samples);
 
+// Which kernel fills and resolves the samples: the portable reference (64-bit edge values,
+// one sample at a time), SSE2 (32-bit edge values, four samples per register) or AVX-512
+// (eight or sixteen samples per register: 8× and 16×; 4× and the resolve run SSE2). All
+// three give bit-identical samples and images; a faster one runs where its precondition
+// holds (msaa_triangle::narrow) and the next slower one elsewhere.
+enum class msaa_kernel { portable, sse2, avx512 };
+// The fastest kernel this build runs on this CPU (avx512 only where the CPU has AVX-512
+// F/VL/DQ/BW).
+msaa_kernel best_msaa_kernel();
+
 // The samples of a tile of rows [origin, origin + rows) of the canvas: per pixel S sample
 // depths, then S sample colours (floats, contiguous), and whether the pixel has been touched
 // (untouched pixels hold the clear values implicitly, so clearing a tile writes one byte
@@ -66,8 +76,8 @@ public:
     void initialise(float *pixel, float clear_colour) const;
     // The tile's rows: canvas := the mean of each pixel's sample colours (clear_colour when
     // untouched), depth := the nearest sample depth (1 when untouched). The sums run in one
-    // fixed order (portable and SSE2 alike: bit-identical); `portable` forces the scalar loop.
-    void resolve(canvas_t &canvas, zbuffer &depth, float clear_colour, bool portable = false);
+    // fixed order (every kernel alike: bit-identical).
+    void resolve(canvas_t &canvas, zbuffer &depth, float clear_colour, msaa_kernel kernel);
 
 private:
     int width_ = 0, rows_ = 0, samples_ = 1, origin_ = 0, end_ = 0;
@@ -105,10 +115,10 @@ void msaa_candidate_rows(std::int64_t min_Y, std::int64_t max_Y, const sample_pa
                          int &row1);
 
 // Draws rows [y0, y1) ∩ [min_y, max_y]: per sample coverage and depth test, the pixel's
-// intensity (at its centre, clamped to 0..1) into the passing samples. `portable` forces
-// the 64-bit scalar kernel (tests compare the two).
+// intensity (at its centre, clamped to 0..1) into the passing samples, by `kernel` (or the
+// next slower one where its precondition fails; tests compare them).
 void fill_msaa_rows(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
-                    bool depth_write, float clear_colour, int y0, int y1, bool portable = false);
+                    bool depth_write, float clear_colour, int y0, int y1, msaa_kernel kernel);
 
 // The per-pixel path's multisampled walk: for each pixel of `t` (valid triangle_edges) inside
 // `clip` with at least one covered sample, calls fragment(x, y, mask) with bit s set for

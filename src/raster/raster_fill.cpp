@@ -128,9 +128,6 @@ inline plane attribute_plane(const plane_geometry &g, const float f[3]) {
 
 namespace {
 
-// floor(n / d) for d > 0 (C++ division truncates towards zero).
-inline std::int64_t floor_div(std::int64_t n, std::int64_t d) { return n >= 0 ? n / d : -((-n + d - 1) / d); }
-
 // Rows [0, count) relative to min_y: those where no horizontal edge (a = 0, E = E0 + b·dy)
 // is negative. Narrows [first, last] (relative row numbers).
 inline void clip_rows_by_horizontal_edge(std::int64_t e0, std::int64_t b, int &first, int &last) {

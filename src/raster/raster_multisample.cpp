@@ -42,11 +42,11 @@ void render_context::impl::draw_multisampled_band(int band, sample_store &tile) 
             continue;
         }
         const msaa_triangle &f = from.msaa[index];
-        fill_msaa_rows(tile, f, *pattern, states[f.state].depth, true, clear_intensity, y0, y1);
+        fill_msaa_rows(tile, f, *pattern, states[f.state].depth, true, clear_intensity, y0, y1, kernel);
     }
     for (const generic_triangle &g : translucent)
         draw_generic_samples(tile, *pattern, clear_intensity, states[g.state], g, y0, y1);
-    tile.resolve(*target, depth, clear_intensity);
+    tile.resolve(*target, depth, clear_intensity, kernel);
 }
 
 // Bands from a shared queue: a band's pixels depend only on its own bins, so not on which

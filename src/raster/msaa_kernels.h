@@ -1,0 +1,47 @@
+// msaa_kernels.h — internal to the multisample fill: what the kernels of msaa.cpp (portable,
+// SSE2) and of msaa_avx512.cpp share, and the AVX-512 kernel's entry point. Included by
+// msaa_avx512.cpp before its target region opens, so everything inline here stays baseline.
+#ifndef TINY3D_MSAA_KERNELS_H
+#define TINY3D_MSAA_KERNELS_H
+
+#include <algorithm>
+#include <cstdint>
+
+#include "msaa.h"
+#include "../simd_config.h"
+
+namespace tiny3d::detail {
+
+// Per edge: the extremes over the pattern of the offsets of the edge value at a sample
+// from the value at the pixel centre.
+struct edge_extremes {
+    std::int64_t lo[3], hi[3];
+    // Row y of f: the edge values e[] at the centre of its first column (min_x) and the
+    // columns [lo_x, hi_x] (relative to min_x) where some sample could pass every edge.
+    // False when that span is empty.
+    bool row(const msaa_triangle &f, int y, std::int64_t e[3], int &lo_x, int &hi_x) const {
+        std::int64_t first = 0, last = f.max_x - f.min_x;
+        for (int k = 0; k < 3; ++k) {
+            e[k] = f.e[k] + f.b[k] * (y - f.min_y);
+            const std::int64_t top = e[k] + hi[k];  // the best sample's value at column 0
+            if (f.a[k] > 0) first = std::max(first, -floor_div(top, f.a[k]));  // top + a·x ≥ 0
+            else if (f.a[k] < 0) last = std::min(last, floor_div(top, -f.a[k]));
+            else if (top < 0) last = -1;
+        }
+        lo_x = static_cast<int>(first);
+        hi_x = static_cast<int>(std::max<std::int64_t>(last, first - 1));
+        return lo_x <= hi_x;
+    }
+};
+
+#ifdef TINY3D_AVX512
+// The AVX-512 kernel (msaa_kernel::avx512; only on CPUs best_msaa_kernel() reports it for):
+// f.narrow, pat.count = 8 or 16 (one register of samples per pixel), rows [y0, y1) already
+// clamped to f's. The same integer tests and float operations as the portable kernel.
+void fill_rows_avx512(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
+                      bool depth_write, float clear_colour, int y0, int y1);
+#endif
+
+}  // namespace tiny3d::detail
+
+#endif
