@@ -41,8 +41,8 @@ constexpr std::int64_t HALF = RASTER_SUBPIXEL_ONE / 2;
 // Pixels p (one axis) whose centre 16p + 8 plus an offset in [lo_off, hi_off] meets [lo, hi].
 inline void axis_bounds(std::int64_t lo, std::int64_t hi, int lo_off, int hi_off, int clip0, int clip1, int &first,
                         int &last) {
-    first = static_cast<int>(std::max<std::int64_t>(-floor_div(HALF + hi_off - lo, RASTER_SUBPIXEL_ONE), clip0));
-    last = static_cast<int>(std::min<std::int64_t>(floor_div(hi - HALF - lo_off, RASTER_SUBPIXEL_ONE), clip1 - 1));
+    first = static_cast<int>(std::max<std::int64_t>(-floor_div<std::int64_t>(HALF + hi_off - lo, RASTER_SUBPIXEL_ONE), clip0));
+    last = static_cast<int>(std::min<std::int64_t>(floor_div<std::int64_t>(hi - HALF - lo_off, RASTER_SUBPIXEL_ONE), clip1 - 1));
 }
 
 // The offsets d[k][s] themselves (the portable kernel).

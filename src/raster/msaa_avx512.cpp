@@ -81,9 +81,9 @@ void fill_rows(sample_store &store, const msaa_triangle &f, const sample_pattern
     const __m128 plane_dx = _mm_setr_ps(f.zdx, f.idx, 0.0f, 0.0f);
     const __m128 one = _mm_set1_ps(1.0f), zero = _mm_setzero_ps();
     for (int y = y0; y < y1; ++y) {
-        std::int64_t e[3];
+        std::int32_t e[3];
         int lo, hi;
-        if (!off.row(f, y, e, lo, hi)) continue;
+        if (!off.row(f, y, e, lo, hi)) continue;  // narrow: 32 bits
         // The samples' edge values at column lo (narrow: 32 bits), stepped by a per column.
         __m512i b0 = _mm512_add_epi32(lanes(e[0] + f.a[0] * lo), d[0]);
         __m512i b1 = _mm512_add_epi32(lanes(e[1] + f.a[1] * lo), d[1]);

@@ -18,18 +18,22 @@ struct edge_extremes {
     std::int64_t lo[3], hi[3];
     // Row y of f: the edge values e[] at the centre of its first column (min_x) and the
     // columns [lo_x, hi_x] (relative to min_x) where some sample could pass every edge.
-    // False when that span is empty.
-    bool row(const msaa_triangle &f, int y, std::int64_t e[3], int &lo_x, int &hi_x) const {
-        std::int64_t first = 0, last = f.max_x - f.min_x;
+    // False when that span is empty. Int: std::int64_t, or std::int32_t when f.narrow (the
+    // best sample's value at column 0 lies where narrow bounds every edge value, below
+    // 2^31 − 2^24, and |a| < 2^19; 32-bit divisions made Scene S's 16× frame 9 % faster).
+    template <class Int>
+    bool row(const msaa_triangle &f, int y, Int e[3], int &lo_x, int &hi_x) const {
+        Int first = 0, last = static_cast<Int>(f.max_x - f.min_x);
         for (int k = 0; k < 3; ++k) {
-            e[k] = f.e[k] + f.b[k] * (y - f.min_y);
-            const std::int64_t top = e[k] + hi[k];  // the best sample's value at column 0
-            if (f.a[k] > 0) first = std::max(first, -floor_div(top, f.a[k]));  // top + a·x ≥ 0
-            else if (f.a[k] < 0) last = std::min(last, floor_div(top, -f.a[k]));
+            e[k] = static_cast<Int>(f.e[k] + f.b[k] * (y - f.min_y));
+            const Int top = e[k] + static_cast<Int>(hi[k]);  // the best sample's value at column 0
+            const Int a = static_cast<Int>(f.a[k]);
+            if (a > 0) first = std::max(first, static_cast<Int>(-floor_div(top, a)));  // top + a·x ≥ 0
+            else if (a < 0) last = std::min(last, floor_div(top, static_cast<Int>(-a)));
             else if (top < 0) last = -1;
         }
         lo_x = static_cast<int>(first);
-        hi_x = static_cast<int>(std::max<std::int64_t>(last, first - 1));
+        hi_x = static_cast<int>(std::max<Int>(last, first - 1));
         return lo_x <= hi_x;
     }
 };

@@ -32,8 +32,11 @@ inline std::int32_t snap_coord(float x) {
 // RASTER_MAX_COORD).
 bool snap_vertex(const screen_vertex &v, std::int32_t &x, std::int32_t &y);
 
-// floor(n / d) for d > 0 (C++ division truncates towards zero).
-inline std::int64_t floor_div(std::int64_t n, std::int64_t d) { return n >= 0 ? n / d : -((-n + d - 1) / d); }
+// floor(n / d) for d > 0 (C++ division truncates towards zero); −n + d − 1 must not overflow.
+template <class Int>
+inline Int floor_div(Int n, Int d) {
+    return n >= 0 ? n / d : -((-n + d - 1) / d);
+}
 
 // Twice the signed area of a snapped triangle, in (1/16 px)²: negative = front facing
 // (counter-clockwise in NDC, clockwise on the y-down screen), 0 = degenerate.
