@@ -98,13 +98,18 @@ void fill_rows(sample_store &store, const msaa_triangle &f, const sample_pattern
                 ~_mm512_movepi32_mask(_mm512_ternarylogic_epi32(b0, b1, b2, 0xFE)) & live);  // 0xFE: b0 | b1 | b2
             b0 = _mm512_add_epi32(b0, step0), b1 = _mm512_add_epi32(b1, step1), b2 = _mm512_add_epi32(b2, step2);
             if (!in) continue;
-            if (!*touched) {  // first touch this frame: depth 1, the clear colour
-                _mm512_mask_storeu_ps(p, live, ones), _mm512_mask_storeu_ps(p + S, live, clear);
-                *touched = 1;
-            }
             const __m128 at = _mm_add_ps(plane_row, _mm_mul_ps(plane_dx, column));
             const __m128 shade = _mm_min_ps(_mm_max_ps(_mm_shuffle_ps(at, at, 0x55), zero), one);  // clamp01
             const __m512 z = _mm512_add_ps(_mm512_broadcastss_ps(at), dz);
+            if (!*touched) {
+                // First touch this frame: the samples held depth 1 and the clear colour, so
+                // the pixel is written whole without being read.
+                *touched = 1;
+                const __mmask16 pass = passing<Test>(in, z, ones);
+                _mm512_mask_storeu_ps(p, live, depth_write ? _mm512_mask_blend_ps(pass, ones, z) : ones);
+                _mm512_mask_storeu_ps(p + S, live, _mm512_mask_blend_ps(pass, clear, _mm512_broadcastss_ps(shade)));
+                continue;
+            }
             const __mmask16 pass = passing<Test>(in, z, _mm512_maskz_loadu_ps(live, p));
             if (depth_write) _mm512_mask_storeu_ps(p, pass, z);
             _mm512_mask_storeu_ps(p + S, pass, _mm512_broadcastss_ps(shade));
