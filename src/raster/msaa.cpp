@@ -429,25 +429,52 @@ void msaa_candidate_rows(std::int64_t min_Y, std::int64_t max_Y, const sample_pa
     axis_bounds(min_Y, max_Y, pat.min_dy, pat.max_dy, 0, last_row + 1, row0, row1);
 }
 
-bool make_msaa_triangle(const triangle_edges &t, const sample_pattern &pat, pixel_rect clip, const float depth[3],
-                        const float intensity[3], msaa_triangle &out) {
-    msaa_bounds(t, pat, clip, out.min_x, out.max_x, out.min_y, out.max_y);
+bool make_msaa_triangle(const std::int32_t X[3], const std::int32_t Y[3], std::int64_t area2, const sample_pattern &pat,
+                        pixel_rect clip, const float depth[3], const float intensity[3], msaa_triangle &out) {
+    const std::int64_t min_X = std::min({X[0], X[1], X[2]}), max_X = std::max({X[0], X[1], X[2]});
+    const std::int64_t min_Y = std::min({Y[0], Y[1], Y[2]}), max_Y = std::max({Y[0], Y[1], Y[2]});
+    axis_bounds(min_X, max_X, pat.min_dx, pat.max_dx, clip.x0, clip.x1, out.min_x, out.max_x);
+    axis_bounds(min_Y, max_Y, pat.min_dy, pat.max_dy, clip.y0, clip.y1, out.min_y, out.max_y);
     if (out.min_x > out.max_x || out.min_y > out.max_y) return false;
+    // triangle_setup_snapped's edges (oriented by s, top-left bias) at the centre (cx, cy) of
+    // pixel (min_x, min_y), plus a half pattern's step.
+    const std::int64_t s = area2 > 0 ? 1 : -1;
+    const std::int64_t cx = RASTER_SUBPIXEL_ONE * static_cast<std::int64_t>(out.min_x) + HALF;
+    const std::int64_t cy = RASTER_SUBPIXEL_ONE * static_cast<std::int64_t>(out.min_y) + HALF;
     for (int k = 0; k < 3; ++k) {
-        out.e[k] = t.c[k] + t.a[k] * out.min_x + t.b[k] * out.min_y + (pat.half ? msaa_half_step(t.a[k], t.b[k]) : 0);
-        out.a[k] = t.a[k];
-        out.b[k] = t.b[k];
+        const int ia = k == 2 ? 0 : k + 1, ib = k == 0 ? 2 : k - 1;  // edge opposite vertex k
+        const std::int64_t dx = s * (static_cast<std::int64_t>(X[ib]) - X[ia]);
+        const std::int64_t dy = s * (static_cast<std::int64_t>(Y[ib]) - Y[ia]);
+        out.a[k] = -dy * RASTER_SUBPIXEL_ONE;
+        out.b[k] = dx * RASTER_SUBPIXEL_ONE;
+        out.e[k] = dx * (cy - Y[ia]) - dy * (cx - X[ia]) - (top_left_edge(dx, dy) ? 0 : 1) +
+                   (pat.half ? msaa_half_step(out.a[k], out.b[k]) : 0);
     }
     // Sample points lie within 16/16 px of the snapped box: |E| < 2·(span + 16)·span + span
     // < 2^31 (the last term: a half pattern's step, |h| ≤ (|dX| + |dY|)/2 + 1).
-    out.narrow = t.span_x < FAST_SPAN_LIMIT && t.span_y < FAST_SPAN_LIMIT;
+    out.narrow = max_X - min_X < FAST_SPAN_LIMIT && max_Y - min_Y < FAST_SPAN_LIMIT;
+    double x[3], y[3];
+    for (int k = 0; k < 3; ++k) {
+        x[k] = static_cast<double>(X[k]) / RASTER_SUBPIXEL_ONE;
+        y[k] = static_cast<double>(Y[k]) / RASTER_SUBPIXEL_ONE;
+    }
     float planes[6];
-    attribute_planes_at(t.x, t.y, out.min_x, out.min_y, depth, intensity, planes);
+    attribute_planes_at(x, y, out.min_x, out.min_y, depth, intensity, planes);
     out.z = planes[0], out.zdx = planes[1], out.zdy = planes[2];
     // A half pattern's depth at sample s: the plane at its grid point plus the half step.
     if (pat.half) out.z += (out.zdx + out.zdy) * (0.5f / RASTER_SUBPIXEL_ONE);
     out.i = planes[3], out.idx = planes[4], out.idy = planes[5];
     return true;
+}
+
+bool make_msaa_triangle(const triangle_edges &t, const sample_pattern &pat, pixel_rect clip, const float depth[3],
+                        const float intensity[3], msaa_triangle &out) {
+    std::int32_t X[3], Y[3];
+    for (int k = 0; k < 3; ++k) {  // the snapped vertices, exactly (multiples of 1/16)
+        X[k] = static_cast<std::int32_t>(t.x[k] * RASTER_SUBPIXEL_ONE);
+        Y[k] = static_cast<std::int32_t>(t.y[k] * RASTER_SUBPIXEL_ONE);
+    }
+    return make_msaa_triangle(X, Y, snapped_area2(X, Y), pat, clip, depth, intensity, out);
 }
 
 void fill_msaa_rows(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,

@@ -104,6 +104,11 @@ struct msaa_triangle {
 // clip rectangle.
 bool make_msaa_triangle(const triangle_edges &t, const sample_pattern &pat, pixel_rect clip, const float depth[3],
                         const float intensity[3], msaa_triangle &out);
+// The same from the snapped vertices (sub-pixel units, usable: snap_vertex) and their
+// snapped_area2 (≠ 0), without setting up triangle_edges first (the render context's
+// unclipped triangles). The first form converts t's vertices and calls this one.
+bool make_msaa_triangle(const std::int32_t X[3], const std::int32_t Y[3], std::int64_t area2, const sample_pattern &pat,
+                        pixel_rect clip, const float depth[3], const float intensity[3], msaa_triangle &out);
 
 // The pixels [x0, x1] × [y0, y1] with a sample of the pattern inside the snapped vertex box
 // of `t` (valid triangle_edges), clamped to `clip`; empty when x0 > x1 or y0 > y1.

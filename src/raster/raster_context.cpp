@@ -92,8 +92,9 @@ void render_context::impl::emit(const clip_vertex *poly, int n, const draw_param
         }
         const float shade[3] = {c[0]->attr[ATTR_SHADE], c[1]->attr[ATTR_SHADE], c[2]->attr[ATTR_SHADE]};
         const float depth[3] = {v[0].z, v[1].z, v[2].z};
-        if (multisampled()) add_msaa(t, depth, shade, state, out);
-        else add_fast(t, depth, shade, out);
+        detail::msaa_triangle f;
+        if (!multisampled()) add_fast(t, depth, shade, out);
+        else if (make_msaa_triangle(t, *pattern, full, depth, shade, f)) add_msaa(f, state, out);
     }
 }
 
@@ -194,11 +195,10 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
             const bool counts = bands.owner[bands.of(static_cast<int>(row0))] == thread;
             const float depth[3] = {a.depth, b.depth, c.depth};
             const float shade[3] = {flat ? flat_shade : a.shade, flat ? flat_shade : b.shade, flat ? flat_shade : c.shade};
-            if (msaa) {
-                const triangle_edges t = detail::triangle_setup_snapped(X, Y, full, p.cull);
-                if (t.area2 == 0) continue;  // (no pixel centre inside is fine: samples may be)
+            if (msaa) {  // (no pixel centre inside is fine: samples may be)
                 out.stats.rasterized += counts;
-                add_msaa(t, depth, shade, state, out);
+                detail::msaa_triangle f;
+                if (make_msaa_triangle(X, Y, area2, *pattern, full, depth, shade, f)) add_msaa(f, state, out);
                 continue;
             }
             // Set up in a local and appended when ready (set up in place at the list's end,

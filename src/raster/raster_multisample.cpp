@@ -9,10 +9,7 @@ namespace tiny3d {
 
 using namespace detail;
 
-void render_context::impl::add_msaa(const triangle_edges &t, const float depth_at[3], const float shade[3],
-                                    std::uint32_t state, segment &out) {
-    msaa_triangle f;
-    if (!make_msaa_triangle(t, *pattern, {0, 0, target->width, target->height}, depth_at, shade, f)) return;
+void render_context::impl::add_msaa(msaa_triangle &f, std::uint32_t state, segment &out) {
     f.state = state;
     const std::uint32_t index = static_cast<std::uint32_t>(out.msaa.size());
     out.msaa.push_back(f);

@@ -143,8 +143,8 @@ struct render_context::impl {
               segment &out);
 
     // Multisampled frames (raster_multisample.cpp).
-    void add_msaa(const triangle_edges &t, const float depth_at[3], const float shade[3], std::uint32_t state,
-                  segment &out);
+    // Appends f (made by make_msaa_triangle: either form) with the draw state and bins it.
+    void add_msaa(detail::msaa_triangle &f, std::uint32_t state, segment &out);
     void bin_generic(const triangle_edges &t, segment &out);  // the last of out.generic, opaque
     void draw_multisampled_band(int band, detail::sample_store &tile);
     void end_multisampled_frame();
