@@ -101,18 +101,16 @@ void fill_rows(sample_store &store, const msaa_triangle &f, const sample_pattern
             const __m128 at = _mm_add_ps(plane_row, _mm_mul_ps(plane_dx, column));
             const __m128 shade = _mm_min_ps(_mm_max_ps(_mm_shuffle_ps(at, at, 0x55), zero), one);  // clamp01
             const __m512 z = _mm512_add_ps(_mm512_broadcastss_ps(at), dz);
-            if (!*touched) {
-                // First touch this frame: the samples held depth 1 and the clear colour, so
-                // the pixel is written whole without being read.
-                *touched = 1;
-                const __mmask16 pass = passing<Test>(in, z, ones);
-                _mm512_mask_storeu_ps(p, live, depth_write ? _mm512_mask_blend_ps(pass, ones, z) : ones);
-                _mm512_mask_storeu_ps(p + S, live, _mm512_mask_blend_ps(pass, clear, _mm512_broadcastss_ps(shade)));
-                continue;
-            }
-            const __mmask16 pass = passing<Test>(in, z, _mm512_maskz_loadu_ps(live, p));
-            if (depth_write) _mm512_mask_storeu_ps(p, pass, z);
-            _mm512_mask_storeu_ps(p + S, pass, _mm512_broadcastss_ps(shade));
+            // Until its first touch this frame a pixel's samples hold depth 1 and the clear
+            // colour: read as such (a load with no lane set reads no memory), no branch.
+            const __mmask16 held = static_cast<__mmask16>(live & (0u - static_cast<unsigned>(*touched)));
+            *touched = 1;
+            const __m512 stored = _mm512_mask_loadu_ps(ones, held, p);
+            const __mmask16 pass = passing<Test>(in, z, stored);
+            if (depth_write) _mm512_mask_storeu_ps(p, live, _mm512_mask_blend_ps(pass, stored, z));
+            else _mm512_mask_storeu_ps(p, static_cast<__mmask16>(live & ~held), ones);
+            _mm512_mask_storeu_ps(p + S, live, _mm512_mask_blend_ps(pass, _mm512_mask_loadu_ps(clear, held, p + S),
+                                                                   _mm512_broadcastss_ps(shade)));
         }
     }
 }
