@@ -229,20 +229,20 @@ void fill_rows_sse2(sample_store &store, const msaa_triangle &f, const sample_pa
             }
             b0 = _mm_add_epi32(b0, step0), b1 = _mm_add_epi32(b1, step1), b2 = _mm_add_epi32(b2, step2);
             if (_mm_movemask_ps(_mm_castsi128_ps(all_out)) == 0xF) continue;
-            if (!*touched) {  // first touch this frame: depth 1, the clear colour
-                for (int g = 0; g < G; ++g) _mm_storeu_ps(p + 4 * g, ones), _mm_storeu_ps(p + S + 4 * g, clear);
-                *touched = 1;
-            }
+            // Until its first touch this frame a pixel's samples hold depth 1 and the clear
+            // colour: what is in memory is selected away (no branch).
+            const __m128 held = _mm_castsi128_ps(_mm_set1_epi32(-static_cast<std::int32_t>(*touched)));
+            *touched = 1;
             const __m128 at = _mm_add_ps(plane_row, _mm_mul_ps(plane_dx, column));
             const __m128 zc = _mm_shuffle_ps(at, at, 0x00);
             const __m128 shade = _mm_min_ps(_mm_max_ps(_mm_shuffle_ps(at, at, 0x55), zero), ones);  // clamp01
             for (int g = 0; g < G; ++g) {
                 const __m128 z = _mm_add_ps(zc, dz[g]);
-                const __m128 stored = _mm_loadu_ps(p + 4 * g);
+                const __m128 stored = select(held, _mm_loadu_ps(p + 4 * g), ones);
                 __m128 pass = compare<Test>(z, stored);
                 if (!full) pass = _mm_andnot_ps(_mm_castsi128_ps(_mm_srai_epi32(n[g], 31)), pass);
                 _mm_storeu_ps(p + 4 * g, select(_mm_and_ps(pass, write), z, stored));
-                _mm_storeu_ps(p + S + 4 * g, select(pass, shade, _mm_loadu_ps(p + S + 4 * g)));
+                _mm_storeu_ps(p + S + 4 * g, select(pass, shade, select(held, _mm_loadu_ps(p + S + 4 * g), clear)));
             }
         }
     }
