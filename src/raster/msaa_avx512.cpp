@@ -9,12 +9,14 @@
 // their inline functions stay baseline x86-64. Run only on CPUs that have it
 // (best_msaa_kernel). No FMA contraction: the portable kernel's float operations, rounded
 // step by step, lane by lane.
+#include <algorithm>
 #include <cstdint>
 
 #include "msaa_kernels.h"
 #include "../simd_config.h"
 
 #ifdef TINY3D_AVX512
+#include <emmintrin.h>
 #include <immintrin.h>
 
 #if defined(__clang__)
@@ -33,6 +35,9 @@
 
 namespace tiny3d::detail {
 namespace {
+
+// 4×: the SSE2 kernel's source, compiled here for AVX-512 (msaa_sse2_fill.inc).
+#include "msaa_sse2_fill.inc"
 
 // The depth test on sixteen lanes, as depth_passes decides it per sample (a NaN depth
 // passes only not_equal and always), limited to the lanes of `in`.
@@ -137,6 +142,7 @@ void fill_rows_dispatch(sample_store &store, const msaa_triangle &f, const sampl
 
 void fill_rows_avx512(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
                       bool depth_write, float clear_colour, int y0, int y1) {
+    if (pat.count == 4) return fill_rows_sse2_dispatch<4>(store, f, pat, test, depth_write, clear_colour, y0, y1);
     if (pat.count == 16) return fill_rows_dispatch<16>(store, f, pat, test, depth_write, clear_colour, y0, y1);
     return fill_rows_dispatch<8>(store, f, pat, test, depth_write, clear_colour, y0, y1);
 }
