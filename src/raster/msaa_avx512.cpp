@@ -39,47 +39,108 @@ namespace {
 // 4×: the SSE2 kernel's source, compiled here for AVX-512 (msaa_sse2_fill.inc).
 #include "msaa_sse2_fill.inc"
 
-// The depth test on sixteen lanes, as depth_passes decides it per sample (a NaN depth
-// passes only not_equal and always), limited to the lanes of `in`.
-template <depth_func Test>
-inline __mmask16 passing(__mmask16 in, __m512 z, __m512 stored) {
+// One register of S samples: 16 floats (zmm) for 16×, 8 (ymm) for 8× — a pixel's depths or
+// colours exactly, so no access reaches a neighbouring pixel (a 16-lane access with lanes
+// masked off still overlaps the next pixel's samples and defeats store-to-load forwarding:
+// 8× in zmm was 21 ms against 17 in ymm here). Masks: bit s = sample s.
+template <int S>
+struct samples;
+
+template <>
+struct samples<16> {
+    using vf = __m512;
+    using vi = __m512i;
+    using mask = __mmask16;
+    static vf set(float v) { return _mm512_set1_ps(v); }
+    static vi set_int(std::int64_t v) { return _mm512_set1_epi32(static_cast<std::int32_t>(v)); }
+    static vf load(const float *p) { return _mm512_loadu_ps(p); }
+    static vf load(vf held_off, mask held, const float *p) { return _mm512_mask_loadu_ps(held_off, held, p); }
+    static void store(float *p, mask m, vf v) { _mm512_mask_storeu_ps(p, m, v); }
+    static void store(float *p, vf v) { _mm512_storeu_ps(p, v); }
+    static vf blend(mask m, vf a, vf b) { return _mm512_mask_blend_ps(m, a, b); }
+    static vf add(vf a, vf b) { return _mm512_add_ps(a, b); }
+    static vf mul(vf a, vf b) { return _mm512_mul_ps(a, b); }
+    static vi add(vi a, vi b) { return _mm512_add_epi32(a, b); }
+    static vi to_int(vf v) { return _mm512_cvtps_epi32(v); }
+    static float min_of(vf v) { return _mm512_reduce_min_ps(v); }
+    static float max_of(vf v) { return _mm512_reduce_max_ps(v); }
+    static vf broadcast(__m128 v) { return _mm512_broadcastss_ps(v); }
+    // The samples outside an edge: the sign bits of b0 | b1 | b2.
+    static mask outside(vi b0, vi b1, vi b2) { return _mm512_movepi32_mask(_mm512_ternarylogic_epi32(b0, b1, b2, 0xFE)); }
+    template <int Predicate>
+    static mask compare(mask in, vf a, vf b) { return _mm512_mask_cmp_ps_mask(in, a, b, Predicate); }
+};
+
+template <>
+struct samples<8> {
+    using vf = __m256;
+    using vi = __m256i;
+    using mask = __mmask8;
+    static vf set(float v) { return _mm256_set1_ps(v); }
+    static vi set_int(std::int64_t v) { return _mm256_set1_epi32(static_cast<std::int32_t>(v)); }
+    static vf load(const float *p) { return _mm256_loadu_ps(p); }
+    static vf load(vf held_off, mask held, const float *p) { return _mm256_mask_loadu_ps(held_off, held, p); }
+    static void store(float *p, mask m, vf v) { _mm256_mask_storeu_ps(p, m, v); }
+    static void store(float *p, vf v) { _mm256_storeu_ps(p, v); }
+    static vf blend(mask m, vf a, vf b) { return _mm256_mask_blend_ps(m, a, b); }
+    static vf add(vf a, vf b) { return _mm256_add_ps(a, b); }
+    static vf mul(vf a, vf b) { return _mm256_mul_ps(a, b); }
+    static vi add(vi a, vi b) { return _mm256_add_epi32(a, b); }
+    static vi to_int(vf v) { return _mm256_cvtps_epi32(v); }
+    static float min_of(vf v) {
+        const __m128 h = _mm_min_ps(_mm256_castps256_ps128(v), _mm256_extractf32x4_ps(v, 1));
+        const __m128 q = _mm_min_ps(h, _mm_movehl_ps(h, h));
+        return _mm_cvtss_f32(_mm_min_ss(q, _mm_shuffle_ps(q, q, 1)));
+    }
+    static float max_of(vf v) {
+        const __m128 h = _mm_max_ps(_mm256_castps256_ps128(v), _mm256_extractf32x4_ps(v, 1));
+        const __m128 q = _mm_max_ps(h, _mm_movehl_ps(h, h));
+        return _mm_cvtss_f32(_mm_max_ss(q, _mm_shuffle_ps(q, q, 1)));
+    }
+    static vf broadcast(__m128 v) { return _mm256_broadcastss_ps(v); }
+    static mask outside(vi b0, vi b1, vi b2) { return _mm256_movepi32_mask(_mm256_ternarylogic_epi32(b0, b1, b2, 0xFE)); }
+    template <int Predicate>
+    static mask compare(mask in, vf a, vf b) { return _mm256_mask_cmp_ps_mask(in, a, b, Predicate); }
+};
+
+// The depth test, as depth_passes decides it per sample (a NaN depth passes only not_equal
+// and always), limited to the samples of `in`.
+template <int S, depth_func Test>
+inline typename samples<S>::mask passing(typename samples<S>::mask in, typename samples<S>::vf z,
+                                         typename samples<S>::vf stored) {
+    using V = samples<S>;
     if constexpr (Test == depth_func::never) return 0;
-    else if constexpr (Test == depth_func::less) return _mm512_mask_cmp_ps_mask(in, z, stored, _CMP_LT_OQ);
-    else if constexpr (Test == depth_func::less_equal) return _mm512_mask_cmp_ps_mask(in, z, stored, _CMP_LE_OQ);
-    else if constexpr (Test == depth_func::equal) return _mm512_mask_cmp_ps_mask(in, z, stored, _CMP_EQ_OQ);
-    else if constexpr (Test == depth_func::greater) return _mm512_mask_cmp_ps_mask(in, z, stored, _CMP_GT_OQ);
-    else if constexpr (Test == depth_func::greater_equal) return _mm512_mask_cmp_ps_mask(in, z, stored, _CMP_GE_OQ);
-    else if constexpr (Test == depth_func::not_equal) return _mm512_mask_cmp_ps_mask(in, z, stored, _CMP_NEQ_UQ);
+    else if constexpr (Test == depth_func::less) return V::template compare<_CMP_LT_OQ>(in, z, stored);
+    else if constexpr (Test == depth_func::less_equal) return V::template compare<_CMP_LE_OQ>(in, z, stored);
+    else if constexpr (Test == depth_func::equal) return V::template compare<_CMP_EQ_OQ>(in, z, stored);
+    else if constexpr (Test == depth_func::greater) return V::template compare<_CMP_GT_OQ>(in, z, stored);
+    else if constexpr (Test == depth_func::greater_equal) return V::template compare<_CMP_GE_OQ>(in, z, stored);
+    else if constexpr (Test == depth_func::not_equal) return V::template compare<_CMP_NEQ_UQ>(in, z, stored);
     else return in;
 }
 
-// Sixteen lanes of the low 32 bits of v (narrow edge values: the wrap is exact).
-inline __m512i lanes(std::int64_t v) { return _mm512_set1_epi32(static_cast<std::int32_t>(v)); }
-
-// S = 8 or 16 samples in lanes [0, S) of one register; the other lanes are never loaded or
-// stored (`live`).
+// S = 8 or 16 samples, one register per pixel's depths and one per its colours.
 template <int S, depth_func Test>
 void fill_rows(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, bool depth_write,
                float clear_colour, int y0, int y1) {
-    constexpr __mmask16 live = static_cast<__mmask16>((1u << S) - 1);
+    using V = samples<S>;
+    using mask = typename V::mask;
     // The edge offsets a/16·dx + b/16·dy per sample, in float: a·(dx/16) is the integer
     // −Δy·dx, |·| < 2^18, so every product and sum is exact and converts to the portable
     // kernel's integers; the depth offsets are the portable kernel's float operations.
-    const __m512 ox = _mm512_maskz_loadu_ps(live, pat.fdx), oy = _mm512_maskz_loadu_ps(live, pat.fdy);
+    const typename V::vf ox = V::load(pat.fdx), oy = V::load(pat.fdy);
     edge_extremes off;
-    __m512i d[3];
+    typename V::vi d[3];
     for (int k = 0; k < 3; ++k) {
-        const __m512 v = _mm512_add_ps(_mm512_mul_ps(_mm512_set1_ps(static_cast<float>(f.a[k])), ox),
-                                       _mm512_mul_ps(_mm512_set1_ps(static_cast<float>(f.b[k])), oy));
-        d[k] = _mm512_cvtps_epi32(v);
-        off.lo[k] = static_cast<std::int64_t>(_mm512_mask_reduce_min_ps(live, v));
-        off.hi[k] = static_cast<std::int64_t>(_mm512_mask_reduce_max_ps(live, v));
+        const typename V::vf v = V::add(V::mul(V::set(static_cast<float>(f.a[k])), ox),
+                                        V::mul(V::set(static_cast<float>(f.b[k])), oy));
+        d[k] = V::to_int(v);
+        off.lo[k] = static_cast<std::int64_t>(V::min_of(v));
+        off.hi[k] = static_cast<std::int64_t>(V::max_of(v));
     }
-    const __m512 dz = _mm512_add_ps(_mm512_mul_ps(_mm512_set1_ps(f.zdx), ox), _mm512_mul_ps(_mm512_set1_ps(f.zdy), oy));
-    const __m512i step0 = _mm512_set1_epi32(static_cast<std::int32_t>(f.a[0]));
-    const __m512i step1 = _mm512_set1_epi32(static_cast<std::int32_t>(f.a[1]));
-    const __m512i step2 = _mm512_set1_epi32(static_cast<std::int32_t>(f.a[2]));
-    const __m512 ones = _mm512_set1_ps(1.0f), clear = _mm512_set1_ps(clear_colour);
+    const typename V::vf dz = V::add(V::mul(V::set(f.zdx), ox), V::mul(V::set(f.zdy), oy));
+    const typename V::vi step0 = V::set_int(f.a[0]), step1 = V::set_int(f.a[1]), step2 = V::set_int(f.a[2]);
+    const typename V::vf ones = V::set(1.0f), clear = V::set(clear_colour);
     // Depth in lane 0, intensity in lane 1: both planes' row value plus step · column in one
     // multiply and add (the portable kernel's float operations, lane by lane).
     const __m128 plane0 = _mm_setr_ps(f.z, f.i, 0.0f, 0.0f), plane_dy = _mm_setr_ps(f.zdy, f.idy, 0.0f, 0.0f);
@@ -90,32 +151,30 @@ void fill_rows(sample_store &store, const msaa_triangle &f, const sample_pattern
         int lo, hi;
         if (!off.row(f, y, e, lo, hi)) continue;  // narrow: 32 bits
         // The samples' edge values at column lo (narrow: 32 bits), stepped by a per column.
-        __m512i b0 = _mm512_add_epi32(lanes(e[0] + f.a[0] * lo), d[0]);
-        __m512i b1 = _mm512_add_epi32(lanes(e[1] + f.a[1] * lo), d[1]);
-        __m512i b2 = _mm512_add_epi32(lanes(e[2] + f.a[2] * lo), d[2]);
+        typename V::vi b0 = V::add(V::set_int(e[0] + f.a[0] * lo), d[0]);
+        typename V::vi b1 = V::add(V::set_int(e[1] + f.a[1] * lo), d[1]);
+        typename V::vi b2 = V::add(V::set_int(e[2] + f.a[2] * lo), d[2]);
         std::uint8_t *touched = store.touched_row(y) + f.min_x + lo;
         float *p = store.pixel(f.min_x + lo, y);
         const __m128 plane_row = _mm_add_ps(plane0, _mm_mul_ps(plane_dy, _mm_set1_ps(static_cast<float>(y - f.min_y))));
         __m128 column = _mm_set1_ps(static_cast<float>(lo));  // exactly (< 2^24)
         for (int x = lo; x <= hi; ++x, p += 2 * S, ++touched, column = _mm_add_ps(column, one)) {
-            // A sample is in when all three edge values are ≥ 0: their OR's sign bit is clear.
-            const __mmask16 in = static_cast<__mmask16>(
-                ~_mm512_movepi32_mask(_mm512_ternarylogic_epi32(b0, b1, b2, 0xFE)) & live);  // 0xFE: b0 | b1 | b2
-            b0 = _mm512_add_epi32(b0, step0), b1 = _mm512_add_epi32(b1, step1), b2 = _mm512_add_epi32(b2, step2);
+            // A sample is in when all three edge values are ≥ 0.
+            const mask in = static_cast<mask>(~V::outside(b0, b1, b2));
+            b0 = V::add(b0, step0), b1 = V::add(b1, step1), b2 = V::add(b2, step2);
             if (!in) continue;
             const __m128 at = _mm_add_ps(plane_row, _mm_mul_ps(plane_dx, column));
             const __m128 shade = _mm_min_ps(_mm_max_ps(_mm_shuffle_ps(at, at, 0x55), zero), one);  // clamp01
-            const __m512 z = _mm512_add_ps(_mm512_broadcastss_ps(at), dz);
+            const typename V::vf z = V::add(V::broadcast(at), dz);
             // Until its first touch this frame a pixel's samples hold depth 1 and the clear
             // colour: read as such (a load with no lane set reads no memory), no branch.
-            const __mmask16 held = static_cast<__mmask16>(live & (0u - static_cast<unsigned>(*touched)));
+            const mask held = static_cast<mask>(0u - static_cast<unsigned>(*touched));
             *touched = 1;
-            const __m512 stored = _mm512_mask_loadu_ps(ones, held, p);
-            const __mmask16 pass = passing<Test>(in, z, stored);
-            if (depth_write) _mm512_mask_storeu_ps(p, live, _mm512_mask_blend_ps(pass, stored, z));
-            else _mm512_mask_storeu_ps(p, static_cast<__mmask16>(live & ~held), ones);
-            _mm512_mask_storeu_ps(p + S, live, _mm512_mask_blend_ps(pass, _mm512_mask_loadu_ps(clear, held, p + S),
-                                                                   _mm512_broadcastss_ps(shade)));
+            const typename V::vf stored = V::load(ones, held, p);
+            const mask pass = passing<S, Test>(in, z, stored);
+            if (depth_write) V::store(p, V::blend(pass, stored, z));
+            else V::store(p, static_cast<mask>(~held), ones);
+            V::store(p + S, V::blend(pass, V::load(clear, held, p + S), V::broadcast(shade)));
         }
     }
 }
