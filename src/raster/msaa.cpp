@@ -1,5 +1,6 @@
 // msaa.cpp — multisampled filled triangles (msaa.h): sample patterns, the sample store and
-// its resolve, the per-triangle setup and the row fill (64-bit portable kernel, SSE2 kernel).
+// its resolve, the per-triangle setup and the row fill (64-bit portable kernel, SSE2 kernel;
+// the AVX-512 kernels are in msaa_avx512.cpp).
 #include "msaa.h"
 #include "msaa_kernels.h"
 

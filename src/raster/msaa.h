@@ -45,9 +45,10 @@ const sample_pattern &pattern_of(int samples);
 
 // Which kernel fills and resolves the samples: the portable reference (64-bit edge values,
 // one sample at a time), SSE2 (32-bit edge values, four samples per register) or AVX-512
-// (eight or sixteen samples per register: 8× and 16×; 4× and the resolve run SSE2). All
-// three give bit-identical samples and images; a faster one runs where its precondition
-// holds (msaa_triangle::narrow) and the next slower one elsewhere.
+// (a pixel's 8 or 16 samples in one register; at 4× the SSE2 kernel's code compiled for
+// AVX-512; the resolve is SSE2's). All three give bit-identical samples and images; a
+// faster one runs where its precondition holds (msaa_triangle::narrow) and the portable
+// one elsewhere.
 enum class msaa_kernel { portable, sse2, avx512 };
 // The fastest kernel this build runs on this CPU (avx512 only where the CPU has AVX-512
 // F/VL/DQ/BW).

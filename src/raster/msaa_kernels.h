@@ -39,9 +39,9 @@ struct edge_extremes {
 };
 
 #ifdef TINY3D_AVX512
-// The AVX-512 kernel (msaa_kernel::avx512; only on CPUs best_msaa_kernel() reports it for):
-// f.narrow, pat.count = 8 or 16 (one register of samples per pixel), rows [y0, y1) already
-// clamped to f's. The same integer tests and float operations as the portable kernel.
+// The AVX-512 kernels (msaa_kernel::avx512; only on CPUs best_msaa_kernel() reports it for):
+// f.narrow, pat.count = 4, 8 or 16, rows [y0, y1) already clamped to f's. The same integer
+// tests and float operations as the portable kernel.
 void fill_rows_avx512(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
                       bool depth_write, float clear_colour, int y0, int y1);
 #endif
