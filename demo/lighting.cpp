@@ -88,8 +88,11 @@ vec3_t key_light_at(double phase) {
 int frames_per_period(double period_s, double fps) { return std::max(1, int(std::ceil(period_s * fps - 1e-9))); }
 
 // Dots along each path: points from vec3_bezier on every segment, on screen through
-// project_vertex (the report's viewport) and set_pixel_f (the report's pixel convention).
-void draw_trails(canvas_t &canvas, const std::vector<tiny3d::looped_path> &paths, const mat4_t &view_proj) {
+// project_vertex (the report's viewport) and set_pixel_f (the report's pixel convention);
+// with `depth` (the filled objects' window depths), a dot behind a filled object is hidden
+// as the wireframes' edges are (depth_point_visible; window depth = 0.5·z/w + 0.5).
+void draw_trails(canvas_t &canvas, const std::vector<tiny3d::looped_path> &paths, const mat4_t &view_proj,
+                 const tiny3d::zbuffer *depth) {
     const mat4_t identity = mat4_identity();
     for (const tiny3d::looped_path &path : paths)
         for (std::size_t i = 0; i < path.segment_count(); ++i) {
@@ -97,8 +100,15 @@ void draw_trails(canvas_t &canvas, const std::vector<tiny3d::looped_path> &paths
             for (int k = 0; k < TRAIL_DOTS_PER_SEGMENT; ++k) {
                 const vec3_t p = vec3_bezier(c.p0, c.p1, c.p2, c.p3, float(k) / TRAIL_DOTS_PER_SEGMENT);
                 float x, y;
-                if (project_vertex(p, identity, view_proj, canvas.width, canvas.height, &x, &y))
-                    set_pixel_f(&canvas, x, y, TRAIL_INK);
+                if (!project_vertex(p, identity, view_proj, canvas.width, canvas.height, &x, &y)) continue;
+                if (depth) {
+                    const vec4_t clip = mat4_mul_vec4(view_proj, {p.x, p.y, p.z, 1.0f});
+                    // project_vertex's viewport puts pixel centres at integers; the depth
+                    // buffer's at +0.5.
+                    if (!tiny3d::depth_point_visible(*depth, x + 0.5f, y + 0.5f, 0.5f * clip.z / clip.w + 0.5f))
+                        continue;
+                }
+                set_pixel_f(&canvas, x, y, TRAIL_INK);
             }
         }
 }
@@ -153,7 +163,7 @@ int main(int argc, char **argv) {
         for (std::size_t i = 0; i < motions.size(); ++i) scene.set_model(i, tiny3d::motion_model_at(motions[i], seconds));
         scene.lights[0].direction = key_light_at(tiny3d::loop_phase(seconds, period));
         const tiny3d::status s = scene.render(target);
-        if (s) draw_trails(target, paths, view_proj.value());
+        if (s) draw_trails(target, paths, view_proj.value(), scene.depth());
         return s;
     };
 

@@ -85,6 +85,13 @@ public:
     // Clears the canvas to `background` and draws every object. Errors: bad lights or
     // ambient (make_light_rig's message), bad camera, a wireframe error.
     status render(canvas_t &canvas);
+    // The window depths (0 near .. 1 far, raster.h) of the filled objects the last render
+    // drew, one per canvas pixel (the nearest sample's when multisampled) — what the
+    // wireframes' hidden-line test read; for tiny3d::depth_point_visible, to draw other
+    // marks hidden as the wireframes are. Null before the first render, after a render
+    // without filled objects or one that failed before drawing them. Valid until the next
+    // render.
+    const zbuffer *depth() const;
 
 private:
     struct object;

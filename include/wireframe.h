@@ -145,6 +145,13 @@ status render_wireframe(canvas_t &canvas, const mesh &m, const mat4_t &model_vie
                         const wireframe_options &options, wireframe_workspace &workspace,
                         wireframe_stats *stats = nullptr);
 
+// The hidden-line test of wireframe_options::depth_test for one screen point (x, y) in
+// pixels (centres at +0.5) at window depth z (0..1): true when z ≤ the largest stored depth
+// of the 2 × 2 pixels whose centres surround the point (clamped to the buffer) + bias. For
+// drawing other marks (dots, labels) over filled objects as the wireframes are. An empty
+// buffer hides nothing (true); a NaN z or position is hidden (false).
+bool depth_point_visible(const zbuffer &depth, float x, float y, float z, float bias = 1e-4f);
+
 }  // namespace tiny3d
 
 #endif

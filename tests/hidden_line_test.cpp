@@ -1,6 +1,8 @@
 // hidden_line_test.cpp — wireframes over filled objects (wireframe_options::depth_test): an
 // edge behind a filled surface is hidden, one in front or on it is drawn as without the
-// test, and "always on top" (no buffer) draws everything.
+// test, and "always on top" (no buffer) draws everything; the same test for one point
+// (depth_point_visible) and the depth buffer a scene exposes for it (scene::depth).
+#include <algorithm>
 #include <cmath>
 
 #include "harness.h"
@@ -160,4 +162,66 @@ TEST(scene_hides_wireframe_edges_behind_filled_objects) {
         }
     CHECK_NEAR(hidden_diff, 0.0, 1e-6);
     CHECK(on_top_diff > 1.0);
+}
+
+// depth_point_visible, the hidden-line test for one point, on a hand-made buffer: the
+// largest of the 2 × 2 stored depths around the point plus the bias decides; positions are
+// clamped to the buffer; NaN is hidden; an empty buffer hides nothing.
+TEST(depth_point_visible_takes_the_largest_of_the_four_pixels_around_the_point) {
+    zbuffer z;
+    CHECK(z.resize(4, 3).ok());
+    z.clear(0.5f);
+    z.row(1)[2] = 0.7f;  // pixel centre (2.5, 1.5)
+    // (2.0, 1.0) lies between the centres of pixels (1..2) × (0..1): the 0.7 is among them.
+    CHECK(depth_point_visible(z, 2.0f, 1.0f, 0.69f, 0.0f));
+    CHECK(depth_point_visible(z, 2.0f, 1.0f, 0.7f, 0.0f));
+    CHECK(!depth_point_visible(z, 2.0f, 1.0f, 0.71f, 0.0f));
+    CHECK(depth_point_visible(z, 2.0f, 1.0f, 0.71f, 0.02f));  // the bias
+    // (1.2, 1.0): pixels (0..1) × (0..1), all 0.5.
+    CHECK(depth_point_visible(z, 1.2f, 1.0f, 0.5f, 0.0f));
+    CHECK(!depth_point_visible(z, 1.2f, 1.0f, 0.51f, 0.0f));
+    CHECK(depth_point_visible(z, 1.2f, 1.0f, 0.50009f, 1e-4f));  // the default bias's size
+    // Off the buffer: clamped to the last column (x = 3, all 0.5; the 0.7 at x = 2 is not
+    // among them) and the first.
+    CHECK(depth_point_visible(z, 100.0f, 1.5f, 0.5f, 0.0f));
+    CHECK(!depth_point_visible(z, 100.0f, 1.5f, 0.6f, 0.0f));
+    CHECK(!depth_point_visible(z, -100.0f, 1.5f, 0.6f, 0.0f));
+    CHECK(!depth_point_visible(z, NAN, 1.0f, 0.1f, 0.0f));
+    CHECK(!depth_point_visible(z, 1.0f, 1.0f, NAN, 0.0f));
+    CHECK(depth_point_visible(zbuffer{}, 1.0f, 1.0f, 0.9f, 0.0f));
+}
+
+// scene::depth: the filled objects' window depths of the last render (null before it and
+// after a render without filled objects): at the centre of a sphere of radius 1 seen from
+// z = 5, the front point (0, 0, 1) at window depth 0.5·z_ndc + 0.5 of the camera's
+// perspective (near 0.1, far 100), to the tessellation's error.
+TEST(scene_depth_holds_the_filled_objects_window_depths) {
+    constexpr int S = 64;
+    scene sc;
+    sc.cam.eye = {0, 0, 5};
+    sc.lights = {{{0, 0, 1}, 1.0f}};
+    CHECK(sc.depth() == nullptr);
+    object_style filled;
+    filled.mode = draw_mode::filled;
+    const std::size_t ball = sc.add_object(make_icosphere(4), filled).value();
+    canvas_ptr c = make_canvas(S, S).value();
+    CHECK(sc.render(*c).ok());
+    const zbuffer *z = sc.depth();
+    CHECK(z != nullptr);
+    if (!z) return;
+    CHECK_EQ(z->width(), S);
+    CHECK_EQ(z->height(), S);
+    const double n = sc.cam.near_plane, f = sc.cam.far_plane, d = 4.0;  // eye-space distance of (0, 0, 1)
+    const double z_ndc = (f + n) / (f - n) - 2 * f * n / ((f - n) * d);
+    const double centre = std::max({z->at(S / 2 - 1, S / 2 - 1), z->at(S / 2, S / 2 - 1), z->at(S / 2 - 1, S / 2),
+                                    z->at(S / 2, S / 2)});
+    CHECK_NEAR(centre, 0.5 * z_ndc + 0.5, 2e-5);  // the flat facets lie ≤ 0.002 behind the sphere
+    CHECK_EQ(z->at(0, 0), 1.0f);  // background
+    // A point inside the sphere (its centre) is hidden, the front point is not.
+    const double d0 = 5.0, z0 = 0.5 * ((f + n) / (f - n) - 2 * f * n / ((f - n) * d0)) + 0.5;
+    CHECK(!depth_point_visible(*z, S / 2.0f, S / 2.0f, static_cast<float>(z0)));
+    CHECK(depth_point_visible(*z, S / 2.0f, S / 2.0f, static_cast<float>(0.5 * z_ndc + 0.5)));
+    sc.style(ball).mode = draw_mode::wireframe;
+    CHECK(sc.render(*c).ok());
+    CHECK(sc.depth() == nullptr);
 }

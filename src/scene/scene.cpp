@@ -45,6 +45,7 @@ struct scene::object {
 struct scene::buffers {
     wireframe_workspace wire;
     render_context raster{1};
+    bool filled = false;  // the last render drew filled objects (raster's depth is theirs)
 };
 
 scene::scene() : buffers_(std::make_unique<buffers>()) {}
@@ -75,6 +76,8 @@ void scene::set_model(std::size_t i, const mat4_t &model) { objects_[i]->model =
 const mat4_t &scene::model(std::size_t i) const { return objects_[i]->model; }
 object_style &scene::style(std::size_t i) { return objects_[i]->style; }
 
+const zbuffer *scene::depth() const { return buffers_->filled ? &buffers_->raster.depth() : nullptr; }
+
 status scene::render(canvas_t &canvas) {
     auto rig = make_light_rig(lights, ambient);
     if (!rig) return scene_error(rig.message());
@@ -86,6 +89,7 @@ status scene::render(canvas_t &canvas) {
     // Filled objects first, depth-tested among themselves.
     bool any_filled = false;
     for (const auto &obj : objects_) any_filled = any_filled || obj->style.mode == draw_mode::filled;
+    buffers_->filled = false;
     if (any_filled) {
         if (status s = buffers_->raster.begin_frame(canvas, background, samples); !s) return s;
         for (const auto &obj : objects_) {
@@ -99,6 +103,7 @@ status scene::render(canvas_t &canvas) {
             buffers_->raster.draw(obj->triangles, params);
         }
         buffers_->raster.end_frame();
+        buffers_->filled = true;
     } else {
         canvas_clear(&canvas, background);
     }

@@ -333,16 +333,6 @@ void order_edges(const wireframe_options &o, wireframe_workspace &ws, edge_paint
     }
 }
 
-// Hidden-line test of one screen point at window depth z: the largest stored depth of the
-// 2 × 2 pixels whose centres surround (x, y) (clamped to the buffer), plus bias.
-bool point_visible(const zbuffer &depth, float x, float y, float z, float bias) {
-    const int w = depth.width(), h = depth.height();
-    const float fx = std::clamp(x - 0.5f, 0.0f, float(w - 1)), fy = std::clamp(y - 0.5f, 0.0f, float(h - 1));
-    const int x0 = int(fx), y0 = int(fy), x1 = std::min(x0 + 1, w - 1), y1 = std::min(y0 + 1, h - 1);
-    const float stored = std::max(std::max(depth.at(x0, y0), depth.at(x1, y0)), std::max(depth.at(x0, y1), depth.at(x1, y1)));
-    return z <= stored + bias;
-}
-
 // Paints the visible parts of d (end depths z0, z1): test points every ≤ ½ px along it,
 // each run of visible points drawn as one segment ending halfway to its hidden neighbours
 // (the whole edge, exactly as listed, when every point is visible).
@@ -352,7 +342,7 @@ void paint_visible_parts(const drawn_edge &d, float z0, float z1, const zbuffer 
     const int steps = std::max(1, int(std::ceil(std::sqrt(dx * dx + dy * dy) / STEP)));
     auto visible_at = [&](int k) {
         const double t = double(k) / steps;
-        return point_visible(depth, float(d.x0 + t * dx), float(d.y0 + t * dy), float(z0 + t * (double(z1) - z0)), bias);
+        return depth_point_visible(depth, float(d.x0 + t * dx), float(d.y0 + t * dy), float(z0 + t * (double(z1) - z0)), bias);
     };
     int run_start = -1;  // first visible point of the current run
     bool all = true;
@@ -460,6 +450,16 @@ status render_wireframe(canvas_t &canvas, const mesh &m, const mat4_t &model_vie
     return {};
 }
 
+
+bool depth_point_visible(const zbuffer &depth, float x, float y, float z, float bias) {
+    const int w = depth.width(), h = depth.height();
+    if (w <= 0 || h <= 0) return true;
+    if (std::isnan(x) || std::isnan(y) || std::isnan(z)) return false;
+    const float fx = std::clamp(x - 0.5f, 0.0f, float(w - 1)), fy = std::clamp(y - 0.5f, 0.0f, float(h - 1));
+    const int x0 = int(fx), y0 = int(fy), x1 = std::min(x0 + 1, w - 1), y1 = std::min(y0 + 1, h - 1);
+    const float stored = std::max(std::max(depth.at(x0, y0), depth.at(x1, y0)), std::max(depth.at(x0, y1), depth.at(x1, y1)));
+    return z <= stored + bias;
+}
 }  // namespace tiny3d
 
 void render_wireframe(canvas_t *canvas, vec3_t *vertices, int vertex_count, int edges[][2], int edge_count,
