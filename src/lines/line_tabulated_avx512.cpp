@@ -20,21 +20,7 @@
 #ifdef TINY3D_AVX512
 #include <immintrin.h>
 
-#if defined(__clang__)
-#pragma clang attribute push(__attribute__((target("avx512f,avx512vl,avx512dq,avx512bw"))), apply_to = function)
-#pragma clang fp contract(off)
-#else
-#pragma GCC push_options
-#pragma GCC target("avx512f,avx512vl,avx512dq,avx512bw")
-#pragma GCC optimize("fp-contract=off")
-// GCC 12's AVX-512 intrinsics pass _mm512_undefined_ps() (self-initialised) as the unused
-// merge source, which -W(maybe-)uninitialized reports once inlined (GCC bug 105593).
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#pragma GCC diagnostic ignored "-Wuninitialized"
-// Vector arguments and results between functions of this file only: no ABI to keep.
-#pragma GCC diagnostic ignored "-Wpsabi"
-#endif
+#include "../avx512_region_open.inc"
 
 namespace tiny3d::tabulated {
 namespace {
@@ -424,10 +410,5 @@ void draw_batch_avx512(canvas_t *canvas, const stroke_setup *strokes, int count,
 
 }  // namespace tiny3d::tabulated
 
-#if defined(__clang__)
-#pragma clang attribute pop
-#else
-#pragma GCC diagnostic pop
-#pragma GCC pop_options
-#endif
+#include "../avx512_region_close.inc"
 #endif

@@ -19,19 +19,7 @@
 #include <emmintrin.h>
 #include <immintrin.h>
 
-#if defined(__clang__)
-#pragma clang attribute push(__attribute__((target("avx512f,avx512vl,avx512dq,avx512bw"))), apply_to = function)
-#pragma clang fp contract(off)
-#else
-#pragma GCC push_options
-#pragma GCC target("avx512f,avx512vl,avx512dq,avx512bw")
-#pragma GCC optimize("fp-contract=off")
-// GCC 12's AVX-512 intrinsics pass _mm512_undefined_ps() (self-initialised) as the unused
-// merge source, which -W(maybe-)uninitialized reports once inlined (GCC bug 105593).
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#pragma GCC diagnostic ignored "-Wuninitialized"
-#endif
+#include "../avx512_region_open.inc"
 
 namespace tiny3d::detail {
 namespace {
@@ -215,11 +203,6 @@ void fill_rows_avx512(sample_store &store, const msaa_triangle &f, const sample_
 
 }  // namespace tiny3d::detail
 
-#if defined(__clang__)
-#pragma clang attribute pop
-#else
-#pragma GCC diagnostic pop
-#pragma GCC pop_options
-#endif
+#include "../avx512_region_close.inc"
 
 #endif  // TINY3D_AVX512
