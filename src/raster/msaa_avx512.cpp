@@ -1,10 +1,11 @@
-// msaa_avx512.cpp — the multisample fill's AVX-512 kernel (msaa_kernel::avx512): one pixel's
-// 8 or 16 samples in one register. Per pixel: the three edge values at every sample stepped
-// by one add each, coverage as a mask register (the sign bits of their OR), the depth test
-// as a masked compare and the depth and colour writes as masked stores — where the SSE2
-// kernel needs two or four groups of four, each with a select per store.
+// msaa_avx512.cpp — the multisample fill's AVX-512 kernels (msaa_kernel::avx512). 8× and
+// 16×: one pixel's depths in one register and its colours in another. Per pixel: the three
+// edge values at every sample stepped by one add each, coverage as a mask register (the
+// sign bits of their OR), the depth test as a masked compare and the writes as blends —
+// where the SSE2 kernel needs two or four groups of four. 4×: the SSE2 kernel's source
+// compiled here (msaa_sse2_fill.inc), where it has 32 vector registers.
 //
-// Compiled for AVX-512 inside a target region that GCC and clang both apply (as
+// Compiled for AVX-512 inside the target region of avx512_region_open.inc (as
 // line_tabulated_avx512.cpp is): the headers are included before the region opens, so
 // their inline functions stay baseline x86-64. Run only on CPUs that have it
 // (best_msaa_kernel). No FMA contraction: the portable kernel's float operations, rounded
@@ -30,7 +31,7 @@ namespace {
 // One register of S samples: 16 floats (zmm) for 16×, 8 (ymm) for 8× — a pixel's depths or
 // colours exactly, so no access reaches a neighbouring pixel (a 16-lane access with lanes
 // masked off still overlaps the next pixel's samples and defeats store-to-load forwarding:
-// 8× in zmm was 21 ms against 17 in ymm here). Masks: bit s = sample s.
+// 8× in zmm took 21 ms against 12 in ymm here). Masks: bit s = sample s.
 template <int S>
 struct samples;
 
