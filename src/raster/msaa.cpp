@@ -46,6 +46,30 @@ inline void axis_bounds(std::int64_t lo, std::int64_t hi, int lo_off, int hi_off
     last = static_cast<int>(std::min<std::int64_t>(floor_div<std::int64_t>(hi - HALF - lo_off, RASTER_SUBPIXEL_ONE), clip1 - 1));
 }
 
+// t's snapped vertices in sub-pixel units, exactly (t.x, t.y are multiples of 1/16 px).
+inline void snapped_of(const triangle_edges &t, std::int32_t X[3], std::int32_t Y[3]) {
+    for (int k = 0; k < 3; ++k) {
+        X[k] = static_cast<std::int32_t>(t.x[k] * RASTER_SUBPIXEL_ONE);
+        Y[k] = static_cast<std::int32_t>(t.y[k] * RASTER_SUBPIXEL_ONE);
+    }
+}
+
+// The snapped vertex box (sub-pixel units).
+struct snapped_box {
+    std::int64_t min_X, max_X, min_Y, max_Y;
+    static snapped_box of(const std::int32_t X[3], const std::int32_t Y[3]) {
+        return {std::min({X[0], X[1], X[2]}), std::max({X[0], X[1], X[2]}), std::min({Y[0], Y[1], Y[2]}),
+                std::max({Y[0], Y[1], Y[2]})};
+    }
+};
+
+// The pixels [x0, x1] × [y0, y1] with a sample of the pattern inside the box, clamped to clip.
+inline void pattern_bounds(const snapped_box &b, const sample_pattern &pat, pixel_rect clip, int &x0, int &x1, int &y0,
+                           int &y1) {
+    axis_bounds(b.min_X, b.max_X, pat.min_dx, pat.max_dx, clip.x0, clip.x1, x0, x1);
+    axis_bounds(b.min_Y, b.max_Y, pat.min_dy, pat.max_dy, clip.y0, clip.y1, y0, y1);
+}
+
 // The offsets d[k][s] themselves (the portable kernel).
 struct sample_offsets : edge_extremes {
     std::int64_t d[3][MSAA_MAX_SAMPLES];
@@ -264,13 +288,9 @@ void sample_store::resolve(canvas_t &canvas, zbuffer &depth, float clear_colour,
 }
 
 void msaa_bounds(const triangle_edges &t, const sample_pattern &pat, pixel_rect clip, int &x0, int &x1, int &y0, int &y1) {
-    std::int64_t X[3], Y[3];
-    for (int k = 0; k < 3; ++k) {  // the snapped vertices, exactly (multiples of 1/16)
-        X[k] = static_cast<std::int64_t>(t.x[k] * RASTER_SUBPIXEL_ONE);
-        Y[k] = static_cast<std::int64_t>(t.y[k] * RASTER_SUBPIXEL_ONE);
-    }
-    axis_bounds(std::min({X[0], X[1], X[2]}), std::max({X[0], X[1], X[2]}), pat.min_dx, pat.max_dx, clip.x0, clip.x1, x0, x1);
-    axis_bounds(std::min({Y[0], Y[1], Y[2]}), std::max({Y[0], Y[1], Y[2]}), pat.min_dy, pat.max_dy, clip.y0, clip.y1, y0, y1);
+    std::int32_t X[3], Y[3];
+    snapped_of(t, X, Y);
+    pattern_bounds(snapped_box::of(X, Y), pat, clip, x0, x1, y0, y1);
 }
 
 void msaa_candidate_rows(std::int64_t min_Y, std::int64_t max_Y, const sample_pattern &pat, int last_row, int &row0,
@@ -280,10 +300,8 @@ void msaa_candidate_rows(std::int64_t min_Y, std::int64_t max_Y, const sample_pa
 
 bool make_msaa_triangle(const std::int32_t X[3], const std::int32_t Y[3], std::int64_t area2, const sample_pattern &pat,
                         pixel_rect clip, const float depth[3], const float intensity[3], msaa_triangle &out) {
-    const std::int64_t min_X = std::min({X[0], X[1], X[2]}), max_X = std::max({X[0], X[1], X[2]});
-    const std::int64_t min_Y = std::min({Y[0], Y[1], Y[2]}), max_Y = std::max({Y[0], Y[1], Y[2]});
-    axis_bounds(min_X, max_X, pat.min_dx, pat.max_dx, clip.x0, clip.x1, out.min_x, out.max_x);
-    axis_bounds(min_Y, max_Y, pat.min_dy, pat.max_dy, clip.y0, clip.y1, out.min_y, out.max_y);
+    const snapped_box box = snapped_box::of(X, Y);
+    pattern_bounds(box, pat, clip, out.min_x, out.max_x, out.min_y, out.max_y);
     if (out.min_x > out.max_x || out.min_y > out.max_y) return false;
     // triangle_setup_snapped's edges (oriented by s, top-left bias) at the centre (cx, cy) of
     // pixel (min_x, min_y), plus a half pattern's step.
@@ -291,22 +309,16 @@ bool make_msaa_triangle(const std::int32_t X[3], const std::int32_t Y[3], std::i
     const std::int64_t cx = RASTER_SUBPIXEL_ONE * static_cast<std::int64_t>(out.min_x) + HALF;
     const std::int64_t cy = RASTER_SUBPIXEL_ONE * static_cast<std::int64_t>(out.min_y) + HALF;
     for (int k = 0; k < 3; ++k) {
-        const int ia = k == 2 ? 0 : k + 1, ib = k == 0 ? 2 : k - 1;  // edge opposite vertex k
-        const std::int64_t dx = s * (static_cast<std::int64_t>(X[ib]) - X[ia]);
-        const std::int64_t dy = s * (static_cast<std::int64_t>(Y[ib]) - Y[ia]);
-        out.a[k] = -dy * RASTER_SUBPIXEL_ONE;
-        out.b[k] = dx * RASTER_SUBPIXEL_ONE;
-        out.e[k] = dx * (cy - Y[ia]) - dy * (cx - X[ia]) - (top_left_edge(dx, dy) ? 0 : 1) +
-                   (pat.half ? msaa_half_step(out.a[k], out.b[k]) : 0);
+        const snapped_edge edge = snapped_edge_at(X, Y, s, k, cx, cy);
+        out.a[k] = -edge.dy * RASTER_SUBPIXEL_ONE;
+        out.b[k] = edge.dx * RASTER_SUBPIXEL_ONE;
+        out.e[k] = edge.e + (pat.half ? msaa_half_step(out.a[k], out.b[k]) : 0);
     }
     // Sample points lie within 16/16 px of the snapped box: |E| < 2·(span + 16)·span + span
     // < 2^31 (the last term: a half pattern's step, |h| ≤ (|dX| + |dY|)/2 + 1).
-    out.narrow = max_X - min_X < FAST_SPAN_LIMIT && max_Y - min_Y < FAST_SPAN_LIMIT;
+    out.narrow = box.max_X - box.min_X < FAST_SPAN_LIMIT && box.max_Y - box.min_Y < FAST_SPAN_LIMIT;
     double x[3], y[3];
-    for (int k = 0; k < 3; ++k) {
-        x[k] = static_cast<double>(X[k]) / RASTER_SUBPIXEL_ONE;
-        y[k] = static_cast<double>(Y[k]) / RASTER_SUBPIXEL_ONE;
-    }
+    snapped_to_px(X, Y, x, y);
     float planes[6];
     attribute_planes_at(x, y, out.min_x, out.min_y, depth, intensity, planes);
     out.z = planes[0], out.zdx = planes[1], out.zdy = planes[2];
@@ -319,10 +331,7 @@ bool make_msaa_triangle(const std::int32_t X[3], const std::int32_t Y[3], std::i
 bool make_msaa_triangle(const triangle_edges &t, const sample_pattern &pat, pixel_rect clip, const float depth[3],
                         const float intensity[3], msaa_triangle &out) {
     std::int32_t X[3], Y[3];
-    for (int k = 0; k < 3; ++k) {  // the snapped vertices, exactly (multiples of 1/16)
-        X[k] = static_cast<std::int32_t>(t.x[k] * RASTER_SUBPIXEL_ONE);
-        Y[k] = static_cast<std::int32_t>(t.y[k] * RASTER_SUBPIXEL_ONE);
-    }
+    snapped_of(t, X, Y);
     return make_msaa_triangle(X, Y, snapped_area2(X, Y), pat, clip, depth, intensity, out);
 }
 

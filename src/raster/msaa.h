@@ -121,8 +121,8 @@ void msaa_candidate_rows(std::int64_t min_Y, std::int64_t max_Y, const sample_pa
                          int &row1);
 
 // Draws rows [y0, y1) ∩ [min_y, max_y]: per sample coverage and depth test, the pixel's
-// intensity (at its centre, clamped to 0..1) into the passing samples, by `kernel` (or the
-// next slower one where its precondition fails; tests compare them).
+// intensity (at its centre, clamped to 0..1) into the passing samples, by `kernel` (the
+// portable one where the triangle is not narrow; tests compare them).
 void fill_msaa_rows(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
                     bool depth_write, float clear_colour, int y0, int y1, msaa_kernel kernel);
 

@@ -92,9 +92,12 @@ void render_context::impl::emit(const clip_vertex *poly, int n, const draw_param
         }
         const float shade[3] = {c[0]->attr[ATTR_SHADE], c[1]->attr[ATTR_SHADE], c[2]->attr[ATTR_SHADE]};
         const float depth[3] = {v[0].z, v[1].z, v[2].z};
+        if (!multisampled()) {
+            add_fast(t, depth, shade, out);
+            continue;
+        }
         detail::msaa_triangle f;
-        if (!multisampled()) add_fast(t, depth, shade, out);
-        else if (make_msaa_triangle(t, *pattern, full, depth, shade, f)) add_msaa(f, state, out);
+        if (make_msaa_triangle(t, *pattern, full, depth, shade, f)) add_msaa(f, state, out);
     }
 }
 

@@ -66,13 +66,11 @@ triangle_edges triangle_setup_snapped(const std::int32_t Xs[3], const std::int32
     const std::int64_t s = area2 > 0 ? 1 : -1;  // orient so that inside is positive
     t.area2 = area2 * s;
     for (int k = 0; k < 3; ++k) {
-        const int ia = k == 2 ? 0 : k + 1, ib = k == 0 ? 2 : k - 1;  // edge opposite vertex k
-        const std::int64_t dx = s * (X[ib] - X[ia]), dy = s * (Y[ib] - Y[ia]);
-        // E(P) = dx·(Py − Ya) − dy·(Px − Xa) with P = 16·pixel + 8 (the pixel centre).
-        t.a[k] = -dy * RASTER_SUBPIXEL_ONE;
-        t.b[k] = dx * RASTER_SUBPIXEL_ONE;
-        t.c[k] = dx * (HALF_SUBPIXEL - Y[ia]) - dy * (HALF_SUBPIXEL - X[ia]);
-        if (!top_left_edge(dx, dy)) t.c[k] -= 1;  // ties on right/bottom edges fall outside
+        // E(P) with P = 16·pixel + 8 (the pixel centre): its value at pixel (0, 0), its steps.
+        const snapped_edge edge = snapped_edge_at(Xs, Ys, s, k, HALF_SUBPIXEL, HALF_SUBPIXEL);
+        t.a[k] = -edge.dy * RASTER_SUBPIXEL_ONE;
+        t.b[k] = edge.dx * RASTER_SUBPIXEL_ONE;
+        t.c[k] = edge.e;
     }
     const std::int64_t min_X = std::min({X[0], X[1], X[2]}), max_X = std::max({X[0], X[1], X[2]});
     const std::int64_t min_Y = std::min({Y[0], Y[1], Y[2]}), max_Y = std::max({Y[0], Y[1], Y[2]});
@@ -80,10 +78,7 @@ triangle_edges triangle_setup_snapped(const std::int32_t Xs[3], const std::int32
     pixel_bounds(min_Y, max_Y, clip.y0, clip.y1, t.min_y, t.max_y);
     t.span_x = max_X - min_X;
     t.span_y = max_Y - min_Y;
-    for (int k = 0; k < 3; ++k) {
-        t.x[k] = static_cast<double>(X[k]) / RASTER_SUBPIXEL_ONE;
-        t.y[k] = static_cast<double>(Y[k]) / RASTER_SUBPIXEL_ONE;
-    }
+    snapped_to_px(Xs, Ys, t.x, t.y);
     t.valid = t.min_x <= t.max_x && t.min_y <= t.max_y;
     return t;
 }
@@ -206,15 +201,13 @@ fast_setup setup_fast_triangle(const std::int32_t X[3], const std::int32_t Y[3],
     if (out.min_x > out.max_x || min_y > max_y) return fast_setup::empty;
     // triangle_setup_snapped's edges (oriented by s, top-left bias), evaluated at the centre
     // (cx, cy) of pixel (min_x, min_y): within the box, so |e| < 2^31 and the products fit.
-    const std::int32_t s = area2 > 0 ? 1 : -1;
+    const std::int64_t s = area2 > 0 ? 1 : -1;
     const std::int64_t cx = RASTER_SUBPIXEL_ONE * static_cast<std::int64_t>(out.min_x) + HALF_SUBPIXEL;
     const std::int64_t cy = RASTER_SUBPIXEL_ONE * static_cast<std::int64_t>(min_y) + HALF_SUBPIXEL;
     std::int64_t e[3], dx[3], dy[3];
     for (int k = 0; k < 3; ++k) {
-        const int ia = k == 2 ? 0 : k + 1, ib = k == 0 ? 2 : k - 1;  // edge opposite vertex k
-        dx[k] = s * (X[ib] - X[ia]);
-        dy[k] = s * (Y[ib] - Y[ia]);
-        e[k] = dx[k] * (cy - Y[ia]) - dy[k] * (cx - X[ia]) - (top_left_edge(dx[k], dy[k]) ? 0 : 1);
+        const snapped_edge edge = snapped_edge_at(X, Y, s, k, cx, cy);
+        dx[k] = edge.dx, dy[k] = edge.dy, e[k] = edge.e;
     }
     int first = 0, last = max_y - min_y;
     for (int k = 0; k < 3; ++k)
@@ -230,10 +223,7 @@ fast_setup setup_fast_triangle(const std::int32_t X[3], const std::int32_t Y[3],
         if (a != 0) set_crossing(e[k] + b * first, a, b, left, right, out);
     }
     double x[3], y[3];
-    for (int k = 0; k < 3; ++k) {
-        x[k] = static_cast<double>(X[k]) / RASTER_SUBPIXEL_ONE;
-        y[k] = static_cast<double>(Y[k]) / RASTER_SUBPIXEL_ONE;
-    }
+    snapped_to_px(X, Y, x, y);
     set_planes(x, y, depth, intensity, out);
     return fast_setup::ready;
 }

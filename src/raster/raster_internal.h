@@ -60,6 +60,27 @@ inline bool facing_culled(std::int64_t area2, cull_mode cull) {
 // E ≥ 0 for every edge.
 inline bool top_left_edge(std::int64_t dx, std::int64_t dy) { return dy < 0 || (dy == 0 && dx > 0); }
 
+// Edge k of the snapped triangle (X, Y) by the rule above, oriented by s: its dx, dy and
+// its value E at the sub-pixel point (px, py). Every triangle setup computes its edges here.
+struct snapped_edge {
+    std::int64_t dx, dy, e;
+};
+inline snapped_edge snapped_edge_at(const std::int32_t X[3], const std::int32_t Y[3], std::int64_t s, int k,
+                                    std::int64_t px, std::int64_t py) {
+    const int ia = k == 2 ? 0 : k + 1, ib = k == 0 ? 2 : k - 1;  // edge opposite vertex k
+    const std::int64_t dx = s * (static_cast<std::int64_t>(X[ib]) - X[ia]);
+    const std::int64_t dy = s * (static_cast<std::int64_t>(Y[ib]) - Y[ia]);
+    return {dx, dy, dx * (py - Y[ia]) - dy * (px - X[ia]) - (top_left_edge(dx, dy) ? 0 : 1)};
+}
+
+// The snapped vertices in pixels (exact: multiples of 1/16).
+inline void snapped_to_px(const std::int32_t X[3], const std::int32_t Y[3], double x[3], double y[3]) {
+    for (int k = 0; k < 3; ++k) {
+        x[k] = static_cast<double>(X[k]) / RASTER_SUBPIXEL_ONE;
+        y[k] = static_cast<double>(Y[k]) / RASTER_SUBPIXEL_ONE;
+    }
+}
+
 // triangle_setup on already snapped, usable vertices (sub-pixel units): same result.
 triangle_edges triangle_setup_snapped(const std::int32_t X[3], const std::int32_t Y[3], pixel_rect clip,
                                       cull_mode cull);

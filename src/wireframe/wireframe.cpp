@@ -450,7 +450,6 @@ status render_wireframe(canvas_t &canvas, const mesh &m, const mat4_t &model_vie
     return {};
 }
 
-
 bool depth_point_visible(const zbuffer &depth, float x, float y, float z, float bias) {
     const int w = depth.width(), h = depth.height();
     if (w <= 0 || h <= 0) return true;
@@ -460,6 +459,7 @@ bool depth_point_visible(const zbuffer &depth, float x, float y, float z, float 
     const float stored = std::max(std::max(depth.at(x0, y0), depth.at(x1, y0)), std::max(depth.at(x0, y1), depth.at(x1, y1)));
     return z <= stored + bias;
 }
+
 }  // namespace tiny3d
 
 void render_wireframe(canvas_t *canvas, vec3_t *vertices, int vertex_count, int edges[][2], int edge_count,
