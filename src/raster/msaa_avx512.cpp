@@ -76,16 +76,9 @@ struct samples<8> {
     static vf mul(vf a, vf b) { return _mm256_mul_ps(a, b); }
     static vi add(vi a, vi b) { return _mm256_add_epi32(a, b); }
     static vi to_int(vf v) { return _mm256_cvtps_epi32(v); }
-    static float min_of(vf v) {
-        const __m128 h = _mm_min_ps(_mm256_castps256_ps128(v), _mm256_extractf32x4_ps(v, 1));
-        const __m128 q = _mm_min_ps(h, _mm_movehl_ps(h, h));
-        return _mm_cvtss_f32(_mm_min_ss(q, _mm_shuffle_ps(q, q, 1)));
-    }
-    static float max_of(vf v) {
-        const __m128 h = _mm_max_ps(_mm256_castps256_ps128(v), _mm256_extractf32x4_ps(v, 1));
-        const __m128 q = _mm_max_ps(h, _mm_movehl_ps(h, h));
-        return _mm_cvtss_f32(_mm_max_ss(q, _mm_shuffle_ps(q, q, 1)));
-    }
+    // (Set-up only: the eight lanes widened, the upper ones masked off.)
+    static float min_of(vf v) { return _mm512_mask_reduce_min_ps(0xFF, _mm512_castps256_ps512(v)); }
+    static float max_of(vf v) { return _mm512_mask_reduce_max_ps(0xFF, _mm512_castps256_ps512(v)); }
     static vf broadcast(__m128 v) { return _mm256_broadcastss_ps(v); }
     static mask outside(vi b0, vi b1, vi b2) { return _mm256_movepi32_mask(_mm256_ternarylogic_epi32(b0, b1, b2, 0xFE)); }
     template <int Predicate>
