@@ -12,6 +12,7 @@
 #include "mesh.h"
 #include "raster.h"
 #include "raster_test_util.h"
+#include "../src/raster/uv_derivatives.h"
 
 using namespace tiny3d;
 using raster_test::clip_quad;
@@ -70,6 +71,88 @@ TEST(texture_lod_is_log2_of_the_larger_texel_footprint) {
     CHECK(std::isnan(texture_lod(t, NAN, 0, 0, 0)));
 }
 
+// The per-pixel path's log2 (a polynomial on the mantissa) against libm's in double, over
+// every binade of the normal floats, at the special values and exactly at powers of two
+// (so that integer levels of detail select one level, as texture_lod does).
+TEST(fast_log2_is_within_its_bound_of_log2) {
+    using detail::fast_log2;
+    double worst = 0;
+    for (int e = -126; e <= 127; ++e)
+        for (int k = 0; k < 512; ++k) {
+            const float x = std::ldexp(1.0f + static_cast<float>(k) / 512.0f + 1.0f / 4096.0f, e);
+            if (!std::isfinite(x)) continue;
+            worst = std::max(worst, std::fabs(fast_log2(x) - std::log2(static_cast<double>(x))));
+        }
+    CHECK(worst > 0);  // a polynomial, not libm ...
+    CHECK_NEAR(worst, 0.0, 2e-5);  // ... within its stated bound
+    for (int e = -126; e <= 127; ++e) CHECK_EQ(fast_log2(std::ldexp(1.0f, e)), static_cast<float>(e));
+    CHECK_EQ(fast_log2(0.0f), -INFINITY);
+    CHECK_EQ(fast_log2(1e-40f), -INFINITY);  // a denormal
+    CHECK_EQ(fast_log2(-2.0f), -INFINITY);
+    CHECK_EQ(fast_log2(INFINITY), INFINITY);
+    CHECK(std::isnan(fast_log2(NAN)));
+}
+
+// The render context's level of detail (uv_derivatives: the quotient rule's numerators
+// before the division, fast_log2) against texture_lod given the derivatives of u = A/B
+// computed in double from the same perspective triangle, at pixels across it.
+TEST(per_pixel_lod_matches_texture_lod_of_the_exact_derivatives) {
+    texture t;
+    t.width = 128;
+    t.height = 64;
+    screen_vertex s[3] = {};
+    s[0].x = 3.0f, s[0].y = 2.0f, s[0].inv_w = 1.0f;
+    s[1].x = 60.0f, s[1].y = 9.0f, s[1].inv_w = 0.125f;
+    s[2].x = 17.0f, s[2].y = 51.0f, s[2].inv_w = 0.4f;
+    const double u[3] = {0.1, 3.7, -1.2}, v[3] = {0.0, 0.6, 2.9};
+    float tu[3], tv[3];
+    for (int k = 0; k < 3; ++k) tu[k] = static_cast<float>(u[k] * t.width), tv[k] = static_cast<float>(v[k] * t.height);
+    for (bool perspective : {true, false}) {
+        const detail::uv_derivatives d = detail::uv_derivatives::of(s, tu, tv, perspective);
+        double worst = 0;
+        for (double py = 4.5; py < 40; py += 5)
+            for (double px = 8.5; px < 40; px += 5) {
+                // Barycentrics l_k affine in (x, y); A_u = Σ l q u, B = Σ l q, u = A_u/B.
+                const double x1 = s[1].x - s[0].x, y1 = s[1].y - s[0].y, x2 = s[2].x - s[0].x, y2 = s[2].y - s[0].y;
+                const double det = x1 * y2 - x2 * y1;
+                auto bary = [&](double x, double y, double l[3]) {
+                    l[1] = ((x - s[0].x) * y2 - x2 * (y - s[0].y)) / det;
+                    l[2] = (x1 * (y - s[0].y) - (x - s[0].x) * y1) / det;
+                    l[0] = 1 - l[1] - l[2];
+                };
+                auto uv_at = [&](double x, double y, double &uu, double &vv) {
+                    double l[3], a_u = 0, a_v = 0, b = 0;
+                    bary(x, y, l);
+                    for (int k = 0; k < 3; ++k) {
+                        const double q = perspective ? s[k].inv_w : 1.0;
+                        a_u += l[k] * q * u[k], a_v += l[k] * q * v[k], b += l[k] * q;
+                    }
+                    uu = a_u / b, vv = a_v / b;
+                };
+                // The exact derivatives by central differences of the rational function
+                // (step 1e-4 px: truncation ~1e-9, far below the tolerance).
+                constexpr double H = 1e-4;
+                double ux0, vx0, ux1, vx1, uy0, vy0, uy1, vy1;
+                uv_at(px - H, py, ux0, vx0), uv_at(px + H, py, ux1, vx1);
+                uv_at(px, py - H, uy0, vy0), uv_at(px, py + H, uy1, vy1);
+                const float expected = texture_lod(t, static_cast<float>((ux1 - ux0) / (2 * H)), static_cast<float>((vx1 - vx0) / (2 * H)),
+                                                   static_cast<float>((uy1 - uy0) / (2 * H)), static_cast<float>((vy1 - vy0) / (2 * H)));
+                double l[3];
+                bary(px, py, l);
+                float w[3], b = 0;
+                for (int k = 0; k < 3; ++k) b += (w[k] = static_cast<float>(l[k]) * (perspective ? s[k].inv_w : 1.0f));
+                const float a_u = w[0] * tu[0] + w[1] * tu[1] + w[2] * tu[2];
+                const float a_v = w[0] * tv[0] + w[1] * tv[1] + w[2] * tv[2];
+                worst = std::max(worst, std::fabs(static_cast<double>(d.lod(a_u, a_v, b, 1.0f / b)) - expected));
+            }
+        CHECK_NEAR(worst, 0.0, 2e-4);  // float set-up and barycentrics; fast_log2 adds ≤ 1e-5
+    }
+    // A derivative that is not finite gives NaN (the lookup then uses level 0), as texture_lod.
+    detail::uv_derivatives broken;
+    broken.au_x = INFINITY;
+    CHECK(std::isnan(broken.lod(1.0f, 1.0f, 1.0f, 1.0f)));
+}
+
 TEST(trilinear_blends_the_two_levels_around_the_lod) {
     texture t;
     t.width = 16;
@@ -81,6 +164,11 @@ TEST(trilinear_blends_the_two_levels_around_the_lod) {
         std::fill(t.mipmaps[k].texels.begin(), t.mipmaps[k].texels.end(), 0.1f * (k + 1));  // level k+1 = 0.1(k+1)
     CHECK_NEAR(texture_sample_trilinear(t, 0.3f, 0.7f, 0.0f, texture_wrap::repeat), 0.0, 1e-6);
     CHECK_NEAR(texture_sample_trilinear(t, 0.3f, 0.7f, 2.25f, texture_wrap::repeat), 0.225, 1e-6);
+    // Integer levels and the edges of the level search (k = ⌊λ⌋ found by compares).
+    CHECK_NEAR(texture_sample_trilinear(t, 0.3f, 0.7f, 2.0f, texture_wrap::repeat), 0.2, 1e-6);
+    CHECK_NEAR(texture_sample_trilinear(t, 0.3f, 0.7f, std::nextafter(2.0f, 0.0f), texture_wrap::repeat), 0.2, 1e-6);
+    CHECK_NEAR(texture_sample_trilinear(t, 0.3f, 0.7f, 4.0f, texture_wrap::repeat), 0.4, 1e-6);
+    CHECK_NEAR(texture_sample_trilinear(t, 0.3f, 0.7f, 3.5f, texture_wrap::clamp), 0.35, 1e-6);
     CHECK_NEAR(texture_sample_trilinear(t, 0.3f, 0.7f, -3.0f, texture_wrap::repeat), 0.0, 1e-6);
     CHECK_NEAR(texture_sample_trilinear(t, 0.3f, 0.7f, 99.0f, texture_wrap::repeat), 0.4, 1e-6);
     CHECK_NEAR(texture_sample_trilinear(t, 0.3f, 0.7f, NAN, texture_wrap::repeat), 0.0, 1e-6);

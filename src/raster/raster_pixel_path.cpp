@@ -28,36 +28,43 @@ struct pixel_shader {
     const generic_triangle &g;
     bool trilinear;
     uv_derivatives uv_d;
+    float texel_u[3] = {}, texel_v[3] = {};  // the vertices' (u, v) in texels (trilinear)
 
     pixel_shader(const draw_params &params, const generic_triangle &tri)
         : p(params), g(tri), trilinear(params.tex && params.filter == texture_filter::trilinear) {
         if (trilinear) {
-            const float u[3] = {g.attr[0][ATTR_U], g.attr[1][ATTR_U], g.attr[2][ATTR_U]};
-            const float v[3] = {g.attr[0][ATTR_V], g.attr[1][ATTR_V], g.attr[2][ATTR_V]};
-            uv_d = uv_derivatives::of(g.v, u, v, p.perspective_correct);
+            for (int k = 0; k < 3; ++k) {
+                texel_u[k] = g.attr[k][ATTR_U] * static_cast<float>(p.tex->width);
+                texel_v[k] = g.attr[k][ATTR_V] * static_cast<float>(p.tex->height);
+            }
+            uv_d = uv_derivatives::of(g.v, texel_u, texel_v, p.perspective_correct);
         }
     }
 
     float operator()(float l0, float l1, float l2) const {
         // Perspective-correct weights: l_k/w_k normalised (attr/w and 1/w interpolated).
-        float w0 = l0, w1 = l1, w2 = l2, inv_b = 1.0f;
+        float w0 = l0, w1 = l1, w2 = l2, b = 1.0f, inv_b = 1.0f;
         if (p.perspective_correct) {
             w0 = l0 * g.v[0].inv_w, w1 = l1 * g.v[1].inv_w, w2 = l2 * g.v[2].inv_w;
-            inv_b = 1.0f / (w0 + w1 + w2);
-            w0 *= inv_b, w1 *= inv_b, w2 *= inv_b;
+            b = w0 + w1 + w2;
+            inv_b = 1.0f / b;
         }
+        float lod = 0.0f;
+        if (trilinear) {
+            // Before the normalisation (uv_derivatives::lod): A_u = Σ w_k u_k, A_v, B.
+            const float a_u = w0 * texel_u[0] + w1 * texel_u[1] + w2 * texel_u[2];
+            const float a_v = w0 * texel_v[0] + w1 * texel_v[1] + w2 * texel_v[2];
+            lod = uv_d.lod(a_u, a_v, b, inv_b);
+        }
+        if (p.perspective_correct) w0 *= inv_b, w1 *= inv_b, w2 *= inv_b;
         auto lerp = [&](int slot) { return w0 * g.attr[0][slot] + w1 * g.attr[1][slot] + w2 * g.attr[2][slot]; };
         float shade;
         if (p.shade == shading::phong)
             shade = shade_phong_pixel(p.lights, {lerp(ATTR_PX), lerp(ATTR_PY), lerp(ATTR_PZ)},
                                       {lerp(ATTR_NX), lerp(ATTR_NY), lerp(ATTR_NZ)});
         else shade = lerp(ATTR_SHADE);
-        if (trilinear) {
-            const float u = lerp(ATTR_U), v = lerp(ATTR_V);
-            shade *= texture_sample_trilinear(*p.tex, u, v, uv_d.lod(*p.tex, u, v, inv_b), p.wrap);
-        } else if (p.tex) {
-            shade *= texture_sample(*p.tex, lerp(ATTR_U), lerp(ATTR_V), p.filter, p.wrap);
-        }
+        if (trilinear) shade *= texture_sample_trilinear(*p.tex, lerp(ATTR_U), lerp(ATTR_V), lod, p.wrap);
+        else if (p.tex) shade *= texture_sample(*p.tex, lerp(ATTR_U), lerp(ATTR_V), p.filter, p.wrap);
         return shade;
     }
 };

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "raster.h"
+#include "texture_lod.h"
 #include "../canvas/splat.h"  // floor_to_int
 
 namespace tiny3d {
@@ -45,19 +46,29 @@ float reduce(float t, texture_wrap wrap) {
     return t < -1.0f ? -1.0f : (t > 2.0f ? 2.0f : t);  // clamp: beyond ±1 texture all edge texels
 }
 
+// ⌊t⌋ for |t| < 2^31: truncation, then one step down in a branch rather than a select, as
+// t < 0 only in the first half texel (or beyond the edge with clamp): the branch is
+// predicted and the texel address need not wait for the compare.
+int floor_index(float t) {
+    int i = static_cast<int>(t);
+    if (t < static_cast<float>(i)) [[unlikely]]
+        --i;
+    return i;
+}
+
 // One level's texels (the base level or a mipmap), sampled bilinearly between the four
-// texel centres around (u, v).
-float bilinear(const float *texels, int width, int height, float u, float v, texture_wrap wrap) {
-    const float x = reduce(u, wrap) * static_cast<float>(width);
-    const float y = reduce(v, wrap) * static_cast<float>(height);
-    auto texel = [&](int i, int j) {
-        return texels[static_cast<std::size_t>(address(j, height, wrap)) * width + address(i, width, wrap)];
-    };
-    const float fx = x - 0.5f, fy = y - 0.5f;  // centres at i + 0.5
-    const int i0 = detail::floor_to_int(fx), j0 = detail::floor_to_int(fy);  // |fx|, |fy| ≤ 2n
+// texel centres around (u, v), given as ru = reduce(u), rv = reduce(v) (the same for every
+// level, so trilinear reduces once).
+float bilinear_reduced(const float *texels, int width, int height, float ru, float rv, texture_wrap wrap) {
+    const float fx = ru * static_cast<float>(width) - 0.5f;  // centres at i + 0.5
+    const float fy = rv * static_cast<float>(height) - 0.5f;
+    const int i0 = floor_index(fx), j0 = floor_index(fy);  // |fx|, |fy| ≤ 2n
     const float tx = fx - static_cast<float>(i0), ty = fy - static_cast<float>(j0);
-    const float top = texel(i0, j0) + (texel(i0 + 1, j0) - texel(i0, j0)) * tx;
-    const float bottom = texel(i0, j0 + 1) + (texel(i0 + 1, j0 + 1) - texel(i0, j0 + 1)) * tx;
+    const int left = address(i0, width, wrap), right = address(i0 + 1, width, wrap);
+    const float *row0 = texels + static_cast<std::size_t>(address(j0, height, wrap)) * width;
+    const float *row1 = texels + static_cast<std::size_t>(address(j0 + 1, height, wrap)) * width;
+    const float top = row0[left] + (row0[right] - row0[left]) * tx;
+    const float bottom = row1[left] + (row1[right] - row1[left]) * tx;
     return top + (bottom - top) * ty;
 }
 
@@ -77,15 +88,12 @@ float texture_sample(const texture &tex, float u, float v, texture_filter filter
         const int j = address(detail::floor_to_int(y), tex.height, wrap);
         return tex.texels[static_cast<std::size_t>(j) * tex.width + i];
     }
-    return bilinear(tex.texels.data(), tex.width, tex.height, u, v, wrap);
+    return bilinear_reduced(tex.texels.data(), tex.width, tex.height, reduce(u, wrap), reduce(v, wrap), wrap);
 }
 
 float texture_lod(const texture &tex, float du_dx, float dv_dx, float du_dy, float dv_dy) {
     const float w = static_cast<float>(tex.width), h = static_cast<float>(tex.height);
-    const float ax = du_dx * w, bx = dv_dx * h, ay = du_dy * w, by = dv_dy * h;
-    const float rho2 = std::fmax(ax * ax + bx * bx, ay * ay + by * by);
-    if (!std::isfinite(ax + bx + ay + by)) return NAN;
-    return 0.5f * std::log2(rho2);  // log2 √ρ²
+    return 0.5f * std::log2(detail::texel_footprint2(du_dx * w, dv_dx * h, du_dy * w, dv_dy * h));  // log2 √ρ²
 }
 
 float texture_sample_trilinear(const texture &tex, float u, float v, float lod, texture_wrap wrap) {
@@ -93,12 +101,17 @@ float texture_sample_trilinear(const texture &tex, float u, float v, float lod, 
     const int last = static_cast<int>(tex.mipmaps.size());
     if (!(lod > 0.0f)) lod = 0.0f;  // also NaN
     if (lod >= static_cast<float>(last)) lod = static_cast<float>(last);
-    const int k = static_cast<int>(lod);
-    const float t = lod - static_cast<float>(k);
+    // k = ⌊λ⌋ by compares and branches, not a conversion: λ varies slowly from pixel to
+    // pixel, so the processor predicts k and starts the texel loads before λ is known.
+    int k = 0;
+    float floor_lod = 0.0f;
+    while (k < last && lod >= floor_lod + 1.0f) ++k, floor_lod += 1.0f;
+    const float t = lod - floor_lod;
+    const float ru = reduce(u, wrap), rv = reduce(v, wrap);
     auto level = [&](int l) {
-        if (l == 0) return bilinear(tex.texels.data(), tex.width, tex.height, u, v, wrap);
+        if (l == 0) return bilinear_reduced(tex.texels.data(), tex.width, tex.height, ru, rv, wrap);
         const texture_level &m = tex.mipmaps[static_cast<std::size_t>(l - 1)];
-        return bilinear(m.texels.data(), m.width, m.height, u, v, wrap);
+        return bilinear_reduced(m.texels.data(), m.width, m.height, ru, rv, wrap);
     };
     const float a = level(k);
     if (t == 0.0f || k == last) return a;
