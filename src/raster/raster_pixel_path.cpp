@@ -28,11 +28,11 @@ struct pixel_shader {
     const generic_triangle &g;
     bool trilinear;
     uv_derivatives uv_d;
-    float texel_u[3] = {}, texel_v[3] = {};  // the vertices' (u, v) in texels (trilinear)
 
     pixel_shader(const draw_params &params, const generic_triangle &tri)
         : p(params), g(tri), trilinear(params.tex && params.filter == texture_filter::trilinear) {
         if (trilinear) {
+            float texel_u[3], texel_v[3];  // the vertices' (u, v) in texels
             for (int k = 0; k < 3; ++k) {
                 texel_u[k] = g.attr[k][ATTR_U] * static_cast<float>(p.tex->width);
                 texel_v[k] = g.attr[k][ATTR_V] * static_cast<float>(p.tex->height);
@@ -43,19 +43,12 @@ struct pixel_shader {
 
     float operator()(float l0, float l1, float l2) const {
         // Perspective-correct weights: l_k/w_k normalised (attr/w and 1/w interpolated).
-        float w0 = l0, w1 = l1, w2 = l2, b = 1.0f, inv_b = 1.0f;
+        float w0 = l0, w1 = l1, w2 = l2, inv_b = 1.0f;
         if (p.perspective_correct) {
             w0 = l0 * g.v[0].inv_w, w1 = l1 * g.v[1].inv_w, w2 = l2 * g.v[2].inv_w;
-            b = w0 + w1 + w2;
-            inv_b = 1.0f / b;
+            inv_b = 1.0f / (w0 + w1 + w2);
         }
-        float lod = 0.0f;
-        if (trilinear) {
-            // Before the normalisation (uv_derivatives::lod): A_u = Σ w_k u_k, A_v, B.
-            const float a_u = w0 * texel_u[0] + w1 * texel_u[1] + w2 * texel_u[2];
-            const float a_v = w0 * texel_v[0] + w1 * texel_v[1] + w2 * texel_v[2];
-            lod = uv_d.lod(a_u, a_v, b, inv_b);
-        }
+        const float lod = trilinear ? uv_d.lod(w0, w1, w2, inv_b) : 0.0f;  // before the normalisation
         if (p.perspective_correct) w0 *= inv_b, w1 *= inv_b, w2 *= inv_b;
         auto lerp = [&](int slot) { return w0 * g.attr[0][slot] + w1 * g.attr[1][slot] + w2 * g.attr[2][slot]; };
         float shade;

@@ -103,9 +103,10 @@ float texture_sample_trilinear(const texture &tex, float u, float v, float lod, 
     if (lod >= static_cast<float>(last)) lod = static_cast<float>(last);
     // k = ⌊λ⌋ by compares and branches, not a conversion: λ varies slowly from pixel to
     // pixel, so the processor predicts k and starts the texel loads before λ is known.
+    // (λ ≤ last, so the search stops at the last level by itself.)
     int k = 0;
     float floor_lod = 0.0f;
-    while (k < last && lod >= floor_lod + 1.0f) ++k, floor_lod += 1.0f;
+    while (lod >= floor_lod + 1.0f) ++k, floor_lod += 1.0f;
     const float t = lod - floor_lod;
     const float ru = reduce(u, wrap), rv = reduce(v, wrap);
     auto level = [&](int l) {

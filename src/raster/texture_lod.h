@@ -28,9 +28,10 @@ inline float texel_footprint2(float a_x, float b_x, float a_y, float b_y) {
 // it returns −∞; +∞ and NaN pass through. Inline, two predictable branches and a short
 // chain of multiply-adds, where libm's log2f is a call (~13 % of a trilinear frame).
 inline float fast_log2(float x) {
-    if (!(x >= 1.17549435e-38f)) return x != x ? x : -INFINITY;  // FLT_MIN
-    if (x > 3.40282347e+38f) return x;                            // +∞
     const std::int32_t bits = std::bit_cast<std::int32_t>(x);
+    // One unsigned compare for "positive, normal and finite": exponent field 1..254.
+    if (static_cast<std::uint32_t>(bits - 0x00800000) >= 0x7f000000u) [[unlikely]]
+        return x != x || x > 1.0f ? x : -INFINITY;  // NaN, +∞; 0, denormals, negatives
     const std::int32_t e = (bits - 0x3f3504f3) >> 23;  // 0x3f3504f3 = √½: m lands in [√½, √2)
     const float t = std::bit_cast<float>(bits - (e << 23)) - 1.0f;
     // p(t) = c1 + c2·t + c3·t² + c4·t³ + c5·t⁴ in Estrin's form (pairs, then t², t⁴): a

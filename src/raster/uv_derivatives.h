@@ -10,9 +10,15 @@ namespace tiny3d::detail {
 
 // With barycentrics l_k (affine in screen x, y) and weights q_k (1/w_k perspective-correct,
 // 1 affine): u = A/B, A = Σ l_k q_k u_k, B = Σ l_k q_k, both affine in screen space, so
-// ∂u/∂x = (∂A/∂x − u·∂B/∂x) / B exactly (the quotient rule); likewise v and y.
+// ∂u/∂x = (∂A/∂x·B − A·∂B/∂x) / B² exactly (the quotient rule); likewise v and y. With
+// w_k = l_k q_k the numerator is Σ w_k (∂A/∂x − u_k ∂B/∂x): a dot product of the pixel's
+// weights before their normalisation with per-triangle constants, so it need not wait for
+// the division 1/B, which shortens the chain of latencies from a pixel's barycentrics to its
+// texel loads.
 struct uv_derivatives {
-    float au_x = 0, au_y = 0, av_x = 0, av_y = 0, b_x = 0, b_y = 0;
+    // numerator[d][k]: the constant of w_k in the numerator of derivative d =
+    // ∂u/∂x, ∂v/∂x, ∂u/∂y, ∂v/∂y (in the units of the (u, v) given to `of`).
+    float numerator[4][3] = {};
 
     // s: the screen vertices; u, v: their texture coordinates in texels (u·width, v·height),
     // so that the derivatives come out in texels per pixel.
@@ -32,20 +38,19 @@ struct uv_derivatives {
             av_x += lx[k] * q * v[k], av_y += ly[k] * q * v[k];
             b_x += lx[k] * q, b_y += ly[k] * q;
         }
-        d.au_x = float(au_x), d.au_y = float(au_y), d.av_x = float(av_x), d.av_y = float(av_y);
-        d.b_x = float(b_x), d.b_y = float(b_y);
+        for (int k = 0; k < 3; ++k) {
+            d.numerator[0][k] = float(au_x - u[k] * b_x), d.numerator[1][k] = float(av_x - v[k] * b_x);
+            d.numerator[2][k] = float(au_y - u[k] * b_y), d.numerator[3][k] = float(av_y - v[k] * b_y);
+        }
         return d;
     }
 
-    // The level of detail at a pixel from the sums A_u = Σ l_k q_k u_k, A_v (in texels, as
-    // `of` was given), B = Σ l_k q_k before the division and inv_b = 1/B (B = 1 and
-    // inv_b = 1 when affine); within 1e-5 of texture_lod (half fast_log2's error).
-    // ∂u/∂x = (∂A_u/∂x·B − A_u·∂B/∂x)/B², the quotient rule with u = A_u/B: the numerators
-    // need not wait for the division, which shortens the chain of latencies from a pixel's
-    // barycentrics to its texel loads; 1/B² scales ρ² once, as ρ²/B⁴.
-    float lod(float a_u, float a_v, float b, float inv_b) const {
-        const float rho2_b4 = texel_footprint2(au_x * b - a_u * b_x, av_x * b - a_v * b_x, au_y * b - a_u * b_y,
-                                               av_y * b - a_v * b_y);
+    // The level of detail at a pixel with weights w_k = l_k q_k before the normalisation and
+    // inv_b = 1/Σ w_k (w_k = l_k and inv_b = 1 when affine); within 1e-5 of texture_lod of
+    // the same derivatives (half fast_log2's error). 1/B² scales ρ² once, as ρ²·(1/B)⁴.
+    float lod(float w0, float w1, float w2, float inv_b) const {
+        auto at = [&](const float (&c)[3]) { return w0 * c[0] + w1 * c[1] + w2 * c[2]; };
+        const float rho2_b4 = texel_footprint2(at(numerator[0]), at(numerator[1]), at(numerator[2]), at(numerator[3]));
         const float s = inv_b * inv_b;
         return 0.5f * fast_log2(rho2_b4 * s * s);
     }
