@@ -255,17 +255,21 @@ TEST(sample_count_parsing_and_bad_counts) {
 namespace {
 
 // A jittered grid of quads over (and beyond) a W × H canvas, split into triangles with both
-// windings, some vertices on sample positions exactly (1/16 px grid), as snapped vertices.
-std::vector<std::array<std::int32_t, 6>> jittered_grid(int W, int H, unsigned seed) {
+// windings, as snapped vertices on the grid of 1/2^bits px: jitter in steps of 1/16 px
+// (some vertices on sample positions or edges through them exactly), and on a finer grid
+// every other vertex off the 1/16 grid by up to 1/32 px.
+std::vector<std::array<std::int32_t, 6>> jittered_grid(int W, int H, unsigned seed, int bits) {
     std::mt19937 rng(seed);
-    std::uniform_int_distribution<int> jitter(-20, 20);  // 1/16 px (quads stay convex)
+    const int scale = 1 << (bits - 4);
+    std::uniform_int_distribution<int> jitter(-20, 20), fine(-scale / 2, scale / 2);  // 1/16 px (quads stay convex)
     constexpr int N = 7;
     std::int32_t gx[N + 1][N + 1], gy[N + 1][N + 1];
     for (int j = 0; j <= N; ++j)
         for (int i = 0; i <= N; ++i) {
             const bool border = i == 0 || j == 0 || i == N || j == N;
-            gx[j][i] = (-4 + i * (W + 8) / N) * 16 + (border ? 0 : jitter(rng));
-            gy[j][i] = (-4 + j * (H + 8) / N) * 16 + (border ? 0 : jitter(rng));
+            const int off = (i + j) % 2;
+            gx[j][i] = (-4 + i * (W + 8) / N) * (16 * scale) + (border ? 0 : jitter(rng) * scale + off * fine(rng));
+            gy[j][i] = (-4 + j * (H + 8) / N) * (16 * scale) + (border ? 0 : jitter(rng) * scale + off * fine(rng));
         }
     std::vector<std::array<std::int32_t, 6>> tris;
     for (int j = 0; j < N; ++j)
@@ -295,7 +299,7 @@ detail::sample_store fill_all(const std::vector<std::array<std::int32_t, 6>> &tr
     for (std::size_t n = 0; n < tris.size(); ++n) {
         const std::size_t t = reversed ? tris.size() - 1 - n : n;
         const std::int32_t X[3] = {tris[t][0], tris[t][2], tris[t][4]}, Y[3] = {tris[t][1], tris[t][3], tris[t][5]};
-        const triangle_edges e = detail::triangle_setup_snapped(X, Y, {0, 0, W, H}, cull_mode::none);
+        const triangle_edges e = detail::triangle_setup_snapped(X, Y, {0, 0, W, H}, cull_mode::none, pat.bits);
         const float depth[3] = {0.5f, 0.5f, 0.5f};
         const float shade = static_cast<float>(t + 1) / 1024, intensity[3] = {shade, shade, shade};
         detail::msaa_triangle f;
@@ -315,7 +319,7 @@ TEST(msaa_watertight_per_sample) {
     for (unsigned seed : {1u, 2u, 3u})
         for (int samples : {4, 8, 16})
             for (detail::msaa_kernel kernel : msaa_kernels()) {
-                const auto tris = jittered_grid(W, H, seed);
+                const auto tris = jittered_grid(W, H, seed, detail::pattern_of(samples).bits);
                 detail::sample_store forward = fill_all(tris, W, H, samples, false, kernel);
                 detail::sample_store backward = fill_all(tris, W, H, samples, true, kernel);
                 int gaps = 0, doubles = 0;
@@ -334,18 +338,22 @@ TEST(msaa_watertight_per_sample) {
             }
 }
 
-// The 16-sample pattern: a 4 × 4 rotated grid, every row and column distinct, centred on the
-// pixel (its samples at (dx + ½, dy + ½)/16 px); and the coverage the edge functions give
-// with the half step folded in equals an independent exact test in 1/32 px units (the
-// top-left rule at a tie), for random snapped triangles of either winding.
+// The 16-sample pattern: on the 1/256 px grid, a 4 × 4 rotated grid of odd multiples of
+// 1/32 px, every row and column distinct, centred on the pixel; and the coverage the edge
+// functions give equals an independent exact test (the top-left rule at a tie), for random
+// triangles of either winding snapped to that grid.
 TEST(msaa_16_pattern_is_centred_and_its_coverage_exact) {
     const detail::sample_pattern &pat = detail::pattern_of(16);
-    CHECK(pat.half);
+    CHECK_EQ(pat.bits, detail::MSAA_16_SUBPIXEL_BITS);
+    CHECK_EQ(pat.one(), std::int64_t{256});
     int sum_x = 0, sum_y = 0;
     unsigned columns = 0, rows = 0;
     for (int s = 0; s < 16; ++s) {
-        sum_x += 2 * pat.dx[s] + 1, sum_y += 2 * pat.dy[s] + 1;
-        columns |= 1u << (pat.dx[s] + 8), rows |= 1u << (pat.dy[s] + 8);
+        CHECK_EQ(pat.dx[s] % 16, pat.dx[s] < 0 ? -8 : 8);  // odd multiples of 8/256 = 1/32 px
+        CHECK_EQ(pat.dy[s] % 16, pat.dy[s] < 0 ? -8 : 8);
+        CHECK_EQ(static_cast<double>(pat.fdx[s]), pat.dx[s] / 256.0);
+        sum_x += pat.dx[s], sum_y += pat.dy[s];
+        columns |= 1u << ((pat.dx[s] / 8 + 15) / 2), rows |= 1u << ((pat.dy[s] / 8 + 15) / 2);
     }
     CHECK_EQ(sum_x, 0);
     CHECK_EQ(sum_y, 0);
@@ -353,15 +361,16 @@ TEST(msaa_16_pattern_is_centred_and_its_coverage_exact) {
     CHECK_EQ(rows, 0xFFFFu);
     constexpr int W = 12, H = 10;
     std::mt19937 rng(5);
-    std::uniform_int_distribution<int> coord(-20, 12 * 16 + 20);
+    std::uniform_int_distribution<int> coord(-320, 12 * 256 + 320);
     int checked = 0, mismatches = 0, ties = 0;
     for (int trial = 0; trial < 300; ++trial) {
         std::int32_t X[3], Y[3];
         for (int k = 0; k < 3; ++k) {
             X[k] = coord(rng), Y[k] = coord(rng);
-            if (trial % 3 == 0) X[k] &= ~7, Y[k] &= ~7;  // coarse vertices: many samples on edges
+            if (trial % 3 == 0) X[k] &= ~127, Y[k] &= ~127;  // coarse vertices: many samples on edges
+            if (trial % 3 == 1) X[k] = X[k] / 16 * 16 + 8, Y[k] = Y[k] / 16 * 16 + 8;  // on sample rows, columns
         }
-        const triangle_edges t = detail::triangle_setup_snapped(X, Y, {0, 0, W, H}, cull_mode::none);
+        const triangle_edges t = detail::triangle_setup_snapped(X, Y, {0, 0, W, H}, cull_mode::none, pat.bits);
         if (!t.valid) continue;
         const std::int64_t s = t.area2 == detail::snapped_area2(X, Y) ? 1 : -1;
         std::vector<unsigned> masks(W * H, 0);
@@ -370,13 +379,12 @@ TEST(msaa_16_pattern_is_centred_and_its_coverage_exact) {
             for (int x = 0; x < W; ++x) {
                 unsigned expect = 0;
                 for (int q = 0; q < 16; ++q) {
-                    // Sample and vertices in 1/32 px: exact integers.
-                    const std::int64_t qx = 2 * (16 * x + 8 + pat.dx[q]) + 1, qy = 2 * (16 * y + 8 + pat.dy[q]) + 1;
+                    const std::int64_t qx = 256 * x + 128 + pat.dx[q], qy = 256 * y + 128 + pat.dy[q];
                     bool in = true;
                     for (int k = 0; k < 3; ++k) {
                         const int a = (k + 1) % 3, b = (k + 2) % 3;
                         const std::int64_t dx = s * (X[b] - X[a]), dy = s * (Y[b] - Y[a]);
-                        const std::int64_t e = dx * (qy - 2 * Y[a]) - dy * (qx - 2 * X[a]);
+                        const std::int64_t e = dx * (qy - Y[a]) - dy * (qx - X[a]);
                         ties += e == 0;
                         in = in && (e > 0 || (e == 0 && (dy < 0 || (dy == 0 && dx > 0))));
                     }
@@ -395,25 +403,30 @@ TEST(msaa_16_pattern_is_centred_and_its_coverage_exact) {
 // depth (ties included, every depth test, with and without depth writes), every sample
 // bit-identical; large triangles (boxes wider than 8 columns: walked by
 // row spans) and small ones (at most 8 columns: at 4× the box walked whole), some off the
-// canvas' edges.
+// canvas' edges; and wide ones, reaching far beyond the canvas (boxes beyond what 32-bit
+// values cover: rows walked in chunks, offsets in integers — msaa_kernels.h).
 TEST(msaa_simd_kernels_match_the_portable_kernel) {
     constexpr int W = 41, H = 33;
     const std::vector<detail::msaa_kernel> kernels = msaa_kernels();
     for (std::size_t kernel = 1; kernel < kernels.size(); ++kernel)
-    for (bool small : {false, true})
+    for (int size : {0, 1, 2})  // large, small, wide
         for (int samples : {4, 8, 16}) {
+            const bool small = size == 1, wide = size == 2;
             std::mt19937 rng(11 + static_cast<unsigned>(samples));
-            std::uniform_int_distribution<int> coord(-80, 45 * 16), near(-3 * 16, 3 * 16);
-            std::uniform_real_distribution<float> unit(0.0f, 1.0f);
             const detail::sample_pattern &pat = detail::pattern_of(samples);
+            const int grid = static_cast<int>(pat.one());  // sub-pixel units per px
+            // Wide: vertices up to 3000 px (4×, 8×) or 400 px (16×) off the canvas.
+            const int reach = wide ? (pat.bits == RASTER_SUBPIXEL_BITS ? 3000 : 400) : 5;
+            std::uniform_int_distribution<int> coord(-reach * grid, (40 + reach) * grid), near(-3 * grid, 3 * grid);
+            std::uniform_real_distribution<float> unit(0.0f, 1.0f);
             detail::sample_store a, b;
             for (detail::sample_store *st : {&a, &b}) st->resize(W, H, samples), st->start(0, H);
-            int narrow_boxes = 0, drawn = 0;
+            int narrow_boxes = 0, drawn = 0, chunked = 0;
             for (int t = 0; t < (small ? 600 : 60); ++t) {
                 std::int32_t X[3] = {coord(rng), coord(rng), coord(rng)}, Y[3] = {coord(rng), coord(rng), coord(rng)};
                 if (small)
                     for (int k = 1; k < 3; ++k) X[k] = X[0] + near(rng), Y[k] = Y[0] + near(rng);
-                const triangle_edges e = detail::triangle_setup_snapped(X, Y, {0, 0, W, H}, cull_mode::none);
+                const triangle_edges e = detail::triangle_setup_snapped(X, Y, {0, 0, W, H}, cull_mode::none, pat.bits);
                 // Every other triangle at a constant depth of 0.25 or 0.5: equal depths, so the
                 // depth test's ties are decided too.
                 float depth[3] = {unit(rng), unit(rng), unit(rng)};
@@ -421,7 +434,9 @@ TEST(msaa_simd_kernels_match_the_portable_kernel) {
                 const float intensity[3] = {unit(rng), unit(rng), unit(rng)};
                 detail::msaa_triangle f;
                 if (e.area2 == 0 || !detail::make_msaa_triangle(e, pat, {0, 0, W, H}, depth, intensity, f)) continue;
-                CHECK(f.narrow);
+                CHECK(f.chunkable);
+                CHECK(wide || f.narrow);
+                chunked += !f.narrow;
                 ++drawn;
                 narrow_boxes += f.max_x - f.min_x < 8;
                 // Mostly `less` with depth writes; every seventh triangle another test, some
@@ -435,6 +450,7 @@ TEST(msaa_simd_kernels_match_the_portable_kernel) {
                 detail::fill_msaa_rows(b, f, pat, test, write, 0.25f, 0, H, kernels[0]);
             }
             CHECK(small ? narrow_boxes == drawn : narrow_boxes < drawn / 4);
+            CHECK(wide ? chunked > drawn / 2 : chunked == 0);
             int differ = 0, touched = 0;
             for (int y = 0; y < H; ++y)
                 for (int x = 0; x < W; ++x) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "../src/pipeline/project4.h"
+#include "../src/raster/msaa.h"
 #include "../src/raster/vertex_kernels_sse2.h"
 #include "../src/raster/vertex_transform.h"
 #include "harness.h"
@@ -93,16 +94,17 @@ TEST(project4_matches_clip_outcode_and_clip_to_screen_bit_for_bit) {
 TEST(project_x4_matches_project_one_bit_for_bit) {
     const std::vector<vec3_t> p = test_positions(400);
     const mat4_t m = camera();
+    for (int bits : {tiny3d::RASTER_SUBPIXEL_BITS, tiny3d::detail::MSAA_16_SUBPIXEL_BITS})
     for (float guard : {1.0f, 1.953125f, 4.0f}) {
         std::vector<xvertex> fast(p.size()), ref(p.size());
         std::vector<vec4_t> fast_clip(p.size()), ref_clip(p.size());
         int mismatches = 0;
         for (std::uint32_t i = 0; i + 4 <= p.size(); i += 4) {
             const std::uint32_t index[4] = {i + 3, i + 1, i, i + 2};  // gathered out of order
-            tiny3d::detail::project_x4(m, p.data(), index, guard, 1024, 768, fast.data(), fast_clip.data());
+            tiny3d::detail::project_x4(m, p.data(), index, guard, 1024, 768, bits, fast.data(), fast_clip.data());
         }
         for (std::size_t i = 0; i < p.size(); ++i) {
-            tiny3d::detail::project_one(m, p[i], guard, 1024, 768, ref[i], ref_clip[i]);
+            tiny3d::detail::project_one(m, p[i], guard, 1024, 768, bits, ref[i], ref_clip[i]);
             mismatches += !same_vertex(fast[i], ref[i]) || !same_clip(fast_clip[i], ref_clip[i]);
         }
         CHECK_EQ(mismatches, 0);
@@ -140,14 +142,18 @@ TEST(project_one_outcodes_and_screen_position) {
     xvertex v;
     vec4_t clip;
     // The point the camera looks at (0.2 right of the origin's image, 0.1 down): hand-computed.
-    tiny3d::detail::project_one(m, {-0.2f, 0.1f, 0.0f}, 1.0f, 1024, 768, v, clip);
+    tiny3d::detail::project_one(m, {-0.2f, 0.1f, 0.0f}, 1.0f, 1024, 768, tiny3d::RASTER_SUBPIXEL_BITS, v, clip);
     CHECK_EQ(unsigned(v.outcode), 0u);
     CHECK(v.snapped);
     CHECK_EQ(v.snapped_x, 512 * 16);
     CHECK_EQ(v.snapped_y, 384 * 16);
     CHECK_NEAR(clip.w, 3.0, 1e-6);
+    // On the 16-sample frames' grid (1/256 px).
+    tiny3d::detail::project_one(m, {-0.2f, 0.1f, 0.0f}, 1.0f, 1024, 768, tiny3d::detail::MSAA_16_SUBPIXEL_BITS, v, clip);
+    CHECK_EQ(v.snapped_x, 512 * 256);
+    CHECK_EQ(v.snapped_y, 384 * 256);
     // Behind the eye: outside the near plane, never snapped.
-    tiny3d::detail::project_one(m, {0.0f, 0.0f, 5.0f}, 1.0f, 1024, 768, v, clip);
+    tiny3d::detail::project_one(m, {0.0f, 0.0f, 5.0f}, 1.0f, 1024, 768, tiny3d::RASTER_SUBPIXEL_BITS, v, clip);
     CHECK(v.outcode & tiny3d::clip_near);
     CHECK(!v.snapped);
 }

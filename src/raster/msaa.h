@@ -14,32 +14,30 @@ namespace tiny3d::detail {
 
 inline constexpr int MSAA_MAX_SAMPLES = 16;
 
-// Sample offsets from the pixel centre in 1/16 px (y down), on the snapping grid, so the
-// edge functions at every sample are exact integers: the standard 4-sample rotated grid and
-// 8-sample pattern (those of Direct3D 10.1 / Vulkan's standard sample locations), and for 16
-// a 4 × 4 grid rotated by atan(1/4) (every row and column distinct) whose samples sit at
-// (dx + ½, dy + ½)/16 (`half`): sixteen distinct columns of a 1/16 grid cannot be centred
-// on the pixel (the standard 16-sample pattern's mean is (−1/32, −1/32) px), sixteen of the
-// half-shifted grid can. The half step is exact too: make_msaa_triangle folds it into each
-// edge's constant (msaa_half_step) and the depth plane's, so the kernels see integer offsets.
+// The sub-pixel grid of the 16-sample frames' vertices and sample offsets: 1/256 px. Their
+// error target (silhouette error ≤ 3 grey levels against the converged image) is below
+// what vertices on the 1/16 px grid allow (3.13 on Scene S: the snap moves a silhouette
+// by up to 1/32 px); the other modes keep 1/16, where the snap is a small part of their
+// error and the 32-bit kernels take triangles up to ~2000 px (span_limit: ~120 px here).
+inline constexpr int MSAA_16_SUBPIXEL_BITS = 8;
+
+// Sample offsets from the pixel centre in 1/2^bits px (y down), on the pattern's snapping
+// grid, so the edge functions at every sample are exact integers: the standard 4-sample
+// rotated grid and 8-sample pattern (those of Direct3D 10.1 / Vulkan's standard sample
+// locations) on the 1/16 px grid, and for 16 a 4 × 4 grid rotated by atan(1/4), every row
+// and column distinct, centred on the pixel (sixteen distinct columns of a 1/16 grid cannot
+// be: the standard 16-sample pattern's mean is (−1/32, −1/32) px), its offsets odd
+// multiples of 1/32 px on the 1/256 px grid of MSAA_16_SUBPIXEL_BITS. A frame's vertices are
+// snapped to the grid of its pattern.
 struct sample_pattern {
     int count = 1;
-    bool half = false;  // samples at (dx + ½, dy + ½)/16 px from the centre
-    std::int8_t dx[MSAA_MAX_SAMPLES] = {}, dy[MSAA_MAX_SAMPLES] = {};
-    alignas(16) float fdx[MSAA_MAX_SAMPLES] = {}, fdy[MSAA_MAX_SAMPLES] = {};  // dx/16, dy/16 (px), exact
-    int min_dx = 0, max_dx = 0, min_dy = 0, max_dy = 0;  // offsets' bounds (1/16 px; half: max + 1)
+    int bits = RASTER_SUBPIXEL_BITS;  // the grid: 1/2^bits px
+    std::int16_t dx[MSAA_MAX_SAMPLES] = {}, dy[MSAA_MAX_SAMPLES] = {};
+    alignas(16) float fdx[MSAA_MAX_SAMPLES] = {}, fdy[MSAA_MAX_SAMPLES] = {};  // dx/2^bits, dy/2^bits (px), exact
+    int min_dx = 0, max_dx = 0, min_dy = 0, max_dy = 0;  // offsets' bounds (1/2^bits px)
+    std::int64_t one() const { return std::int64_t{1} << bits; }  // sub-pixel units per pixel
 };
 
-// With a `half` pattern: what moving a sample by (½, ½)/16 px adds to an edge function of
-// steps a, b per pixel (triangle_edges, top-left biased) so that "inside" stays E ≥ 0 on
-// integers. The exact change h = (a + b)/32 is an integer or an integer plus ½; in the second
-// case no sample lies on the edge, so the tie rule no longer applies and the bias is undone.
-inline std::int64_t msaa_half_step(std::int64_t a, std::int64_t b) {
-    const std::int64_t twice = a / RASTER_SUBPIXEL_ONE + b / RASTER_SUBPIXEL_ONE;  // 2h = dX − dY (1/16 px units)
-    if (twice % 2 == 0) return twice / 2;
-    const bool biased = !top_left_edge(b / RASTER_SUBPIXEL_ONE, -a / RASTER_SUBPIXEL_ONE);
-    return (twice - 1) / 2 + (biased ? 1 : 0);  // floor(h), and E_b + bias = the unbiased E
-}
 // The pattern of 1, 4, 8 or 16 samples (1: the pixel centre); other counts give the centre.
 const sample_pattern &pattern_of(int samples);
 
@@ -47,7 +45,7 @@ const sample_pattern &pattern_of(int samples);
 // one sample at a time), SSE2 (32-bit edge values, four samples per register) or AVX-512
 // (a pixel's 8 or 16 samples in one register; at 4× the SSE2 kernel's code compiled for
 // AVX-512; the resolve is SSE2's). All three give bit-identical samples and images; a
-// faster one runs where its precondition holds (msaa_triangle::narrow) and the portable
+// faster one runs where its precondition holds (msaa_triangle::chunkable) and the portable
 // one elsewhere.
 enum class msaa_kernel { portable, sse2, avx512 };
 // The fastest kernel this build runs on this CPU (avx512 only where the CPU has AVX-512
@@ -89,44 +87,61 @@ private:
 // One triangle ready for the multisample fill. Bounds: the pixels with a sample inside the
 // snapped vertex box. e: the three oriented, top-left-biased edge functions (as
 // triangle_edges) at the CENTRE of pixel (min_x, min_y), a/b their steps per pixel; the
-// value at sample s of a pixel adds a/16·dx[s] + b/16·dy[s] (exact). Depth and intensity
-// planes at that centre, steps per pixel. narrow: every edge value inside the bounds fits
-// 32 bits (the SSE2 kernel's precondition).
+// value at sample s of a pixel adds a/2^bits·dx[s] + b/2^bits·dy[s] (exact). Depth and
+// intensity planes at that centre, steps per pixel.
+// narrow: every edge value inside the bounds fits 32 bits and the SIMD kernels' float
+// offsets a·fdx + b·fdy are exact. chunkable: |a| + |b| < 2^28 for every edge, so that the
+// SIMD kernels can walk a row in chunks of columns whose values fit 32 bits (a value beyond
+// ±2^30 at a chunk's start keeps its sign over the chunk and is clamped: msaa_kernels.h);
+// narrow implies chunkable. The portable kernel takes any triangle.
 struct msaa_triangle {
     int min_x, max_x, min_y, max_y;
     std::int64_t e[3], a[3], b[3];
     float z, zdx, zdy, i, idx, idy;
-    bool narrow;
+    bool narrow, chunkable;
     std::uint32_t state;  // the render context's draw state (set by the caller)
 };
 
 // From valid triangle_edges (bounds recomputed for the pattern, clamped to `clip`), window
 // depths and intensities per vertex. False when no pixel of the pattern's bounds is on the
 // clip rectangle.
+// t is set up on the pattern's grid (triangle_setup_snapped with pat.bits).
 bool make_msaa_triangle(const triangle_edges &t, const sample_pattern &pat, pixel_rect clip, const float depth[3],
                         const float intensity[3], msaa_triangle &out);
-// The same from the snapped vertices (sub-pixel units, usable: snap_vertex) and their
+// The same from the snapped vertices (in 1/2^pat.bits px, usable: snap_vertex) and their
 // snapped_area2 (≠ 0), without setting up triangle_edges first (the render context's
-// unclipped triangles). The first form converts t's vertices and calls this one.
+// triangles). The first form converts t's vertices and calls this one.
 bool make_msaa_triangle(const std::int32_t X[3], const std::int32_t Y[3], std::int64_t area2, const sample_pattern &pat,
                         pixel_rect clip, const float depth[3], const float intensity[3], msaa_triangle &out);
 
-// The pixels [x0, x1] × [y0, y1] with a sample of the pattern inside the snapped vertex box
-// of `t` (valid triangle_edges), clamped to `clip`; empty when x0 > x1 or y0 > y1.
-void msaa_bounds(const triangle_edges &t, const sample_pattern &pat, pixel_rect clip, int &x0, int &x1, int &y0, int &y1);
+// t's snapped vertices in 1/2^pat.bits px, exactly (t on the pattern's grid: t.x, t.y are
+// multiples of 1/2^pat.bits px).
+inline void snapped_of(const triangle_edges &t, const sample_pattern &pat, std::int32_t X[3], std::int32_t Y[3]) {
+    const double one = static_cast<double>(pat.one());
+    for (int k = 0; k < 3; ++k) {
+        X[k] = static_cast<std::int32_t>(t.x[k] * one);
+        Y[k] = static_cast<std::int32_t>(t.y[k] * one);
+    }
+}
 
-// The candidate rows of snapped vertices with y range [min_Y, max_Y] (1/16 px): rows with a
+// The pixels [x0, x1] × [y0, y1] with a sample of the pattern inside the box of the snapped
+// vertices X, Y (1/2^pat.bits px), clamped to `clip`; empty when x0 > x1 or y0 > y1.
+void msaa_bounds(const std::int32_t X[3], const std::int32_t Y[3], const sample_pattern &pat, pixel_rect clip, int &x0,
+                 int &x1, int &y0, int &y1);
+
+// The candidate rows of snapped vertices with y range [min_Y, max_Y] (1/2^pat.bits px): rows with a
 // sample row inside it, clamped to [0, last_row].
 void msaa_candidate_rows(std::int64_t min_Y, std::int64_t max_Y, const sample_pattern &pat, int last_row, int &row0,
                          int &row1);
 
 // Draws rows [y0, y1) ∩ [min_y, max_y]: per sample coverage and depth test, the pixel's
 // intensity (at its centre, clamped to 0..1) into the passing samples, by `kernel` (the
-// portable one where the triangle is not narrow; tests compare them).
+// portable one where the triangle is not chunkable; tests compare them).
 void fill_msaa_rows(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
                     bool depth_write, float clear_colour, int y0, int y1, msaa_kernel kernel);
 
-// The per-pixel path's multisampled walk: for each pixel of `t` (valid triangle_edges) inside
+// The per-pixel path's multisampled walk: for each pixel of `t` (valid triangle_edges on the
+// pattern's grid: triangle_setup_snapped with pat.bits) inside
 // `clip` with at least one covered sample, calls fragment(x, y, mask) with bit s set for
 // each covered sample s (64-bit exact edge functions, the same rule as the fill).
 template <class Fragment>
@@ -140,12 +155,13 @@ void screen_gradient(const screen_vertex v[3], const float f[3], float &fdx, flo
 template <class Fragment>
 void for_each_covered_pixel(const triangle_edges &t, const sample_pattern &pat, pixel_rect clip, Fragment &&fragment) {
     int x0, x1, y0, y1;
-    msaa_bounds(t, pat, clip, x0, x1, y0, y1);
+    const std::int64_t one = pat.one();
+    std::int32_t X[3], Y[3];
+    snapped_of(t, pat, X, Y);
+    msaa_bounds(X, Y, pat, clip, x0, x1, y0, y1);
     std::int64_t d[3][MSAA_MAX_SAMPLES];
     for (int k = 0; k < 3; ++k)
-        for (int s = 0; s < pat.count; ++s)
-            d[k][s] = t.a[k] / RASTER_SUBPIXEL_ONE * pat.dx[s] + t.b[k] / RASTER_SUBPIXEL_ONE * pat.dy[s] +
-                      (pat.half ? msaa_half_step(t.a[k], t.b[k]) : 0);
+        for (int s = 0; s < pat.count; ++s) d[k][s] = t.a[k] / one * pat.dx[s] + t.b[k] / one * pat.dy[s];
     for (int y = y0; y <= y1; ++y)
         for (int x = x0; x <= x1; ++x) {
             unsigned mask = 0;

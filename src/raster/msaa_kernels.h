@@ -38,9 +38,42 @@ struct edge_extremes {
     }
 };
 
+// The SIMD kernels' walk along a row of a triangle that is not narrow (chunkable): chunks
+// of columns short enough that, from a value clamped to ±2^30 at the chunk's first
+// column, every step and sample offset in it moves the value by less than 2^29. A value
+// beyond ±2^30 therefore keeps its sign over the whole chunk, and so does the clamped one:
+// every sample test is the exact 64-bit test, in 32 bits. Narrow triangles: one chunk per
+// row, no clamp (their values fit as they are).
+inline constexpr std::int64_t CHUNK_CLAMP = std::int64_t{1} << 30;
+
+// Columns per chunk for f with sample offset extremes `off` (≥ 1 when f.chunkable).
+inline int chunk_columns(const msaa_triangle &f, const edge_extremes &off) {
+    if (f.narrow) return f.max_x - f.min_x + 1;
+    std::int64_t columns = f.max_x - f.min_x + 1;
+    for (int k = 0; k < 3; ++k) {
+        const std::int64_t step = f.a[k] < 0 ? -f.a[k] : f.a[k];
+        if (step) columns = std::min(columns, ((CHUNK_CLAMP / 2) - (off.hi[k] - off.lo[k])) / step);
+    }
+    return static_cast<int>(std::max<std::int64_t>(columns, 1));
+}
+
+// An edge's value at a chunk's first column (64 bits) as the kernels' 32 bits.
+inline std::int32_t chunk_start(const msaa_triangle &f, std::int64_t v) {
+    if (!f.narrow) v = std::clamp(v, -CHUNK_CLAMP, CHUNK_CLAMP);
+    return static_cast<std::int32_t>(v);
+}
+
+// The offsets of the edge values at the pattern's samples from the pixel centre's,
+// a/2^bits·dx[s] + b/2^bits·dy[s], in 64-bit integers (the portable kernel's; the SIMD
+// kernels compute them in float where that is exact, f.narrow, and take these otherwise).
+inline void sample_offsets_exact(const msaa_triangle &f, const sample_pattern &pat, int k, std::int32_t *out) {
+    for (int s = 0; s < pat.count; ++s)
+        out[s] = static_cast<std::int32_t>(f.a[k] / pat.one() * pat.dx[s] + f.b[k] / pat.one() * pat.dy[s]);
+}
+
 #ifdef TINY3D_AVX512
 // The AVX-512 kernels (msaa_kernel::avx512; only on CPUs best_msaa_kernel() reports it for):
-// f.narrow, pat.count = 4, 8 or 16, rows [y0, y1) already clamped to f's. The same integer
+// f.chunkable, pat.count = 4, 8 or 16, rows [y0, y1) already clamped to f's. The same integer
 // tests and float operations as the portable kernel.
 void fill_rows_avx512(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
                       bool depth_write, float clear_colour, int y0, int y1);

@@ -79,25 +79,38 @@ void render_context::impl::emit(const clip_vertex *poly, int n, const draw_param
         if (!to_screen(c[0]->position, width, height, v[0]) || !to_screen(c[1]->position, width, height, v[1]) ||
             !to_screen(c[2]->position, width, height, v[2]))
             continue;
-        const triangle_edges t = triangle_setup(v[0], v[1], v[2], full, p.cull);
-        if (multisampled() ? t.area2 == 0 : !t.valid) {  // multisampled: samples without a centre count
-            out.stats.culled_backface += count && t.culled;
+        const float shade[3] = {c[0]->attr[ATTR_SHADE], c[1]->attr[ATTR_SHADE], c[2]->attr[ATTR_SHADE]};
+        const float depth[3] = {v[0].z, v[1].z, v[2].z};
+        if (!multisampled()) {
+            const triangle_edges t = triangle_setup(v[0], v[1], v[2], full, p.cull);
+            if (!t.valid) {
+                out.stats.culled_backface += count && t.culled;
+                continue;
+            }
+            out.stats.rasterized += count;
+            if (generic) out.generic.push_back(make_generic_triangle(v, c, state));
+            else add_fast(t, depth, shade, out);
+            continue;
+        }
+        // Multisampled: on the pattern's grid, as the unclipped triangles (setup_range); a
+        // triangle without a covered pixel centre still counts (its samples may be covered).
+        std::int32_t X[3], Y[3];
+        bool usable = true;
+        for (int j = 0; j < 3; ++j) usable = usable && detail::snap_vertex(v[j], X[j], Y[j], pattern->bits);
+        const std::int64_t area2 = usable ? detail::snapped_area2(X, Y) : 0;
+        if (area2 == 0) continue;
+        if (detail::facing_culled(area2, p.cull)) {
+            out.stats.culled_backface += count;
             continue;
         }
         out.stats.rasterized += count;
         if (generic) {
             out.generic.push_back(make_generic_triangle(v, c, state));
-            if (multisampled() && p.alpha >= 1.0f) bin_generic(t, out);
-            continue;
-        }
-        const float shade[3] = {c[0]->attr[ATTR_SHADE], c[1]->attr[ATTR_SHADE], c[2]->attr[ATTR_SHADE]};
-        const float depth[3] = {v[0].z, v[1].z, v[2].z};
-        if (!multisampled()) {
-            add_fast(t, depth, shade, out);
+            if (p.alpha >= 1.0f) bin_generic(X, Y, out);
             continue;
         }
         detail::msaa_triangle f;
-        if (make_msaa_triangle(t, *pattern, full, depth, shade, f)) add_msaa(f, state, out);
+        if (make_msaa_triangle(X, Y, area2, *pattern, full, depth, shade, f)) add_msaa(f, state, out);
     }
 }
 
@@ -323,7 +336,7 @@ void render_context::draw(const raster_mesh &mesh, const draw_params &params) {
                               clusters->triangle_count() == mesh.triangles.size();
     cluster_view view{};
     if (use_clusters) view = make_cluster_view(mvp, s.target->width, s.target->height, s.guard, params.cull);
-    const vertex_job job = make_vertex_job(params, mvp, generic, s.target->width, s.target->height);
+    const vertex_job job = make_vertex_job(params, mvp, generic, s.target->width, s.target->height, s.pattern->bits);
     s.grow_segments(mesh.positions.size(), generic);
     s.claims.next_draw();
     auto phase = [&](int t) { s.set_up_and_draw(t, mesh, params, job, state, use_clusters ? &view : nullptr); };

@@ -36,24 +36,25 @@ namespace detail {
 
 namespace {
 
-// Pixels p whose centre 16·p + 8 lies in [lo, hi] (sub-pixel units), within [clip0, clip1)
-// (>> is floor division: arithmetic shift, defined in C++20).
-inline void pixel_bounds(std::int64_t lo, std::int64_t hi, int clip0, int clip1, int &first, int &last) {
-    first = static_cast<int>(std::max<std::int64_t>(-((HALF_SUBPIXEL - lo) >> RASTER_SUBPIXEL_BITS), clip0));
-    last = static_cast<int>(std::min<std::int64_t>((hi - HALF_SUBPIXEL) >> RASTER_SUBPIXEL_BITS, clip1 - 1));
+// Pixels p whose centre 2^bits·p + 2^bits/2 lies in [lo, hi] (sub-pixel units), within
+// [clip0, clip1) (>> is floor division: arithmetic shift, defined in C++20).
+inline void pixel_bounds(std::int64_t lo, std::int64_t hi, int clip0, int clip1, int bits, int &first, int &last) {
+    const std::int64_t half = std::int64_t{1} << (bits - 1);
+    first = static_cast<int>(std::max<std::int64_t>(-((half - lo) >> bits), clip0));
+    last = static_cast<int>(std::min<std::int64_t>((hi - half) >> bits, clip1 - 1));
 }
 
 }  // namespace
 
-bool snap_vertex(const screen_vertex &v, std::int32_t &x, std::int32_t &y) {
+bool snap_vertex(const screen_vertex &v, std::int32_t &x, std::int32_t &y, int bits) {
     if (!usable(v)) return false;
-    x = snap_coord(v.x);
-    y = snap_coord(v.y);
+    x = snap_coord(v.x, bits);
+    y = snap_coord(v.y, bits);
     return true;
 }
 
 triangle_edges triangle_setup_snapped(const std::int32_t Xs[3], const std::int32_t Ys[3], pixel_rect clip,
-                                      cull_mode cull) {
+                                      cull_mode cull, int bits) {
     triangle_edges t;
     const std::int64_t X[3] = {Xs[0], Xs[1], Xs[2]}, Y[3] = {Ys[0], Ys[1], Ys[2]};
     const std::int64_t area2 = snapped_area2(Xs, Ys);
@@ -65,20 +66,21 @@ triangle_edges triangle_setup_snapped(const std::int32_t Xs[3], const std::int32
     }
     const std::int64_t s = area2 > 0 ? 1 : -1;  // orient so that inside is positive
     t.area2 = area2 * s;
+    const std::int64_t one = std::int64_t{1} << bits, half = one / 2;
     for (int k = 0; k < 3; ++k) {
-        // E(P) with P = 16·pixel + 8 (the pixel centre): its value at pixel (0, 0), its steps.
-        const snapped_edge edge = snapped_edge_at(Xs, Ys, s, k, HALF_SUBPIXEL, HALF_SUBPIXEL);
-        t.a[k] = -edge.dy * RASTER_SUBPIXEL_ONE;
-        t.b[k] = edge.dx * RASTER_SUBPIXEL_ONE;
+        // E(P) with P = one·pixel + half (the pixel centre): its value at pixel (0, 0), its steps.
+        const snapped_edge edge = snapped_edge_at(Xs, Ys, s, k, half, half);
+        t.a[k] = -edge.dy * one;
+        t.b[k] = edge.dx * one;
         t.c[k] = edge.e;
     }
     const std::int64_t min_X = std::min({X[0], X[1], X[2]}), max_X = std::max({X[0], X[1], X[2]});
     const std::int64_t min_Y = std::min({Y[0], Y[1], Y[2]}), max_Y = std::max({Y[0], Y[1], Y[2]});
-    pixel_bounds(min_X, max_X, clip.x0, clip.x1, t.min_x, t.max_x);
-    pixel_bounds(min_Y, max_Y, clip.y0, clip.y1, t.min_y, t.max_y);
+    pixel_bounds(min_X, max_X, clip.x0, clip.x1, bits, t.min_x, t.max_x);
+    pixel_bounds(min_Y, max_Y, clip.y0, clip.y1, bits, t.min_y, t.max_y);
     t.span_x = max_X - min_X;
     t.span_y = max_Y - min_Y;
-    snapped_to_px(Xs, Ys, t.x, t.y);
+    snapped_to_px(Xs, Ys, t.x, t.y, bits);
     t.valid = t.min_x <= t.max_x && t.min_y <= t.max_y;
     return t;
 }
@@ -196,8 +198,8 @@ fast_setup setup_fast_triangle(const std::int32_t X[3], const std::int32_t Y[3],
     const std::int32_t min_Y = std::min(std::min(Y[0], Y[1]), Y[2]), max_Y = std::max(std::max(Y[0], Y[1]), Y[2]);
     if (max_X - min_X >= FAST_SPAN_LIMIT || max_Y - min_Y >= FAST_SPAN_LIMIT) return fast_setup::wide;
     int min_y, max_y;
-    pixel_bounds(min_X, max_X, clip.x0, clip.x1, out.min_x, out.max_x);
-    pixel_bounds(min_Y, max_Y, clip.y0, clip.y1, min_y, max_y);
+    pixel_bounds(min_X, max_X, clip.x0, clip.x1, RASTER_SUBPIXEL_BITS, out.min_x, out.max_x);
+    pixel_bounds(min_Y, max_Y, clip.y0, clip.y1, RASTER_SUBPIXEL_BITS, min_y, max_y);
     if (out.min_x > out.max_x || min_y > max_y) return fast_setup::empty;
     // triangle_setup_snapped's edges (oriented by s, top-left bias), evaluated at the centre
     // (cx, cy) of pixel (min_x, min_y): within the box, so |e| < 2^31 and the products fit.

@@ -16,21 +16,24 @@
 
 namespace tiny3d::detail {
 
-// Rounds a screen coordinate to the nearest 1/16 pixel (ties to even), in sub-pixel units
-// (std::lrint, which GCC -O2 compiles to a library call; cvtss2si is one instruction).
-// Needs |x| ≤ RASTER_MAX_COORD (then x·16 fits in 32 bits).
-inline std::int32_t snap_coord(float x) {
+// Rounds a screen coordinate to the nearest 1/2^bits pixel (ties to even), in sub-pixel
+// units: 1/16 px (RASTER_SUBPIXEL_BITS) everywhere but the 16-sample frames, whose vertices
+// are snapped finer (MSAA_16_SUBPIXEL_BITS, msaa.h). std::lrint, which GCC -O2 compiles to a
+// library call; cvtss2si is one instruction. Needs |x| ≤ RASTER_MAX_COORD and bits ≤ 8
+// (then x·2^bits fits in 32 bits).
+inline std::int32_t snap_coord(float x, int bits = RASTER_SUBPIXEL_BITS) {
+    const float one = static_cast<float>(1 << bits);
 #ifdef TINY3D_SSE2
-    return _mm_cvtss_si32(_mm_set_ss(x * static_cast<float>(RASTER_SUBPIXEL_ONE)));
+    return _mm_cvtss_si32(_mm_set_ss(x * one));
 #else
-    return static_cast<std::int32_t>(std::lrint(x * static_cast<float>(RASTER_SUBPIXEL_ONE)));
+    return static_cast<std::int32_t>(std::lrint(x * one));
 #endif
 }
 
-// Snaps one vertex (done once per shared vertex by the render context). False, with x, y
-// untouched, when the vertex is one triangle_setup skips (non-finite or beyond
-// RASTER_MAX_COORD).
-bool snap_vertex(const screen_vertex &v, std::int32_t &x, std::int32_t &y);
+// Snaps one vertex to 1/2^bits px (done once per shared vertex by the render context).
+// False, with x, y untouched, when the vertex is one triangle_setup skips (non-finite or
+// beyond RASTER_MAX_COORD).
+bool snap_vertex(const screen_vertex &v, std::int32_t &x, std::int32_t &y, int bits = RASTER_SUBPIXEL_BITS);
 
 // floor(n / d) for d > 0 (C++ division truncates towards zero); −n + d − 1 must not overflow.
 template <class Int>
@@ -38,7 +41,7 @@ inline Int floor_div(Int n, Int d) {
     return n >= 0 ? n / d : -((-n + d - 1) / d);
 }
 
-// Twice the signed area of a snapped triangle, in (1/16 px)²: negative = front facing
+// Twice the signed area of a snapped triangle, in sub-pixel units²: negative = front facing
 // (counter-clockwise in NDC, clockwise on the y-down screen), 0 = degenerate.
 inline std::int64_t snapped_area2(const std::int32_t X[3], const std::int32_t Y[3]) {
     return (static_cast<std::int64_t>(X[1]) - X[0]) * (static_cast<std::int64_t>(Y[2]) - Y[0]) -
@@ -73,23 +76,30 @@ inline snapped_edge snapped_edge_at(const std::int32_t X[3], const std::int32_t 
     return {dx, dy, dx * (py - Y[ia]) - dy * (px - X[ia]) - (top_left_edge(dx, dy) ? 0 : 1)};
 }
 
-// The snapped vertices in pixels (exact: multiples of 1/16).
-inline void snapped_to_px(const std::int32_t X[3], const std::int32_t Y[3], double x[3], double y[3]) {
+// The snapped vertices in pixels (exact: multiples of 1/2^bits).
+inline void snapped_to_px(const std::int32_t X[3], const std::int32_t Y[3], double x[3], double y[3],
+                          int bits = RASTER_SUBPIXEL_BITS) {
+    const double step = 1.0 / static_cast<double>(1 << bits);  // exact: a power of two
     for (int k = 0; k < 3; ++k) {
-        x[k] = static_cast<double>(X[k]) / RASTER_SUBPIXEL_ONE;
-        y[k] = static_cast<double>(Y[k]) / RASTER_SUBPIXEL_ONE;
+        x[k] = static_cast<double>(X[k]) * step;
+        y[k] = static_cast<double>(Y[k]) * step;
     }
 }
 
-// triangle_setup on already snapped, usable vertices (sub-pixel units): same result.
+// triangle_setup on already snapped, usable vertices (sub-pixel units): same result. With
+// bits other than RASTER_SUBPIXEL_BITS (the 16-sample frames' finer grid) every sub-pixel
+// quantity of the result (a, b, c, area2, span) is in 1/2^bits px instead of 1/16;
+// |X|, |Y| < 2^29 so that no edge value overflows.
 triangle_edges triangle_setup_snapped(const std::int32_t X[3], const std::int32_t Y[3], pixel_rect clip,
-                                      cull_mode cull);
+                                      cull_mode cull, int bits = RASTER_SUBPIXEL_BITS);
 
 // The span fill's precision argument (fast_triangle) holds when the snapped vertex
 // bounding box spans less than this many sub-pixel units per axis: then every edge value
 // inside the box has |E| ≤ |dX|·|Py − Ya| + |dY|·|Px − Xa| < 2 · (2^15)^2 = 2^31 and
 // |a| = 16·|dY| < 2^19.
-inline constexpr std::int64_t FAST_SPAN_LIMIT = (1 << 15) - 8 * RASTER_SUBPIXEL_ONE;
+// On a grid of 1/2^bits px the same bound holds below span_limit(bits).
+inline constexpr std::int64_t span_limit(int bits) { return (1 << 15) - 8 * (1 << bits); }
+inline constexpr std::int64_t FAST_SPAN_LIMIT = span_limit(RASTER_SUBPIXEL_BITS);
 
 // One triangle ready for the span fill. Row min_y + dy covers exactly the columns
 // min_x + [ceil(max(L0, L1)), floor(min(R0, R1))], where Lj = cross + step·dy is where a

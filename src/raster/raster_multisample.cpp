@@ -16,9 +16,9 @@ void render_context::impl::add_msaa(msaa_triangle &f, std::uint32_t state, segme
     for (int b = bands.of(f.min_y); b <= bands.of(f.max_y); ++b) out.bins[b].push_back(index);
 }
 
-void render_context::impl::bin_generic(const triangle_edges &t, segment &out) {
+void render_context::impl::bin_generic(const std::int32_t X[3], const std::int32_t Y[3], segment &out) {
     int x0, x1, y0, y1;
-    msaa_bounds(t, *pattern, {0, 0, target->width, target->height}, x0, x1, y0, y1);
+    msaa_bounds(X, Y, *pattern, {0, 0, target->width, target->height}, x0, x1, y0, y1);
     if (x0 > x1 || y0 > y1) return;
     const std::uint32_t index = static_cast<std::uint32_t>(out.generic.size() - 1) | GENERIC_BIN;
     for (int b = bands.of(y0); b <= bands.of(y1); ++b) out.bins[b].push_back(index);

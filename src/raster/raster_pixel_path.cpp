@@ -98,17 +98,17 @@ void draw_generic_rows(canvas_t &target, zbuffer &depth, const draw_params &p, c
 void draw_generic_samples(sample_store &tile, const sample_pattern &pat, float clear_colour, const draw_params &p,
                           const generic_triangle &g, int y0, int y1) {
     const pixel_rect band{0, y0, tile.width(), y1};
-    const triangle_edges t = triangle_setup(g.v[0], g.v[1], g.v[2], band);
+    std::int32_t X[3], Y[3];  // on the pattern's grid, as emit() binned it
+    for (int k = 0; k < 3; ++k)
+        if (!snap_vertex(g.v[k], X[k], Y[k], pat.bits)) return;
+    const triangle_edges t = triangle_setup_snapped(X, Y, band, cull_mode::none, pat.bits);
     if (t.area2 == 0) return;
     const pixel_shader shade_at(p, g);
     const int S = pat.count;
     const float zv[3] = {g.v[0].z, g.v[1].z, g.v[2].z};
     float zdx, zdy, dz[MSAA_MAX_SAMPLES];
     screen_gradient(g.v, zv, zdx, zdy);
-    const float half = pat.half ? 0.5f : 0.0f;  // the sample's offset beyond its grid point (msaa.h)
-    for (int k = 0; k < S; ++k)
-        dz[k] = zdx * ((static_cast<float>(pat.dx[k]) + half) / RASTER_SUBPIXEL_ONE) +
-                zdy * ((static_cast<float>(pat.dy[k]) + half) / RASTER_SUBPIXEL_ONE);
+    for (int k = 0; k < S; ++k) dz[k] = zdx * pat.fdx[k] + zdy * pat.fdy[k];
     const double inv_area = 1.0 / static_cast<double>(t.area2);
     for_each_covered_pixel(t, pat, band, [&](int x, int y, unsigned mask) {
         // Barycentrics of the centre (unbiased edge values, as rasterize_triangle).

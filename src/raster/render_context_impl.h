@@ -145,7 +145,8 @@ struct render_context::impl {
     // Multisampled frames (raster_multisample.cpp).
     // Appends f (made by make_msaa_triangle: either form) with the draw state and bins it.
     void add_msaa(detail::msaa_triangle &f, std::uint32_t state, segment &out);
-    void bin_generic(const triangle_edges &t, segment &out);  // the last of out.generic, opaque
+    // The last of out.generic (opaque), by the box of its vertices on the pattern's grid.
+    void bin_generic(const std::int32_t X[3], const std::int32_t Y[3], segment &out);
     void draw_multisampled_band(int band, detail::sample_store &tile);
     void end_multisampled_frame();
 };

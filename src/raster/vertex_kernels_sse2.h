@@ -38,7 +38,7 @@ inline void unit_or_zero_x4(__m128 &x, __m128 &y, __m128 &z) {
 // gets project_one's bits. Vertices index[0..3] of `positions`, written to the same indices
 // of out and out_clip.
 inline void project_x4(const mat4_t &m, const vec3_t *positions, const std::uint32_t index[4], float guard, int width,
-                       int height, xvertex *out, vec4_t *out_clip) {
+                       int height, int subpixel_bits, xvertex *out, vec4_t *out_clip) {
     const vec3_t &p0 = positions[index[0]], &p1 = positions[index[1]], &p2 = positions[index[2]], &p3 = positions[index[3]];
     const __m128 px = _mm_setr_ps(p0.x, p1.x, p2.x, p3.x);
     const __m128 py = _mm_setr_ps(p0.y, p1.y, p2.y, p3.y);
@@ -58,7 +58,7 @@ inline void project_x4(const mat4_t &m, const vec3_t *positions, const std::uint
     const __m128 abs_mask = _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff)), limit = _mm_set1_ps(RASTER_MAX_COORD);
     const int usable = _mm_movemask_ps(_mm_and_ps(s.in_front, _mm_and_ps(_mm_cmple_ps(_mm_and_ps(s.x, abs_mask), limit),
                                                                          _mm_cmple_ps(_mm_and_ps(s.y, abs_mask), limit))));
-    const __m128 sub = _mm_set1_ps(static_cast<float>(RASTER_SUBPIXEL_ONE));
+    const __m128 sub = _mm_set1_ps(static_cast<float>(1 << subpixel_bits));
     alignas(16) std::int32_t snap_x[4], snap_y[4];
     _mm_store_si128(reinterpret_cast<__m128i *>(snap_x), _mm_cvtps_epi32(_mm_mul_ps(s.x, sub)));
     _mm_store_si128(reinterpret_cast<__m128i *>(snap_y), _mm_cvtps_epi32(_mm_mul_ps(s.y, sub)));

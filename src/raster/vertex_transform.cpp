@@ -23,12 +23,12 @@ void project_vertices(const raster_mesh &m, const vertex_job &job, float guard, 
 #ifdef TINY3D_SSE2
     for (; first + 4 <= set.count; first += 4) {
         const std::uint32_t index[4] = {set[first], set[first + 1], set[first + 2], set[first + 3]};
-        project_x4(job.mvp, m.positions.data(), index, guard, job.width, job.height, vertices, clip);
+        project_x4(job.mvp, m.positions.data(), index, guard, job.width, job.height, job.subpixel_bits, vertices, clip);
     }
 #endif
     for (std::size_t k = first; k < set.count; ++k) {
         const std::uint32_t i = set[k];
-        project_one(job.mvp, m.positions[i], guard, job.width, job.height, vertices[i], clip[i]);
+        project_one(job.mvp, m.positions[i], guard, job.width, job.height, job.subpixel_bits, vertices[i], clip[i]);
     }
 }
 
@@ -75,12 +75,14 @@ void shade_general(const raster_mesh &m, const draw_params &p, const vertex_job 
 
 }  // namespace
 
-vertex_job make_vertex_job(const draw_params &p, const mat4_t &mvp, bool generic, int width, int height) {
+vertex_job make_vertex_job(const draw_params &p, const mat4_t &mvp, bool generic, int width, int height,
+                           int subpixel_bits) {
     vertex_job job;
     job.mvp = mvp;
     job.nt = make_normal_transform(p.model);
     job.width = width;
     job.height = height;
+    job.subpixel_bits = subpixel_bits;
     job.gouraud = p.shade == shading::gouraud;
     job.generic = generic;
     job.directional_gouraud = job.gouraud && !generic && directional_only(p.lights);

@@ -18,7 +18,7 @@ namespace tiny3d::detail {
 // which only clipping needs, is kept in an array of its own, so that the walk's vertex
 // reads and the transform's writes are 2.6× smaller).
 struct xvertex {
-    std::int32_t snapped_x, snapped_y;  // screen position in 1/16 px, valid when `snapped`
+    std::int32_t snapped_x, snapped_y;  // screen position in 1/2^job.subpixel_bits px, valid when `snapped`
     float depth;                        // window depth (z/w + 1)/2, valid when `snapped`
     float shade;                        // Gouraud intensity (or 0)
     std::uint8_t outcode;
@@ -34,6 +34,7 @@ struct vertex_job {
     mat4_t mvp;
     normal_transform nt;
     int width, height;  // the target's, in pixels
+    int subpixel_bits;  // the snapping grid, 1/2^bits px: the frame's sample pattern's (msaa.h)
     bool gouraud, generic;
     bool directional_gouraud;  // Gouraud with directional lights only (no position needed)
 };
@@ -49,15 +50,15 @@ struct vertex_set {
 
 // One vertex: clip = M·p, clip_outcode, and for a vertex not outside the near plane its
 // window depth and snapped screen position (clip_to_screen, snap_vertex).
-inline void project_one(const mat4_t &m, vec3_t position, float guard, int width, int height, xvertex &x,
-                        vec4_t &clip) {
+inline void project_one(const mat4_t &m, vec3_t position, float guard, int width, int height, int subpixel_bits,
+                        xvertex &x, vec4_t &clip) {
     clip = mul_point_scalar(m, position);
     x.outcode = static_cast<std::uint8_t>(clip_outcode(clip, guard));
     x.snapped = false;
     if (!(x.outcode & clip_near)) {
         const screen_point p = clip_to_screen(clip, width, height);
         x.depth = p.depth;
-        x.snapped = !p.behind && snap_vertex({p.x, p.y, p.depth, 0.0f}, x.snapped_x, x.snapped_y);
+        x.snapped = !p.behind && snap_vertex({p.x, p.y, p.depth, 0.0f}, x.snapped_x, x.snapped_y, subpixel_bits);
     }
 }
 
@@ -67,8 +68,10 @@ inline float shade_directional_one(const light_rig &rig, const normal_transform 
 }
 
 // The per-draw constants for drawing with `p` through `mvp` (= view_projection · model) on a
-// width × height target; `generic`: the per-pixel path's attributes are wanted.
-vertex_job make_vertex_job(const draw_params &p, const mat4_t &mvp, bool generic, int width, int height);
+// width × height target, vertices snapped to 1/2^subpixel_bits px; `generic`: the
+// per-pixel path's attributes are wanted.
+vertex_job make_vertex_job(const draw_params &p, const mat4_t &mvp, bool generic, int width, int height,
+                           int subpixel_bits);
 
 // Transforms the vertices `set` of `m`: writes vertices[i] and clip[i] (clip-space position)
 // for each i of the set, and vertex_attr[i·ATTR_COUNT ..] when job.generic; x/y planes of the
