@@ -6,8 +6,9 @@
 // Conventions (pinned by tests/raster_test.cpp):
 //  * Screen space: pixels, origin top-left, y down; pixel (x, y) covers [x, x+1) × [y, y+1)
 //    and is "covered" by a triangle when its CENTRE (x + 0.5, y + 0.5) is inside.
-//  * Vertices are snapped to a fixed-point grid of 1/16 pixel (RASTER_SUBPIXEL_BITS = 4)
-//    before coverage is decided; edge functions are exact integers, so the decision does
+//  * Vertices are snapped to a fixed-point grid of 1/16 pixel (RASTER_SUBPIXEL_BITS = 4;
+//    1/256 px in a render context's 16-sample frames, sample_count below) before coverage
+//    is decided; edge functions are exact integers, so the decision does
 //    not depend on triangle order, threads or band boundaries.
 //  * Top-left fill rule: a centre exactly on an edge belongs to the triangle when that edge
 //    is a top edge (horizontal, interior below) or a left edge (interior to its right).
@@ -329,7 +330,8 @@ struct frame_stats {
 //  x4, x8, x16: multisampling. Coverage is decided at each sample of a fixed pattern (the
 //    4-sample rotated grid and the standard 8-sample pattern, offsets on the 1/16 px
 //    snapping grid; for 16 a 4 × 4 grid rotated by atan(1/4), every row and column distinct,
-//    centred on the pixel, offsets on that grid plus 1/32 px, exact all the same) by the
+//    centred on the pixel, its offsets odd multiples of 1/32 px; x16 frames snap vertices
+//    to 1/256 px, so that the snap no longer moves silhouettes by up to 1/32 px) by the
 //    same snapped edge functions and top-left rule as x1, so a mesh
 //    that shares edges covers every SAMPLE exactly once; depth is interpolated and tested
 //    per sample; the shading (intensity, texture, Phong) is evaluated once per pixel per
