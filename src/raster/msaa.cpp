@@ -57,11 +57,12 @@ struct snapped_box {
     }
 };
 
-// The pixels [x0, x1] × [y0, y1] with a sample of the pattern inside the box, clamped to clip.
-inline void pattern_bounds(const snapped_box &b, const sample_pattern &pat, pixel_rect clip, int &x0, int &x1, int &y0,
-                           int &y1) {
-    axis_bounds(b.min_X, b.max_X, pat.min_dx, pat.max_dx, pat.bits, clip.x0, clip.x1, x0, x1);
-    axis_bounds(b.min_Y, b.max_Y, pat.min_dy, pat.max_dy, pat.bits, clip.y0, clip.y1, y0, y1);
+// The pixels [x0, x1] × [y0, y1] with a sample of the pattern inside the box, clamped to clip
+// (bits = pat.bits; a constant where the caller has one).
+inline void pattern_bounds(const snapped_box &b, const sample_pattern &pat, int bits, pixel_rect clip, int &x0, int &x1,
+                           int &y0, int &y1) {
+    axis_bounds(b.min_X, b.max_X, pat.min_dx, pat.max_dx, bits, clip.x0, clip.x1, x0, x1);
+    axis_bounds(b.min_Y, b.max_Y, pat.min_dy, pat.max_dy, bits, clip.y0, clip.y1, y0, y1);
 }
 
 // The offsets d[k][s] themselves (the portable kernel).
@@ -71,7 +72,7 @@ struct sample_offsets : edge_extremes {
         for (int k = 0; k < 3; ++k) {
             lo[k] = INT64_MAX, hi[k] = INT64_MIN;
             for (int s = 0; s < pat.count; ++s) {
-                d[k][s] = f.a[k] / pat.one() * pat.dx[s] + f.b[k] / pat.one() * pat.dy[s];
+                d[k][s] = sample_edge_offset(f.a[k], f.b[k], pat, s);
                 lo[k] = std::min(lo[k], d[k][s]), hi[k] = std::max(hi[k], d[k][s]);
             }
         }
@@ -284,7 +285,7 @@ void sample_store::resolve(canvas_t &canvas, zbuffer &depth, float clear_colour,
 
 void msaa_bounds(const std::int32_t X[3], const std::int32_t Y[3], const sample_pattern &pat, pixel_rect clip, int &x0,
                  int &x1, int &y0, int &y1) {
-    pattern_bounds(snapped_box::of(X, Y), pat, clip, x0, x1, y0, y1);
+    pattern_bounds(snapped_box::of(X, Y), pat, pat.bits, clip, x0, x1, y0, y1);
 }
 
 void msaa_candidate_rows(std::int64_t min_Y, std::int64_t max_Y, const sample_pattern &pat, int last_row, int &row0,
@@ -302,8 +303,7 @@ bool make_msaa_triangle_on(const std::int32_t X[3], const std::int32_t Y[3], std
                            msaa_triangle &out) {
     constexpr std::int64_t one = std::int64_t{1} << Bits;
     const snapped_box box = snapped_box::of(X, Y);
-    axis_bounds(box.min_X, box.max_X, pat.min_dx, pat.max_dx, Bits, clip.x0, clip.x1, out.min_x, out.max_x);
-    axis_bounds(box.min_Y, box.max_Y, pat.min_dy, pat.max_dy, Bits, clip.y0, clip.y1, out.min_y, out.max_y);
+    pattern_bounds(box, pat, Bits, clip, out.min_x, out.max_x, out.min_y, out.max_y);
     if (out.min_x > out.max_x || out.min_y > out.max_y) return false;
     // triangle_setup_snapped's edges (oriented by s, top-left bias) at the centre (cx, cy) of
     // pixel (min_x, min_y).

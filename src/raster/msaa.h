@@ -38,6 +38,13 @@ struct sample_pattern {
     std::int64_t one() const { return std::int64_t{1} << bits; }  // sub-pixel units per pixel
 };
 
+// What sample s adds to an edge value at the pixel centre, for an edge of steps a, b per
+// pixel on the pattern's grid: a/2^bits·dx[s] + b/2^bits·dy[s], exact (every kernel's
+// offsets, and the per-pixel path's).
+inline std::int64_t sample_edge_offset(std::int64_t a, std::int64_t b, const sample_pattern &pat, int s) {
+    return a / pat.one() * pat.dx[s] + b / pat.one() * pat.dy[s];
+}
+
 // The pattern of 1, 4, 8 or 16 samples (1: the pixel centre); other counts give the centre.
 const sample_pattern &pattern_of(int samples);
 
@@ -155,13 +162,12 @@ void screen_gradient(const screen_vertex v[3], const float f[3], float &fdx, flo
 template <class Fragment>
 void for_each_covered_pixel(const triangle_edges &t, const sample_pattern &pat, pixel_rect clip, Fragment &&fragment) {
     int x0, x1, y0, y1;
-    const std::int64_t one = pat.one();
     std::int32_t X[3], Y[3];
     snapped_of(t, pat, X, Y);
     msaa_bounds(X, Y, pat, clip, x0, x1, y0, y1);
     std::int64_t d[3][MSAA_MAX_SAMPLES];
     for (int k = 0; k < 3; ++k)
-        for (int s = 0; s < pat.count; ++s) d[k][s] = t.a[k] / one * pat.dx[s] + t.b[k] / one * pat.dy[s];
+        for (int s = 0; s < pat.count; ++s) d[k][s] = sample_edge_offset(t.a[k], t.b[k], pat, s);
     for (int y = y0; y <= y1; ++y)
         for (int x = x0; x <= x1; ++x) {
             unsigned mask = 0;

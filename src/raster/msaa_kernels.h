@@ -63,12 +63,10 @@ inline std::int32_t chunk_start(const msaa_triangle &f, std::int64_t v) {
     return static_cast<std::int32_t>(v);
 }
 
-// The offsets of the edge values at the pattern's samples from the pixel centre's,
-// a/2^bits·dx[s] + b/2^bits·dy[s], in 64-bit integers (the portable kernel's; the SIMD
-// kernels compute them in float where that is exact, f.narrow, and take these otherwise).
+// Edge k's sample offsets (sample_edge_offset) in 32 bits: the SIMD kernels compute them in
+// float where that is exact (f.narrow) and take these otherwise.
 inline void sample_offsets_exact(const msaa_triangle &f, const sample_pattern &pat, int k, std::int32_t *out) {
-    for (int s = 0; s < pat.count; ++s)
-        out[s] = static_cast<std::int32_t>(f.a[k] / pat.one() * pat.dx[s] + f.b[k] / pat.one() * pat.dy[s]);
+    for (int s = 0; s < pat.count; ++s) out[s] = static_cast<std::int32_t>(sample_edge_offset(f.a[k], f.b[k], pat, s));
 }
 
 #ifdef TINY3D_AVX512
