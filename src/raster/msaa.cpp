@@ -36,6 +36,13 @@ sample_pattern make_pattern(std::initializer_list<std::pair<int, int>> offsets, 
         p.min_dy = std::min(p.min_dy, y), p.max_dy = std::max(p.max_dy, y);
         ++s;
     }
+    if (p.count == 4)
+        for (int lane = 0; lane < 16; ++lane) {
+            const int q = lane / 4, sample = lane % 4;
+            p.lane_dx[lane] = p.fdx[sample], p.lane_dy[lane] = p.fdy[sample];
+            p.block_x[lane] = static_cast<float>(q % 2) + p.fdx[sample];
+            p.block_y[lane] = static_cast<float>(q / 2) + p.fdy[sample];
+        }
     return p;
 }
 
@@ -221,9 +228,14 @@ const sample_pattern &pattern_of(int samples) {
 }
 
 void sample_store::resize(int width, int rows, int samples) {
-    const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(rows);
-    if (data_.size() < pixels * 2 * samples) data_.resize(pixels * 2 * samples);
+    constexpr std::size_t ALIGN_FLOATS = 64 / sizeof(float);
+    const int stride = (width + STRIDE_PIXELS - 1) / STRIDE_PIXELS * STRIDE_PIXELS;
+    const std::size_t pixels = static_cast<std::size_t>(stride) * static_cast<std::size_t>(rows);
+    if (data_.size() < pixels * 2 * samples + ALIGN_FLOATS) data_.resize(pixels * 2 * samples + ALIGN_FLOATS);
     if (touched_.size() < pixels) touched_.resize(pixels);
+    const std::size_t misalign = reinterpret_cast<std::uintptr_t>(data_.data()) % 64 / sizeof(float);
+    base_ = data_.data() + (misalign ? ALIGN_FLOATS - misalign : 0);
+    stride_ = stride;
     width_ = width;
     rows_ = rows;
     samples_ = samples;

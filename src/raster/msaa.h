@@ -35,6 +35,11 @@ struct sample_pattern {
     std::int16_t dx[MSAA_MAX_SAMPLES] = {}, dy[MSAA_MAX_SAMPLES] = {};
     alignas(16) float fdx[MSAA_MAX_SAMPLES] = {}, fdy[MSAA_MAX_SAMPLES] = {};  // dx/2^bits, dy/2^bits (px), exact
     int min_dx = 0, max_dx = 0, min_dy = 0, max_dy = 0;  // offsets' bounds (1/2^bits px)
+    // 4 samples only: the samples of a 2 × 2 block of pixels, lane 4q + s for sample s of pixel
+    // q = 2r + j (column j, row r of the block), as offsets from the centre of pixel 0 (block_x
+    // = j + fdx[s], block_y = r + fdy[s]) and from their own pixel's (lane_dx = fdx[s], lane_dy
+    // = fdy[s]), in px, exact: the AVX-512 4× kernel's constants.
+    alignas(64) float block_x[16] = {}, block_y[16] = {}, lane_dx[16] = {}, lane_dy[16] = {};
     std::int64_t one() const { return std::int64_t{1} << bits; }  // sub-pixel units per pixel
 };
 
@@ -50,8 +55,9 @@ const sample_pattern &pattern_of(int samples);
 
 // Which kernel fills and resolves the samples: the portable reference (64-bit edge values,
 // one sample at a time), SSE2 (32-bit edge values, four samples per register) or AVX-512
-// (a pixel's 8 or 16 samples in one register; at 4× the SSE2 kernel's code compiled for
-// AVX-512; the resolve is SSE2's). All three give bit-identical samples and images; a
+// (a pixel's 8 or 16 samples in one register; at 4× a 2 × 2 block of pixels' 16 samples,
+// or for triangles that are not narrow the SSE2 kernel's code compiled for AVX-512; the
+// resolve is SSE2's). All three give bit-identical samples and images; a
 // faster one runs where its precondition holds (msaa_triangle::chunkable) and the portable
 // one elsewhere.
 enum class msaa_kernel { portable, sse2, avx512 };
@@ -72,10 +78,14 @@ public:
     int width() const { return width_; }
     // Makes the tile rows [y0, y1) (y1 − y0 ≤ rows of resize), every pixel untouched.
     void start(int y0, int y1);
-    float *pixel(int x, int y) {
-        return data_.data() + (static_cast<std::size_t>(y - origin_) * width_ + x) * 2 * samples_;
-    }
-    std::uint8_t *touched_row(int y) { return touched_.data() + static_cast<std::size_t>(y - origin_) * width_; }
+    // Rows are STRIDE_PIXELS-aligned (stride() ≥ width(), the pixels past the width are
+    // padding no resolve reads) and the samples start 64-byte aligned, so a group of four
+    // pixels from a column that is a multiple of 4 is two whole, aligned 64-byte lines at 4
+    // samples (the AVX-512 4× kernel's unit).
+    static constexpr int STRIDE_PIXELS = 4;
+    int stride() const { return stride_; }
+    float *pixel(int x, int y) { return base_ + (static_cast<std::size_t>(y - origin_) * stride_ + x) * 2 * samples_; }
+    std::uint8_t *touched_row(int y) { return touched_.data() + static_cast<std::size_t>(y - origin_) * stride_; }
     // Rows [y0, y1) := untouched.
     void clear_rows(int y0, int y1);
     // A pixel's first touch: every sample := (depth 1, clear_colour).
@@ -86,8 +96,9 @@ public:
     void resolve(canvas_t &canvas, zbuffer &depth, float clear_colour, msaa_kernel kernel);
 
 private:
-    int width_ = 0, rows_ = 0, samples_ = 1, origin_ = 0, end_ = 0;
+    int width_ = 0, stride_ = 0, rows_ = 0, samples_ = 1, origin_ = 0, end_ = 0;
     std::vector<float> data_;
+    float *base_ = nullptr;  // data_ from its first 64-byte boundary
     std::vector<std::uint8_t> touched_;
 };
 
