@@ -171,17 +171,18 @@ void fill_rows(sample_store &store, const msaa_triangle &f, const sample_pattern
             }
             __m128 column = _mm_set1_ps(static_cast<float>(first));  // exactly (< 2^24)
             for (int x = first; x <= last; ++x, p += 2 * S, ++touched, column = _mm_add_ps(column, one)) {
-                // A sample is in when all three edge values are ≥ 0.
+                // A sample is in when all three edge values are ≥ 0. A pixel without one is
+                // stored back as it was, without a branch (cheaper than its mispredictions at
+                // the spans' ends: Scene S level 6 16× 10.8 → 10.3 ms, 8× 10.5 → 10.1).
                 const mask in = static_cast<mask>(~V::outside(b0, b1, b2));
                 b0 = V::add(b0, step0), b1 = V::add(b1, step1), b2 = V::add(b2, step2);
-                if (!in) continue;
                 const __m128 at = _mm_add_ps(plane_row, _mm_mul_ps(plane_dx, column));
                 const __m128 shade = _mm_min_ps(_mm_max_ps(_mm_shuffle_ps(at, at, 0x55), zero), one);  // clamp01
                 const typename V::vf z = V::add(V::broadcast(at), dz);
                 // Until its first touch this frame a pixel's samples hold depth 1 and the clear
                 // colour: read as such (a load with no lane set reads no memory), no branch.
                 const mask held = static_cast<mask>(0u - static_cast<unsigned>(*touched));
-                *touched = 1;
+                *touched = static_cast<std::uint8_t>(*touched | (in != 0));
                 const typename V::vf stored = V::load(ones, held, p);
                 const mask pass = passing<S, Test>(in, z, stored);
                 if (depth_write) V::store(p, V::blend(pass, stored, z));
