@@ -46,7 +46,6 @@ struct samples<16> {
     static vi set_int(std::int64_t v) { return _mm512_set1_epi32(static_cast<std::int32_t>(v)); }
     static vi load_int(const std::int32_t *p) { return _mm512_loadu_si512(p); }
     static vf load(const float *p) { return _mm512_loadu_ps(p); }
-    static vf load(vf held_off, mask held, const float *p) { return _mm512_mask_loadu_ps(held_off, held, p); }
     static void store(float *p, mask m, vf v) { _mm512_mask_storeu_ps(p, m, v); }
     static void store(float *p, vf v) { _mm512_storeu_ps(p, v); }
     static vf blend(mask m, vf a, vf b) { return _mm512_mask_blend_ps(m, a, b); }
@@ -72,7 +71,6 @@ struct samples<8> {
     static vi set_int(std::int64_t v) { return _mm256_set1_epi32(static_cast<std::int32_t>(v)); }
     static vi load_int(const std::int32_t *p) { return _mm256_loadu_si256(reinterpret_cast<const __m256i *>(p)); }
     static vf load(const float *p) { return _mm256_loadu_ps(p); }
-    static vf load(vf held_off, mask held, const float *p) { return _mm256_mask_loadu_ps(held_off, held, p); }
     static void store(float *p, mask m, vf v) { _mm256_mask_storeu_ps(p, m, v); }
     static void store(float *p, vf v) { _mm256_storeu_ps(p, v); }
     static vf blend(mask m, vf a, vf b) { return _mm256_mask_blend_ps(m, a, b); }
@@ -180,14 +178,15 @@ void fill_rows(sample_store &store, const msaa_triangle &f, const sample_pattern
                 const __m128 shade = _mm_min_ps(_mm_max_ps(_mm_shuffle_ps(at, at, 0x55), zero), one);  // clamp01
                 const typename V::vf z = V::add(V::broadcast(at), dz);
                 // Until its first touch this frame a pixel's samples hold depth 1 and the clear
-                // colour: read as such (a load with no lane set reads no memory), no branch.
+                // colour: loaded whatever they hold and selected away (the loads need not wait
+                // for the touched byte), no branch.
                 const mask held = static_cast<mask>(0u - static_cast<unsigned>(*touched));
                 *touched = static_cast<std::uint8_t>(*touched | (in != 0));
-                const typename V::vf stored = V::load(ones, held, p);
+                const typename V::vf stored = V::blend(held, ones, V::load(p));
                 const mask pass = passing<S, Test>(in, z, stored);
                 if (depth_write) V::store(p, V::blend(pass, stored, z));
                 else V::store(p, static_cast<mask>(~held), ones);
-                V::store(p + S, V::blend(pass, V::load(clear, held, p + S), V::broadcast(shade)));
+                V::store(p + S, V::blend(pass, V::blend(held, clear, V::load(p + S)), V::broadcast(shade)));
             }
         }
     }
