@@ -104,6 +104,12 @@ inline typename samples<S>::mask passing(typename samples<S>::mask in, typename 
 }
 
 // S = 8 or 16 samples, one register per pixel's depths and one per its colours.
+// Narrow triangles whose boxes are at most this many columns wide are walked whole, every
+// pixel of the box, without the row spans' divisions (most of Scene S's triangles: at 16×
+// 10.1 → 8.9 ms, 8× 9.5 → 7.6; the torus knot's larger triangles ±4 %); the others row span
+// by row span. The 4× block kernel likewise.
+constexpr int SCAN_COLUMNS_AVX512 = 16;
+
 template <int S, depth_func Test>
 void fill_rows(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, bool depth_write,
                float clear_colour, int y0, int y1) {
@@ -139,11 +145,15 @@ void fill_rows(sample_store &store, const msaa_triangle &f, const sample_pattern
     const __m128 plane0 = _mm_setr_ps(f.z, f.i, 0.0f, 0.0f), plane_dy = _mm_setr_ps(f.zdy, f.idy, 0.0f, 0.0f);
     const __m128 plane_dx = _mm_setr_ps(f.zdx, f.idx, 0.0f, 0.0f);
     const __m128 one = _mm_set1_ps(1.0f), zero = _mm_setzero_ps();
+    const bool scan = f.narrow && f.max_x - f.min_x < SCAN_COLUMNS_AVX512;
     for (int y = y0; y < y1; ++y) {
         // The row's span: 32-bit divisions when narrow (9 % faster at 16×), else 64-bit.
         std::int64_t e64[3];
         int lo, hi;
-        if (f.narrow) {
+        if (scan) {
+            for (int k = 0; k < 3; ++k) e64[k] = f.e[k] + f.b[k] * (y - f.min_y);
+            lo = 0, hi = f.max_x - f.min_x;
+        } else if (f.narrow) {
             std::int32_t e[3];
             if (!off.row(f, y, e, lo, hi)) continue;
             e64[0] = e[0], e64[1] = e[1], e64[2] = e[2];
@@ -225,10 +235,6 @@ inline std::uint32_t bytes_of_lanes(__mmask16 lanes) {
 
 }  // namespace block
 
-// Boxes at most this many columns wide are walked whole by the block kernel (a block
-// without a covered sample costs less than a row span's divisions); wider ones by span.
-constexpr int BLOCK_SCAN_COLUMNS = 16;
-
 template <depth_func Test>
 void fill_rows_blocks(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, bool depth_write,
                       float clear_colour, int y0, int y1) {
@@ -241,7 +247,7 @@ void fill_rows_blocks(sample_store &store, const msaa_triangle &f, const sample_
     const __m512 bx = _mm512_load_ps(pat.block_x), by = _mm512_load_ps(pat.block_y);
     const __m512 ox = _mm512_load_ps(pat.lane_dx), oy = _mm512_load_ps(pat.lane_dy);
     const int columns = f.max_x - f.min_x + 1;
-    const bool scan = columns <= BLOCK_SCAN_COLUMNS;
+    const bool scan = columns <= SCAN_COLUMNS_AVX512;
     edge_extremes off;  // (row spans only) over pixel 0's lanes: the pattern's own offsets
     __m512i d[3];
     for (int k = 0; k < 3; ++k) {
