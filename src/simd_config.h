@@ -5,8 +5,7 @@
 //   TINY3D_SSE2    SSE2 kernels: the compiler targets SSE2 (every x86-64 build does).
 //   TINY3D_AVX512  AVX-512 kernels: x86-64 with GCC or clang, compiled in their own files
 //                  inside a target region (the rest of the build stays baseline) and run
-//                  only where the CPU check at run time finds AVX-512 F/VL/DQ/BW and BMI2
-//                  (every CPU with AVX-512 has BMI2).
+//                  only where the CPU check at run time finds AVX-512 F/VL/DQ/BW.
 // Defining TINY3D_PORTABLE (-DTINY3D_PORTABLE; `make test-portable` builds everything so
 // into build/portable/) turns every path off: each kernel family then runs its portable
 // reference, which is what the SIMD kernels are tested against.
@@ -24,11 +23,10 @@
 
 #ifdef TINY3D_AVX512
 namespace tiny3d::detail {
-// Whether this CPU runs the AVX-512 kernels (F, VL, DQ and BW, and BMI2).
+// Whether this CPU runs the AVX-512 kernels (F, VL, DQ and BW).
 inline bool cpu_has_avx512() {
     return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
-           __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512bw") &&
-           __builtin_cpu_supports("bmi2");
+           __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512bw");
 }
 }  // namespace tiny3d::detail
 #endif

@@ -229,10 +229,11 @@ inline __mmask16 lanes_of_bytes(std::uint32_t bytes) {
                                             _mm_setr_epi8(0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3));
     return _mm_test_epi8_mask(spread, spread);
 }
-// The pixels with a lane set → bytes of 0/1.
+// The pixels with a lane set → bytes of 0/1: per pixel, its four lanes' bytes as one
+// 32-bit lane, nonzero → 1, narrowed to a byte.
 inline std::uint32_t bytes_of_lanes(__mmask16 lanes) {
-    const unsigned any = lanes | lanes >> 1;
-    return _pdep_u32(_pext_u32(any | any >> 2, 0x1111u), 0x01010101u);
+    const __m128i any = _mm_min_epu32(_mm_movm_epi8(lanes), _mm_set1_epi32(1));
+    return static_cast<std::uint32_t>(_mm_cvtsi128_si32(_mm_cvtepi32_epi8(any)));
 }
 
 }  // namespace block
