@@ -204,6 +204,28 @@ TEST(msaa_multi_draw_frames_do_not_depend_on_the_thread_count) {
 // No allocation per frame in steady state, multisampled frames included: after one frame
 // of each mode (the tiles and triangle lists grow to the largest), frames cycling through
 // every mode with several draws (textured, Phong, translucent) allocate nothing.
+// The sample store's layout the AVX-512 4× kernel relies on: rows padded to a multiple of
+// STRIDE_PIXELS and every row's first pixel on a 64-byte boundary (so a pair of pixels from
+// an even column is one aligned 64-byte line at 4 samples), pixels contiguous and disjoint,
+// across resizes that shrink and grow the width.
+TEST(msaa_sample_store_rows_are_padded_and_aligned) {
+    detail::sample_store store;
+    for (int width : {1, 2, 3, 5, 8, 41, 7, 1024})
+        for (int samples : {4, 8, 16}) {
+            store.resize(width, 3, samples);
+            store.start(10, 13);
+            CHECK(store.stride() >= width);
+            CHECK_EQ(store.stride() % detail::sample_store::STRIDE_PIXELS, 0);
+            CHECK(store.stride() < width + detail::sample_store::STRIDE_PIXELS);
+            for (int y = 10; y < 13; ++y) {
+                CHECK_EQ(reinterpret_cast<std::uintptr_t>(store.pixel(0, y)) % 64, 0u);
+                CHECK_EQ(store.pixel(1, y) - store.pixel(0, y), 2L * samples);
+                CHECK_EQ(store.touched_row(y) - store.touched_row(10), static_cast<long>(y - 10) * store.stride());
+            }
+            CHECK_EQ(store.pixel(0, 11) - store.pixel(0, 10), static_cast<long>(store.stride()) * 2 * samples);
+        }
+}
+
 TEST(msaa_frames_allocate_nothing_in_steady_state) {
     constexpr int S = 64;
     texture grey;
