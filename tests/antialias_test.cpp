@@ -31,10 +31,10 @@ constexpr sample_count MODES[] = {sample_count::x1, sample_count::x4, sample_cou
 
 // Every multisample kernel this build runs on this CPU, the portable reference first.
 std::vector<detail::msaa_kernel> msaa_kernels() {
-    std::vector<detail::msaa_kernel> out = {detail::msaa_kernel::portable};
-    const detail::msaa_kernel best = detail::best_msaa_kernel();
-    if (best != detail::msaa_kernel::portable) out.push_back(detail::msaa_kernel::sse2);
-    if (best == detail::msaa_kernel::avx512) out.push_back(detail::msaa_kernel::avx512);
+    std::vector<detail::msaa_kernel> out;
+    for (detail::msaa_kernel k : {detail::msaa_kernel::portable, detail::msaa_kernel::sse2, detail::msaa_kernel::avx2,
+                                  detail::msaa_kernel::avx512})
+        if (detail::msaa_kernel_runs(k)) out.push_back(k);
     return out;
 }
 

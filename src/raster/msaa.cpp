@@ -257,15 +257,35 @@ void sample_store::initialise(float *pixel, float clear_colour) const {
     std::fill(pixel + samples_, pixel + 2 * samples_, clear_colour);
 }
 
-msaa_kernel best_msaa_kernel() {
-#ifdef TINY3D_AVX512
-    if (cpu_has_avx512()) return msaa_kernel::avx512;
-#endif
+bool msaa_kernel_runs(msaa_kernel k) {
+    switch (k) {
+        case msaa_kernel::portable: return true;
+        case msaa_kernel::sse2:
 #ifdef TINY3D_SSE2
-    return msaa_kernel::sse2;
+            return true;
 #else
-    return msaa_kernel::portable;
+            return false;
 #endif
+        case msaa_kernel::avx2:
+#if defined(TINY3D_SSE2) && defined(TINY3D_AVX2)
+            return cpu_has_avx2();
+#else
+            return false;
+#endif
+        case msaa_kernel::avx512:
+#if defined(TINY3D_SSE2) && defined(TINY3D_AVX512)
+            return cpu_has_avx512();
+#else
+            return false;
+#endif
+    }
+    return false;
+}
+
+msaa_kernel best_msaa_kernel() {
+    for (msaa_kernel k : {msaa_kernel::avx512, msaa_kernel::avx2, msaa_kernel::sse2})
+        if (msaa_kernel_runs(k)) return k;
+    return msaa_kernel::portable;
 }
 
 void sample_store::resolve(canvas_t &canvas, zbuffer &depth, float clear_colour, [[maybe_unused]] msaa_kernel kernel) {
@@ -366,6 +386,10 @@ void fill_msaa_rows(sample_store &store, const msaa_triangle &f, const sample_pa
 #ifdef TINY3D_AVX512
     if (f.chunkable && kernel == msaa_kernel::avx512 && (pat.count == 4 || pat.count == 8 || pat.count == 16))
         return fill_rows_avx512(store, f, pat, test, depth_write, clear_colour, y0, y1);
+#endif
+#ifdef TINY3D_AVX2
+    if (f.narrow && kernel == msaa_kernel::avx2 && pat.count == 4)
+        return fill_rows_avx2(store, f, pat, test, depth_write, clear_colour, y0, y1);
 #endif
 #ifdef TINY3D_SSE2
     if (f.chunkable && kernel != msaa_kernel::portable) {

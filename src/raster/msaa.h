@@ -54,15 +54,18 @@ inline std::int64_t sample_edge_offset(std::int64_t a, std::int64_t b, const sam
 const sample_pattern &pattern_of(int samples);
 
 // Which kernel fills and resolves the samples: the portable reference (64-bit edge values,
-// one sample at a time), SSE2 (32-bit edge values, four samples per register) or AVX-512
-// (a pixel's 8 or 16 samples in one register; at 4× a 2 × 2 block of pixels' 16 samples,
-// or for triangles that are not narrow the SSE2 kernel's code compiled for AVX-512; the
-// resolve is SSE2's). All three give bit-identical samples and images; a
-// faster one runs where its precondition holds (msaa_triangle::chunkable) and the portable
-// one elsewhere.
-enum class msaa_kernel { portable, sse2, avx512 };
-// The fastest kernel this build runs on this CPU (avx512 only where the CPU has AVX-512
-// F/VL/DQ/BW).
+// one sample at a time), SSE2 (32-bit edge values, four samples per register), AVX2 (SSE2,
+// but at 4× two pixels' 8 samples per register for narrow triangles) or AVX-512 (a pixel's
+// 8 or 16 samples in one register; at 4× a 2 × 2 block of pixels' 16 samples, or for
+// triangles that are not narrow the SSE2 kernel's code compiled for AVX-512). The resolve
+// is SSE2's for all but the portable one. All give bit-identical samples and images; a
+// faster one runs where its precondition holds (msaa_triangle::chunkable, narrow) and the
+// portable one elsewhere.
+enum class msaa_kernel { portable, sse2, avx2, avx512 };
+// Whether this build runs kernel k on this CPU (avx2 where the CPU has AVX2, avx512 where it
+// has AVX-512 F/VL/DQ/BW).
+bool msaa_kernel_runs(msaa_kernel k);
+// The fastest kernel this build runs on this CPU.
 msaa_kernel best_msaa_kernel();
 
 // The samples of a tile of rows [origin, origin + rows) of the canvas: per pixel S sample

@@ -1,6 +1,7 @@
 // msaa_kernels.h — internal to the multisample fill: what the kernels of msaa.cpp (portable,
-// SSE2) and of msaa_avx512.cpp share, and the AVX-512 kernel's entry point. Included by
-// msaa_avx512.cpp before its target region opens, so everything inline here stays baseline.
+// SSE2), msaa_avx2.cpp and msaa_avx512.cpp share, and the AVX2 and AVX-512 kernels' entry
+// points. Included by those files before their target regions open, so everything inline
+// here stays baseline.
 #ifndef TINY3D_MSAA_KERNELS_H
 #define TINY3D_MSAA_KERNELS_H
 
@@ -68,6 +69,14 @@ inline std::int32_t chunk_start(const msaa_triangle &f, std::int64_t v) {
 inline void sample_offsets_exact(const msaa_triangle &f, const sample_pattern &pat, int k, std::int32_t *out) {
     for (int s = 0; s < pat.count; ++s) out[s] = static_cast<std::int32_t>(sample_edge_offset(f.a[k], f.b[k], pat, s));
 }
+
+#ifdef TINY3D_AVX2
+// The AVX2 kernel (msaa_kernel::avx2; only on CPUs best_msaa_kernel() reports it for, or
+// avx512): f.narrow, pat.count = 4, rows [y0, y1) already clamped to f's. The same integer
+// tests and float operations as the portable kernel.
+void fill_rows_avx2(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
+                    bool depth_write, float clear_colour, int y0, int y1);
+#endif
 
 #ifdef TINY3D_AVX512
 // The AVX-512 kernels (msaa_kernel::avx512; only on CPUs best_msaa_kernel() reports it for):

@@ -1,0 +1,156 @@
+// msaa_avx2.cpp — the multisample fill's AVX2 kernel (msaa_kernel::avx2): 4× on narrow
+// triangles for CPUs without AVX-512. Two pixels of a row per step, their 8 samples in one
+// 256-bit register (lane 4j + s: sample s of pixel j). Steps start at even columns, so the
+// two pixels' samples are one whole, aligned 64-byte line of the tile (sample_store::
+// STRIDE_PIXELS): two 256-bit halves, each one pixel's 4 depths and 4 colours, regrouped
+// into the two pixels' depths and their colours by two lane permutes, and back. Coverage
+// (the sign bits of the three stepped edge values' OR, within the box's columns), the depth
+// test (a compare) and the writes (blends) take no branch, and neither does a step without
+// a covered sample (stored back as it was): the AVX-512 block kernel's scheme
+// (msaa_avx512.cpp), with 8 lanes and without mask registers.
+//
+// Compiled for AVX2 inside the target region of avx2_region_open.inc; run only on CPUs that
+// have it (best_msaa_kernel). No FMA contraction: the portable kernel's float operations,
+// rounded step by step, lane by lane, so the samples are bit-identical.
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+
+#include "msaa_kernels.h"
+#include "../simd_config.h"
+
+#ifdef TINY3D_AVX2
+#include <immintrin.h>
+
+#include "../avx2_region_open.inc"
+
+namespace tiny3d::detail {
+namespace {
+
+// Narrow boxes at most this many columns wide are walked whole (no row spans), as in the
+// AVX-512 kernels.
+constexpr int SCAN_COLUMNS_AVX2 = 16;
+
+// The depth test per lane, as depth_passes decides it (a NaN depth passes only not_equal
+// and always): all ones where it passes.
+template <depth_func Test>
+inline __m256 passing(__m256 z, __m256 stored) {
+    if constexpr (Test == depth_func::never) return _mm256_setzero_ps();
+    else if constexpr (Test == depth_func::less) return _mm256_cmp_ps(z, stored, _CMP_LT_OQ);
+    else if constexpr (Test == depth_func::less_equal) return _mm256_cmp_ps(z, stored, _CMP_LE_OQ);
+    else if constexpr (Test == depth_func::equal) return _mm256_cmp_ps(z, stored, _CMP_EQ_OQ);
+    else if constexpr (Test == depth_func::greater) return _mm256_cmp_ps(z, stored, _CMP_GT_OQ);
+    else if constexpr (Test == depth_func::greater_equal) return _mm256_cmp_ps(z, stored, _CMP_GE_OQ);
+    else if constexpr (Test == depth_func::not_equal) return _mm256_cmp_ps(z, stored, _CMP_NEQ_UQ);
+    else return _mm256_castsi256_ps(_mm256_set1_epi32(-1));
+}
+
+template <depth_func Test>
+void fill_rows_pairs(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, bool depth_write,
+                     float clear_colour, int y0, int y1) {
+    constexpr int S = 4;
+    // Lanes 0..7 of the pattern's 2 × 2 block constants are the block's first row: the edge
+    // offsets a·(j + dx/16) + b·(dy/16) are integers below 2^21 for a narrow triangle, so
+    // the float products and sum are exact; the depth offsets are the portable kernel's.
+    const __m256 bx = _mm256_load_ps(pat.block_x), by = _mm256_load_ps(pat.block_y);
+    const __m256 ox = _mm256_load_ps(pat.lane_dx), oy = _mm256_load_ps(pat.lane_dy);
+    const int columns = f.max_x - f.min_x + 1;
+    const bool scan = columns <= SCAN_COLUMNS_AVX2;
+    edge_extremes off;  // (row spans only) the pattern's own offsets
+    __m256i d[3];
+    for (int k = 0; k < 3; ++k) {
+        d[k] = _mm256_cvtps_epi32(_mm256_add_ps(_mm256_mul_ps(_mm256_set1_ps(static_cast<float>(f.a[k])), bx),
+                                                _mm256_mul_ps(_mm256_set1_ps(static_cast<float>(f.b[k])), by)));
+        if (scan) continue;
+        off.lo[k] = INT64_MAX, off.hi[k] = INT64_MIN;
+        for (int s = 0; s < S; ++s) {
+            const std::int64_t v = sample_edge_offset(f.a[k], f.b[k], pat, s);
+            off.lo[k] = std::min(off.lo[k], v), off.hi[k] = std::max(off.hi[k], v);
+        }
+    }
+    const __m256 dz = _mm256_add_ps(_mm256_mul_ps(_mm256_set1_ps(f.zdx), ox), _mm256_mul_ps(_mm256_set1_ps(f.zdy), oy));
+    const __m256i step0 = _mm256_set1_epi32(static_cast<std::int32_t>(2 * f.a[0]));
+    const __m256i step1 = _mm256_set1_epi32(static_cast<std::int32_t>(2 * f.a[1]));
+    const __m256i step2 = _mm256_set1_epi32(static_cast<std::int32_t>(2 * f.a[2]));
+    const __m256 ones = _mm256_set1_ps(1.0f), clear = _mm256_set1_ps(clear_colour), zero = _mm256_setzero_ps();
+    const __m256 zdx = _mm256_set1_ps(f.zdx), idx = _mm256_set1_ps(f.idx);
+    const __m256 write = depth_write ? _mm256_castsi256_ps(_mm256_set1_epi32(-1)) : zero;
+    const __m256i two_columns = _mm256_set1_epi32(2), minus_one = _mm256_set1_epi32(-1);
+    const __m256i lane_column = _mm256_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1);
+    const __m256i past_last = _mm256_set1_epi32(columns);
+    // Touched bytes (pixel j: byte j) → each repeated in its pixel's four lanes.
+    const __m128i spread = _mm_setr_epi8(0, 0, 0, 0, 1, 1, 1, 1, -1, -1, -1, -1, -1, -1, -1, -1);
+    const int odd = f.min_x & 1;  // the steps start one column left of min_x
+    for (int y = y0; y < y1; ++y) {
+        const int dy = y - f.min_y;
+        std::int32_t e[3];
+        int lo = 0, hi = columns - 1;
+        if (scan) {
+            for (int k = 0; k < 3; ++k) e[k] = static_cast<std::int32_t>(f.e[k] + f.b[k] * dy);
+        } else if (!off.row(f, y, e, lo, hi)) {
+            continue;
+        }
+        const int first = lo - ((lo + odd) & 1);  // relative to min_x, at an even canvas column
+        __m256i b0 = _mm256_add_epi32(_mm256_set1_epi32(e[0] + static_cast<std::int32_t>(f.a[0]) * first), d[0]);
+        __m256i b1 = _mm256_add_epi32(_mm256_set1_epi32(e[1] + static_cast<std::int32_t>(f.a[1]) * first), d[1]);
+        __m256i b2 = _mm256_add_epi32(_mm256_set1_epi32(e[2] + static_cast<std::int32_t>(f.a[2]) * first), d[2]);
+        __m256i column = _mm256_add_epi32(_mm256_set1_epi32(first), lane_column);
+        const __m256 z_row = _mm256_set1_ps(f.z + f.zdy * static_cast<float>(dy));
+        const __m256 i_row = _mm256_set1_ps(f.i + f.idy * static_cast<float>(dy));
+        std::uint8_t *touched = store.touched_row(y) + f.min_x + first;
+        float *p = store.pixel(f.min_x + first, y);
+        for (int x = first; x <= hi; x += 2, p += 2 * 2 * S, touched += 2, column = _mm256_add_epi32(column, two_columns)) {
+            // In (all ones): every edge value ≥ 0, and the pixel inside the (clipped) box.
+            const __m256i inside = _mm256_and_si256(_mm256_cmpgt_epi32(column, minus_one), _mm256_cmpgt_epi32(past_last, column));
+            const __m256 in = _mm256_castsi256_ps(
+                _mm256_andnot_si256(_mm256_srai_epi32(_mm256_or_si256(_mm256_or_si256(b0, b1), b2), 31), inside));
+            b0 = _mm256_add_epi32(b0, step0), b1 = _mm256_add_epi32(b1, step1), b2 = _mm256_add_epi32(b2, step2);
+            const __m256 at = _mm256_cvtepi32_ps(column);  // exactly (< 2^24)
+            const __m256 z = _mm256_add_ps(_mm256_add_ps(z_row, _mm256_mul_ps(zdx, at)), dz);
+            const __m256 shade = _mm256_min_ps(_mm256_max_ps(_mm256_add_ps(i_row, _mm256_mul_ps(idx, at)), zero), ones);
+            // Until its first touch this frame a pixel's samples hold depth 1 and the clear
+            // colour: what is in memory is selected away.
+            std::uint16_t was;
+            std::memcpy(&was, touched, sizeof was);
+            const __m256 held = _mm256_castsi256_ps(_mm256_cmpgt_epi32(
+                _mm256_cvtepu8_epi32(_mm_shuffle_epi8(_mm_cvtsi32_si128(was), spread)), _mm256_setzero_si256()));
+            const __m256 pixel0 = _mm256_load_ps(p), pixel1 = _mm256_load_ps(p + 2 * S);
+            const __m256 stored = _mm256_blendv_ps(ones, _mm256_permute2f128_ps(pixel0, pixel1, 0x20), held);
+            const __m256 colours = _mm256_blendv_ps(clear, _mm256_permute2f128_ps(pixel0, pixel1, 0x31), held);
+            const __m256 pass = _mm256_and_ps(in, passing<Test>(z, stored));
+            const __m256 depths = _mm256_blendv_ps(stored, z, _mm256_and_ps(pass, write));
+            const __m256 shades = _mm256_blendv_ps(colours, shade, pass);
+            _mm256_store_ps(p, _mm256_permute2f128_ps(depths, shades, 0x20));
+            _mm256_store_ps(p + 2 * S, _mm256_permute2f128_ps(depths, shades, 0x31));
+            const unsigned covered = static_cast<unsigned>(_mm256_movemask_ps(in));
+            const std::uint16_t now = static_cast<std::uint16_t>(was | ((covered & 0xFu) != 0) | ((covered & 0xF0u) != 0) << 8);
+            std::memcpy(touched, &now, sizeof now);
+        }
+    }
+}
+
+}  // namespace
+
+void fill_rows_avx2(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
+                    bool depth_write, float clear_colour, int y0, int y1) {
+    switch (test) {
+        case depth_func::never: return;
+        case depth_func::less: return fill_rows_pairs<depth_func::less>(store, f, pat, depth_write, clear_colour, y0, y1);
+        case depth_func::less_equal:
+            return fill_rows_pairs<depth_func::less_equal>(store, f, pat, depth_write, clear_colour, y0, y1);
+        case depth_func::equal: return fill_rows_pairs<depth_func::equal>(store, f, pat, depth_write, clear_colour, y0, y1);
+        case depth_func::greater:
+            return fill_rows_pairs<depth_func::greater>(store, f, pat, depth_write, clear_colour, y0, y1);
+        case depth_func::greater_equal:
+            return fill_rows_pairs<depth_func::greater_equal>(store, f, pat, depth_write, clear_colour, y0, y1);
+        case depth_func::not_equal:
+            return fill_rows_pairs<depth_func::not_equal>(store, f, pat, depth_write, clear_colour, y0, y1);
+        case depth_func::always: return fill_rows_pairs<depth_func::always>(store, f, pat, depth_write, clear_colour, y0, y1);
+    }
+}
+
+}  // namespace tiny3d::detail
+
+#include "../avx512_region_close.inc"
+
+#endif  // TINY3D_AVX2
