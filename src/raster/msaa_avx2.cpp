@@ -133,20 +133,7 @@ void fill_rows_pairs(sample_store &store, const msaa_triangle &f, const sample_p
 
 void fill_rows_avx2(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
                     bool depth_write, float clear_colour, int y0, int y1) {
-    switch (test) {
-        case depth_func::never: return;
-        case depth_func::less: return fill_rows_pairs<depth_func::less>(store, f, pat, depth_write, clear_colour, y0, y1);
-        case depth_func::less_equal:
-            return fill_rows_pairs<depth_func::less_equal>(store, f, pat, depth_write, clear_colour, y0, y1);
-        case depth_func::equal: return fill_rows_pairs<depth_func::equal>(store, f, pat, depth_write, clear_colour, y0, y1);
-        case depth_func::greater:
-            return fill_rows_pairs<depth_func::greater>(store, f, pat, depth_write, clear_colour, y0, y1);
-        case depth_func::greater_equal:
-            return fill_rows_pairs<depth_func::greater_equal>(store, f, pat, depth_write, clear_colour, y0, y1);
-        case depth_func::not_equal:
-            return fill_rows_pairs<depth_func::not_equal>(store, f, pat, depth_write, clear_colour, y0, y1);
-        case depth_func::always: return fill_rows_pairs<depth_func::always>(store, f, pat, depth_write, clear_colour, y0, y1);
-    }
+    with_depth_test(test, [&](auto t) { fill_rows_pairs<t.value>(store, f, pat, depth_write, clear_colour, y0, y1); });
 }
 
 }  // namespace tiny3d::detail

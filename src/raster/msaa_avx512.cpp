@@ -346,37 +346,13 @@ void fill_rows_4(sample_store &store, const msaa_triangle &f, const sample_patte
 
 void fill_rows_4_dispatch(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
                           bool depth_write, float clear_colour, int y0, int y1) {
-    switch (test) {
-        case depth_func::never: return;
-        case depth_func::less: return fill_rows_4<depth_func::less>(store, f, pat, depth_write, clear_colour, y0, y1);
-        case depth_func::less_equal:
-            return fill_rows_4<depth_func::less_equal>(store, f, pat, depth_write, clear_colour, y0, y1);
-        case depth_func::equal: return fill_rows_4<depth_func::equal>(store, f, pat, depth_write, clear_colour, y0, y1);
-        case depth_func::greater: return fill_rows_4<depth_func::greater>(store, f, pat, depth_write, clear_colour, y0, y1);
-        case depth_func::greater_equal:
-            return fill_rows_4<depth_func::greater_equal>(store, f, pat, depth_write, clear_colour, y0, y1);
-        case depth_func::not_equal:
-            return fill_rows_4<depth_func::not_equal>(store, f, pat, depth_write, clear_colour, y0, y1);
-        case depth_func::always: return fill_rows_4<depth_func::always>(store, f, pat, depth_write, clear_colour, y0, y1);
-    }
+    with_depth_test(test, [&](auto t) { fill_rows_4<t.value>(store, f, pat, depth_write, clear_colour, y0, y1); });
 }
 
 template <int S>
 void fill_rows_dispatch(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
                         bool depth_write, float clear_colour, int y0, int y1) {
-    switch (test) {
-        case depth_func::never: return;
-        case depth_func::less: return fill_rows<S, depth_func::less>(store, f, pat, depth_write, clear_colour, y0, y1);
-        case depth_func::less_equal:
-            return fill_rows<S, depth_func::less_equal>(store, f, pat, depth_write, clear_colour, y0, y1);
-        case depth_func::equal: return fill_rows<S, depth_func::equal>(store, f, pat, depth_write, clear_colour, y0, y1);
-        case depth_func::greater: return fill_rows<S, depth_func::greater>(store, f, pat, depth_write, clear_colour, y0, y1);
-        case depth_func::greater_equal:
-            return fill_rows<S, depth_func::greater_equal>(store, f, pat, depth_write, clear_colour, y0, y1);
-        case depth_func::not_equal:
-            return fill_rows<S, depth_func::not_equal>(store, f, pat, depth_write, clear_colour, y0, y1);
-        case depth_func::always: return fill_rows<S, depth_func::always>(store, f, pat, depth_write, clear_colour, y0, y1);
-    }
+    with_depth_test(test, [&](auto t) { fill_rows<S, t.value>(store, f, pat, depth_write, clear_colour, y0, y1); });
 }
 
 }  // namespace

@@ -409,20 +409,7 @@ void fill_rows_sse2_any(canvas_t &canvas, zbuffer *depth, const fast_triangle &f
 template <bool HasDepth>
 void fill_rows_dispatch(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, depth_func test,
                         bool depth_write, int y0, int y1) {
-    switch (test) {
-        case depth_func::never: return;
-        case depth_func::less: return fill_rows_sse2_any<depth_func::less, HasDepth>(canvas, depth, f, depth_write, y0, y1);
-        case depth_func::less_equal:
-            return fill_rows_sse2_any<depth_func::less_equal, HasDepth>(canvas, depth, f, depth_write, y0, y1);
-        case depth_func::equal: return fill_rows_sse2_any<depth_func::equal, HasDepth>(canvas, depth, f, depth_write, y0, y1);
-        case depth_func::greater:
-            return fill_rows_sse2_any<depth_func::greater, HasDepth>(canvas, depth, f, depth_write, y0, y1);
-        case depth_func::greater_equal:
-            return fill_rows_sse2_any<depth_func::greater_equal, HasDepth>(canvas, depth, f, depth_write, y0, y1);
-        case depth_func::not_equal:
-            return fill_rows_sse2_any<depth_func::not_equal, HasDepth>(canvas, depth, f, depth_write, y0, y1);
-        case depth_func::always: return fill_rows_sse2_any<depth_func::always, HasDepth>(canvas, depth, f, depth_write, y0, y1);
-    }
+    with_depth_test(test, [&](auto t) { fill_rows_sse2_any<t.value, HasDepth>(canvas, depth, f, depth_write, y0, y1); });
 }
 #endif
 

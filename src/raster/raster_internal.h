@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 
 #include "raster.h"
 #include "../simd_config.h"
@@ -242,6 +243,23 @@ inline bool depth_passes(depth_func test, Depth fragment, Depth stored) {
         case depth_func::always: return true;
     }
     return false;
+}
+
+// The kernels' templates on the depth test, one switch for all: calls
+// kernel(std::integral_constant<depth_func, T>{}) for test T, nothing for never.
+template <class Kernel>
+inline void with_depth_test(depth_func test, Kernel &&kernel) {
+    using D = depth_func;
+    switch (test) {
+        case D::never: return;
+        case D::less: return kernel(std::integral_constant<D, D::less>{});
+        case D::less_equal: return kernel(std::integral_constant<D, D::less_equal>{});
+        case D::equal: return kernel(std::integral_constant<D, D::equal>{});
+        case D::greater: return kernel(std::integral_constant<D, D::greater>{});
+        case D::greater_equal: return kernel(std::integral_constant<D, D::greater_equal>{});
+        case D::not_equal: return kernel(std::integral_constant<D, D::not_equal>{});
+        case D::always: return kernel(std::integral_constant<D, D::always>{});
+    }
 }
 
 using tiny3d::clamp01;  // math3d.h: NaN → 0, as the SIMD fills (maxps) do
