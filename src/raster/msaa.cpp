@@ -388,7 +388,7 @@ void fill_msaa_rows(sample_store &store, const msaa_triangle &f, const sample_pa
         return fill_rows_avx512(store, f, pat, test, depth_write, clear_colour, y0, y1);
 #endif
 #ifdef TINY3D_AVX2
-    if (f.narrow && kernel == msaa_kernel::avx2 && pat.count == 4)
+    if (f.narrow && kernel == msaa_kernel::avx2 && (pat.count == 4 || pat.count == 8 || pat.count == 16))
         return fill_rows_avx2(store, f, pat, test, depth_write, clear_colour, y0, y1);
 #endif
 #ifdef TINY3D_SSE2

@@ -54,8 +54,9 @@ inline std::int64_t sample_edge_offset(std::int64_t a, std::int64_t b, const sam
 const sample_pattern &pattern_of(int samples);
 
 // Which kernel fills and resolves the samples: the portable reference (64-bit edge values,
-// one sample at a time), SSE2 (32-bit edge values, four samples per register), AVX2 (SSE2,
-// but at 4× two pixels' 8 samples per register for narrow triangles) or AVX-512 (a pixel's
+// one sample at a time), SSE2 (32-bit edge values, four samples per register), AVX2 (for
+// narrow triangles two pixels' 8 samples per register at 4×, a pixel's 8 or 16 samples in
+// one or two registers at 8× and 16×; SSE2 for the others) or AVX-512 (a pixel's
 // 8 or 16 samples in one register; at 4× a 2 × 2 block of pixels' 16 samples, or for
 // triangles that are not narrow the SSE2 kernel's code compiled for AVX-512). The resolve
 // is SSE2's for all but the portable one. All give bit-identical samples and images; a

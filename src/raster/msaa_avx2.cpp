@@ -1,6 +1,6 @@
-// msaa_avx2.cpp — the multisample fill's AVX2 kernel (msaa_kernel::avx2): 4× on narrow
-// triangles for CPUs without AVX-512. Two pixels of a row per step, their 8 samples in one
-// 256-bit register (lane 4j + s: sample s of pixel j). Steps start at even columns, so the
+// msaa_avx2.cpp — the multisample fill's AVX2 kernels (msaa_kernel::avx2) for narrow
+// triangles on CPUs without AVX-512 (8× and 16×: fill_rows_pixels, below). 4×: two pixels
+// of a row per step, their 8 samples in one 256-bit register (lane 4j + s: sample s of pixel j). Steps start at even columns, so the
 // two pixels' samples are one whole, aligned 64-byte line of the tile (sample_store::
 // STRIDE_PIXELS): two 256-bit halves, each one pixel's 4 depths and 4 colours, regrouped
 // into the two pixels' depths and their colours by two lane permutes, and back. Coverage
@@ -129,11 +129,96 @@ void fill_rows_pairs(sample_store &store, const msaa_triangle &f, const sample_p
     }
 }
 
+// 8× and 16×: one pixel per step, its samples in G = S/8 registers of 8 (depths) and G of
+// colours, as the AVX-512 kernel does with one register and mask registers: coverage as the
+// sign bits of the stepped edge values' OR, the depth test a compare, the writes blends, no
+// branch for a pixel without a covered sample, the untouched samples selected away.
+template <int S, depth_func Test>
+void fill_rows_pixels(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, bool depth_write,
+                      float clear_colour, int y0, int y1) {
+    constexpr int G = S / 8;
+    // The edge offsets a/16·dx + b/16·dy per sample, in float: exact integers for a narrow
+    // triangle (|·| < 2^22); the depth offsets are the portable kernel's float operations.
+    __m256i d[3][G];
+    __m256 dz[G];
+    for (int g = 0; g < G; ++g) {
+        const __m256 ox = _mm256_loadu_ps(pat.fdx + 8 * g), oy = _mm256_loadu_ps(pat.fdy + 8 * g);
+        for (int k = 0; k < 3; ++k)
+            d[k][g] = _mm256_cvtps_epi32(_mm256_add_ps(_mm256_mul_ps(_mm256_set1_ps(static_cast<float>(f.a[k])), ox),
+                                                       _mm256_mul_ps(_mm256_set1_ps(static_cast<float>(f.b[k])), oy)));
+        dz[g] = _mm256_add_ps(_mm256_mul_ps(_mm256_set1_ps(f.zdx), ox), _mm256_mul_ps(_mm256_set1_ps(f.zdy), oy));
+    }
+    const int columns = f.max_x - f.min_x + 1;
+    const bool scan = columns <= SCAN_COLUMNS_AVX2;
+    edge_extremes off;  // (row spans only)
+    if (!scan)
+        for (int k = 0; k < 3; ++k) {
+            alignas(32) std::int32_t v[S];
+            for (int g = 0; g < G; ++g) _mm256_store_si256(reinterpret_cast<__m256i *>(v + 8 * g), d[k][g]);
+            off.lo[k] = *std::min_element(v, v + S);
+            off.hi[k] = *std::max_element(v, v + S);
+        }
+    const __m256i step0 = _mm256_set1_epi32(static_cast<std::int32_t>(f.a[0]));
+    const __m256i step1 = _mm256_set1_epi32(static_cast<std::int32_t>(f.a[1]));
+    const __m256i step2 = _mm256_set1_epi32(static_cast<std::int32_t>(f.a[2]));
+    const __m256 ones = _mm256_set1_ps(1.0f), clear = _mm256_set1_ps(clear_colour);
+    const __m256 write = depth_write ? _mm256_castsi256_ps(_mm256_set1_epi32(-1)) : _mm256_setzero_ps();
+    // Depth in lane 0, intensity in lane 1: both planes' row value plus step · column in one
+    // multiply and add (the portable kernel's float operations, lane by lane).
+    const __m128 plane0 = _mm_setr_ps(f.z, f.i, 0.0f, 0.0f), plane_dy = _mm_setr_ps(f.zdy, f.idy, 0.0f, 0.0f);
+    const __m128 plane_dx = _mm_setr_ps(f.zdx, f.idx, 0.0f, 0.0f);
+    const __m128 one = _mm_set1_ps(1.0f), zero = _mm_setzero_ps();
+    for (int y = y0; y < y1; ++y) {
+        std::int32_t e[3];
+        int lo = 0, hi = columns - 1;
+        if (scan) {
+            for (int k = 0; k < 3; ++k) e[k] = static_cast<std::int32_t>(f.e[k] + f.b[k] * (y - f.min_y));
+        } else if (!off.row(f, y, e, lo, hi)) {
+            continue;
+        }
+        const __m128 plane_row = _mm_add_ps(plane0, _mm_mul_ps(plane_dy, _mm_set1_ps(static_cast<float>(y - f.min_y))));
+        __m256i b[3][G];
+        for (int k = 0; k < 3; ++k)
+            for (int g = 0; g < G; ++g)
+                b[k][g] = _mm256_add_epi32(_mm256_set1_epi32(e[k] + static_cast<std::int32_t>(f.a[k]) * lo), d[k][g]);
+        std::uint8_t *touched = store.touched_row(y) + f.min_x + lo;
+        float *p = store.pixel(f.min_x + lo, y);
+        __m128 column = _mm_set1_ps(static_cast<float>(lo));  // exactly (< 2^24)
+        for (int x = lo; x <= hi; ++x, p += 2 * S, ++touched, column = _mm_add_ps(column, one)) {
+            __m256 in[G];
+            int any = 0;
+            for (int g = 0; g < G; ++g) {
+                in[g] = _mm256_castsi256_ps(_mm256_or_si256(_mm256_or_si256(b[0][g], b[1][g]), b[2][g]));  // sign: out
+                any |= _mm256_movemask_ps(in[g]) ^ 0xFF;
+                b[0][g] = _mm256_add_epi32(b[0][g], step0), b[1][g] = _mm256_add_epi32(b[1][g], step1);
+                b[2][g] = _mm256_add_epi32(b[2][g], step2);
+            }
+            const __m128 at = _mm_add_ps(plane_row, _mm_mul_ps(plane_dx, column));
+            const __m256 shade = _mm256_broadcastss_ps(_mm_min_ps(_mm_max_ps(_mm_shuffle_ps(at, at, 0x55), zero), one));
+            const __m256 zc = _mm256_broadcastss_ps(at);
+            const __m256 held = _mm256_castsi256_ps(_mm256_set1_epi32(-static_cast<std::int32_t>(*touched)));
+            *touched = static_cast<std::uint8_t>(*touched | (any != 0));
+            for (int g = 0; g < G; ++g) {
+                const __m256 z = _mm256_add_ps(zc, dz[g]);
+                const __m256 stored = _mm256_blendv_ps(ones, _mm256_loadu_ps(p + 8 * g), held);
+                const __m256 colours = _mm256_blendv_ps(clear, _mm256_loadu_ps(p + S + 8 * g), held);
+                const __m256 pass = _mm256_andnot_ps(in[g], passing<Test>(z, stored));  // blendv reads the sign bits
+                _mm256_storeu_ps(p + 8 * g, _mm256_blendv_ps(stored, z, _mm256_and_ps(pass, write)));
+                _mm256_storeu_ps(p + S + 8 * g, _mm256_blendv_ps(colours, shade, pass));
+            }
+        }
+    }
+}
+
 }  // namespace
 
 void fill_rows_avx2(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
                     bool depth_write, float clear_colour, int y0, int y1) {
-    with_depth_test(test, [&](auto t) { fill_rows_pairs<t.value>(store, f, pat, depth_write, clear_colour, y0, y1); });
+    with_depth_test(test, [&](auto t) {
+        if (pat.count == 4) fill_rows_pairs<t.value>(store, f, pat, depth_write, clear_colour, y0, y1);
+        else if (pat.count == 8) fill_rows_pixels<8, t.value>(store, f, pat, depth_write, clear_colour, y0, y1);
+        else fill_rows_pixels<16, t.value>(store, f, pat, depth_write, clear_colour, y0, y1);
+    });
 }
 
 }  // namespace tiny3d::detail

@@ -72,7 +72,7 @@ inline void sample_offsets_exact(const msaa_triangle &f, const sample_pattern &p
 
 #ifdef TINY3D_AVX2
 // The AVX2 kernel (msaa_kernel::avx2; only on CPUs best_msaa_kernel() reports it for, or
-// avx512): f.narrow, pat.count = 4, rows [y0, y1) already clamped to f's. The same integer
+// avx512): f.narrow, pat.count = 4, 8 or 16, rows [y0, y1) already clamped to f's. The same integer
 // tests and float operations as the portable kernel.
 void fill_rows_avx2(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
                     bool depth_write, float clear_colour, int y0, int y1);
