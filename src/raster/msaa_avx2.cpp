@@ -1,13 +1,13 @@
 // msaa_avx2.cpp — the multisample fill's AVX2 kernels (msaa_kernel::avx2) for narrow
 // triangles on CPUs without AVX-512 (8× and 16×: fill_rows_pixels, below). 4×: two pixels
-// of a row per step, their 8 samples in one 256-bit register (lane 4j + s: sample s of pixel j). Steps start at even columns, so the
-// two pixels' samples are one whole, aligned 64-byte line of the tile (sample_store::
-// STRIDE_PIXELS): two 256-bit halves, each one pixel's 4 depths and 4 colours, regrouped
-// into the two pixels' depths and their colours by two lane permutes, and back. Coverage
-// (the sign bits of the three stepped edge values' OR, within the box's columns), the depth
-// test (a compare) and the writes (blends) take no branch, and neither does a step without
-// a covered sample (stored back as it was): the AVX-512 block kernel's scheme
-// (msaa_avx512.cpp), with 8 lanes and without mask registers.
+// of a row per step, their 8 samples in one 256-bit register (lane 4j + s: sample s of
+// pixel j). Steps start at even columns, so the two pixels' samples are one whole, aligned
+// 64-byte line of the tile (sample_store::STRIDE_PIXELS): two 256-bit halves, each one
+// pixel's 4 depths and 4 colours, regrouped into the two pixels' depths and their colours
+// by two lane permutes, and back. Coverage (the sign bits of the three stepped edge values'
+// OR, within the box's columns), the depth test (a compare) and the writes (blends) take no
+// branch, and neither does a step without a covered sample (stored back as it was): the
+// AVX-512 block kernel's scheme (msaa_avx512.cpp), with 8 lanes and without mask registers.
 //
 // Compiled for AVX2 inside the target region of avx2_region_open.inc; run only on CPUs that
 // have it (best_msaa_kernel). No FMA contraction: the portable kernel's float operations,
