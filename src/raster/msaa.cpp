@@ -260,26 +260,17 @@ void sample_store::initialise(float *pixel, float clear_colour) const {
 bool msaa_kernel_runs(msaa_kernel k) {
     switch (k) {
         case msaa_kernel::portable: return true;
-        case msaa_kernel::sse2:
-#ifdef TINY3D_SSE2
-            return true;
-#else
-            return false;
+#ifdef TINY3D_SSE2  // the AVX2 and AVX-512 kernels resolve, and fall back, with SSE2's
+        case msaa_kernel::sse2: return true;
+#ifdef TINY3D_AVX2
+        case msaa_kernel::avx2: return cpu_has_avx2();
 #endif
-        case msaa_kernel::avx2:
-#if defined(TINY3D_SSE2) && defined(TINY3D_AVX2)
-            return cpu_has_avx2();
-#else
-            return false;
+#ifdef TINY3D_AVX512
+        case msaa_kernel::avx512: return cpu_has_avx512();
 #endif
-        case msaa_kernel::avx512:
-#if defined(TINY3D_SSE2) && defined(TINY3D_AVX512)
-            return cpu_has_avx512();
-#else
-            return false;
 #endif
+        default: return false;
     }
-    return false;
 }
 
 msaa_kernel best_msaa_kernel() {
