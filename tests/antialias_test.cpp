@@ -155,6 +155,44 @@ TEST(msaa_images_do_not_depend_on_the_thread_count) {
     }
 }
 
+// The instruction set of the multisampled frames changes the speed only: every one this CPU
+// runs (use_multisample_simd) draws the same image as the portable kernel, in every mode, at
+// 1 and 2 threads; the setting is refused during a frame and for what the CPU lacks.
+TEST(msaa_images_do_not_depend_on_the_instruction_set) {
+    constexpr int S = 96;
+    const small_scene scene = make_small_scene(make_torus_knot(2, 3, 60, 8), 0.5f);
+    render_context probe(1);
+    CHECK(probe.multisample_simd_in_use() == best_multisample_simd());
+    CHECK(probe.use_multisample_simd(multisample_simd::portable));
+    CHECK(probe.multisample_simd_in_use() == multisample_simd::portable);
+    int runs = 0;
+    for (multisample_simd simd : {multisample_simd::sse2, multisample_simd::avx2, multisample_simd::avx512})
+        runs += probe.use_multisample_simd(simd);
+    CHECK(runs >= (best_multisample_simd() == multisample_simd::portable ? 0 : 1));
+    canvas_ptr frame = make_canvas(8, 8).value();
+    CHECK(probe.begin_frame(*frame, 0.0f, sample_count::x4).ok());
+    const multisample_simd during = probe.multisample_simd_in_use();
+    CHECK(!probe.use_multisample_simd(multisample_simd::portable));
+    CHECK(probe.multisample_simd_in_use() == during);
+    probe.end_frame();
+    for (sample_count n : {sample_count::x4, sample_count::x8, sample_count::x16})
+        for (int threads : {1, 2}) {
+            canvas_ptr reference = make_canvas(S, S).value();
+            render_context portable(threads);
+            CHECK(portable.use_multisample_simd(multisample_simd::portable));
+            CHECK(draw_frame(portable, *reference, scene.mesh, scene.params, 0.2f, n).ok());
+            for (multisample_simd simd : {multisample_simd::sse2, multisample_simd::avx2, multisample_simd::avx512}) {
+                render_context ctx(threads);
+                if (!ctx.use_multisample_simd(simd)) continue;
+                canvas_ptr c = make_canvas(S, S).value();
+                CHECK(draw_frame(ctx, *c, scene.mesh, scene.params, 0.2f, n).ok());
+                int differ = 0;
+                for (int i = 0; i < S * S; ++i) differ += c->data[i] != reference->data[i];
+                CHECK_EQ(differ, 0);
+            }
+        }
+}
+
 // Several draws in one frame (Gouraud sphere, a textured Phong quad through it, a clipped
 // quad crossing the near plane, a translucent torus knot): every mode, 1, 2 and 3 threads.
 TEST(msaa_multi_draw_frames_do_not_depend_on_the_thread_count) {

@@ -407,6 +407,8 @@ void screen_gradient(const screen_vertex v[3], const float f[3], float &fdx, flo
 
 namespace tiny3d {
 
+multisample_simd best_multisample_simd() { return detail::best_msaa_kernel(); }
+
 result<sample_count> parse_sample_count(const std::string &text) {
     std::string t = text;
     if (!t.empty() && (t.back() == 'x' || t.back() == 'X')) t.pop_back();

@@ -355,6 +355,13 @@ render_context::~render_context() = default;
 int render_context::threads() const { return impl_->pool.size(); }
 const zbuffer &render_context::depth() const { return impl_->depth; }
 const frame_stats &render_context::stats() const { return impl_->stats; }
+multisample_simd render_context::multisample_simd_in_use() const { return impl_->kernel; }
+
+bool render_context::use_multisample_simd(multisample_simd simd) {
+    if (impl_->target || !detail::msaa_kernel_runs(simd)) return false;
+    impl_->kernel = simd;
+    return true;
+}
 
 status render_context::begin_frame(canvas_t &target, float clear_intensity, sample_count samples) {
     impl &s = *impl_;

@@ -74,7 +74,7 @@ struct render_context::impl {
     // band by band into a per-thread tile of samples and resolves it.
     const detail::sample_pattern *pattern = &detail::pattern_of(1);
     detail::sample_store tiles[detail::MAX_THREADS];
-    const detail::msaa_kernel kernel = detail::best_msaa_kernel();  // fills and resolves the tiles
+    detail::msaa_kernel kernel = detail::best_msaa_kernel();  // fills and resolves the tiles (use_multisample_simd)
     bool segments_hold_frame = false;  // the segments already hold this frame's earlier draws
     std::atomic<int> next_band{0};     // end_frame's band queue
     bool multisampled() const { return pattern->count > 1; }

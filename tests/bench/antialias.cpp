@@ -2,7 +2,9 @@
 // (Scene S protocol, documentation/benchmarks.md: 1024², camera (0, 0, 3), fov 45°, Gouraud Lambert, depth LESS,
 // back-face culling, mesh turned 1° about +y per frame, 5 warm-up + 50 timed frames) at
 // icosphere level 6 and the 3,696-triangle torus knot, rows 1x, 4x, 8x, 16x (samples per
-// pixel) with one and two threads, and `analytic` (exact area coverage, a prototype in
+// pixel) with one and two threads (and for Scene S, one thread, 4x-16x with each other
+// multisample instruction set the CPU runs: `4x AVX2 kernel`, `4x SSE2 kernel` …), and
+// `analytic` (exact area coverage, a prototype in
 // common/analytic_coverage.h; one thread); and a textured plane at a grazing angle, bilinear
 // against trilinear.
 //
@@ -75,8 +77,10 @@ bench::timing time_turning(scene &s, int frames, Draw &&draw) {
     return t;
 }
 
-bench::timing time_frames(scene &s, int threads, sample_count n, canvas_t &canvas, int frames) {
+bench::timing time_frames(scene &s, int threads, sample_count n, canvas_t &canvas, int frames,
+                          multisample_simd simd = best_multisample_simd()) {
     render_context ctx(threads);
+    ctx.use_multisample_simd(simd);
     return time_turning(s, frames, [&] {
         if (!ctx.begin_frame(canvas, 0.0f, n).ok()) return;
         ctx.draw(s.mesh, s.params);
@@ -193,6 +197,25 @@ int main(int argc, char **argv) {
                             e.edge_max, "grey levels",
                             same_image(*one, *two) ? "image identical to 1 thread" : "IMAGE DIFFERS FROM 1 THREAD",
                             w.name + ", 2 threads, 1x-16x"});
+        }
+        // Scene S's multisampled frames with each other instruction set this CPU runs but the
+        // best (one thread; the same image, checked): what a CPU without it gets from its own.
+        for (const auto &[simd, label] : {std::pair{multisample_simd::avx2, "AVX2"}, std::pair{multisample_simd::sse2, "SSE2"}}) {
+            render_context probe(1);
+            if (w.name != "Scene S L6" || simd == best_multisample_simd() || !probe.use_multisample_simd(simd)) continue;
+            for (sample_count n : MODES) {
+                if (n == sample_count::x1) continue;
+                const std::string mode = std::to_string(static_cast<int>(n)) + "x";
+                time_frames(s, 1, n, *one, 1);  // the best kernel's image at angle 0
+                canvas_ptr best = make_canvas(SIDE, SIDE).value();
+                std::copy(one->data, one->data + static_cast<long>(SIDE) * SIDE, best->data);
+                const bench::timing t = time_frames(s, 1, n, *one, frames, simd);
+                const image_error e = error_against(*one, *reference, coverage.get());
+                rows.push_back({"antialias", w.name + " " + mode + " " + label + " kernel 1 thread", "other", "ms/frame", t,
+                                e.edge_mean, e.edge_max, "grey levels",
+                                same_image(*one, *best) ? "image identical to the best kernel's" : "IMAGE DIFFERS FROM THE BEST KERNEL'S",
+                                w.name + ", 1 thread, " + label + " kernel, 4x-16x", mode});
+            }
         }
         // The analytic-coverage prototype (common/analytic_coverage.h): exact area per pixel,
         // front to back with saturating coverage; one thread.
