@@ -174,7 +174,7 @@ void fill_rows(sample_store &store, const msaa_triangle &f, const sample_pattern
             // row of a small triangle has too few pixels for the hardware prefetcher (−2 % for
             // the 8× and 16× frames of Scene S).
             if (y + 1 < y1 && first == lo) {
-                const char *below = reinterpret_cast<const char *>(p + static_cast<std::size_t>(store.width()) * 2 * S);
+                const char *below = reinterpret_cast<const char *>(p + static_cast<std::size_t>(store.stride()) * 2 * S);
                 for (int line = 0; line < 2 * S * 4; line += 64) _mm_prefetch(below + line, _MM_HINT_T0);
             }
             __m128 column = _mm_set1_ps(static_cast<float>(first));  // exactly (< 2^24)
