@@ -36,13 +36,6 @@ sample_pattern make_pattern(std::initializer_list<std::pair<int, int>> offsets, 
         p.min_dy = std::min(p.min_dy, y), p.max_dy = std::max(p.max_dy, y);
         ++s;
     }
-    if (p.count == 4)
-        for (int lane = 0; lane < 16; ++lane) {
-            const int q = lane / 4, sample = lane % 4;
-            p.lane_dx[lane] = p.fdx[sample], p.lane_dy[lane] = p.fdy[sample];
-            p.block_x[lane] = static_cast<float>(q % 2) + p.fdx[sample];
-            p.block_y[lane] = static_cast<float>(q / 2) + p.fdy[sample];
-        }
     return p;
 }
 

@@ -35,11 +35,6 @@ struct sample_pattern {
     std::int16_t dx[MSAA_MAX_SAMPLES] = {}, dy[MSAA_MAX_SAMPLES] = {};
     alignas(16) float fdx[MSAA_MAX_SAMPLES] = {}, fdy[MSAA_MAX_SAMPLES] = {};  // dx/2^bits, dy/2^bits (px), exact
     int min_dx = 0, max_dx = 0, min_dy = 0, max_dy = 0;  // offsets' bounds (1/2^bits px)
-    // 4 samples only: the samples of a 2 × 2 block of pixels, lane 4q + s for sample s of pixel
-    // q = 2r + j (column j, row r of the block), as offsets from the centre of pixel 0 (block_x
-    // = j + fdx[s], block_y = r + fdy[s]) and from their own pixel's (lane_dx = fdx[s], lane_dy
-    // = fdy[s]), in px, exact: the AVX-512 4× kernel's constants.
-    alignas(64) float block_x[16] = {}, block_y[16] = {}, lane_dx[16] = {}, lane_dy[16] = {};
     std::int64_t one() const { return std::int64_t{1} << bits; }  // sub-pixel units per pixel
 };
 

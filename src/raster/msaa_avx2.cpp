@@ -49,24 +49,26 @@ template <depth_func Test>
 void fill_rows_pairs(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, bool depth_write,
                      float clear_colour, int y0, int y1) {
     constexpr int S = 4;
-    // Lanes 0..7 of the pattern's 2 × 2 block constants are the block's first row: the edge
-    // offsets a·(j + dx/16) + b·(dy/16) are integers below 2^21 for a narrow triangle, so
-    // the float products and sum are exact; the depth offsets are the portable kernel's.
-    const __m256 bx = _mm256_load_ps(pat.block_x), by = _mm256_load_ps(pat.block_y);
-    const __m256 ox = _mm256_load_ps(pat.lane_dx), oy = _mm256_load_ps(pat.lane_dy);
+    // Lane 4j + s: sample s's offset from its pixel's centre (ox, oy: the pattern's four,
+    // once per pixel) and from pixel 0's (bx = j + dx/16, exact). The edge offsets
+    // a·bx + b·oy are integers below 2^21 for a narrow triangle, so the float products and
+    // sum are exact; the depth offsets are the portable kernel's.
+    const __m256i lane_column = _mm256_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1);
+    const __m256 ox = _mm256_broadcast_ps(reinterpret_cast<const __m128 *>(pat.fdx));
+    const __m256 oy = _mm256_broadcast_ps(reinterpret_cast<const __m128 *>(pat.fdy));
+    const __m256 bx = _mm256_add_ps(ox, _mm256_cvtepi32_ps(lane_column));
     const int columns = f.max_x - f.min_x + 1;
     const bool scan = columns <= SCAN_COLUMNS_AVX2;
-    edge_extremes off;  // (row spans only) the pattern's own offsets
+    edge_extremes off;  // (row spans only) over pixel 0's lanes: the pattern's own offsets
     __m256i d[3];
     for (int k = 0; k < 3; ++k) {
         d[k] = _mm256_cvtps_epi32(_mm256_add_ps(_mm256_mul_ps(_mm256_set1_ps(static_cast<float>(f.a[k])), bx),
-                                                _mm256_mul_ps(_mm256_set1_ps(static_cast<float>(f.b[k])), by)));
+                                                _mm256_mul_ps(_mm256_set1_ps(static_cast<float>(f.b[k])), oy)));
         if (scan) continue;
-        off.lo[k] = INT64_MAX, off.hi[k] = INT64_MIN;
-        for (int s = 0; s < S; ++s) {
-            const std::int64_t v = sample_edge_offset(f.a[k], f.b[k], pat, s);
-            off.lo[k] = std::min(off.lo[k], v), off.hi[k] = std::max(off.hi[k], v);
-        }
+        alignas(32) std::int32_t v[8];
+        _mm256_store_si256(reinterpret_cast<__m256i *>(v), d[k]);
+        off.lo[k] = *std::min_element(v, v + S);
+        off.hi[k] = *std::max_element(v, v + S);
     }
     const __m256 dz = _mm256_add_ps(_mm256_mul_ps(_mm256_set1_ps(f.zdx), ox), _mm256_mul_ps(_mm256_set1_ps(f.zdy), oy));
     const __m256i step0 = _mm256_set1_epi32(static_cast<std::int32_t>(2 * f.a[0]));
@@ -76,7 +78,6 @@ void fill_rows_pairs(sample_store &store, const msaa_triangle &f, const sample_p
     const __m256 zdx = _mm256_set1_ps(f.zdx), idx = _mm256_set1_ps(f.idx);
     const __m256 write = depth_write ? _mm256_castsi256_ps(_mm256_set1_epi32(-1)) : zero;
     const __m256i two_columns = _mm256_set1_epi32(2), minus_one = _mm256_set1_epi32(-1);
-    const __m256i lane_column = _mm256_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1);
     const __m256i past_last = _mm256_set1_epi32(columns);
     // Touched bytes (pixel j: byte j) → each repeated in its pixel's four lanes.
     const __m128i spread = _mm_setr_epi8(0, 0, 0, 0, 1, 1, 1, 1, -1, -1, -1, -1, -1, -1, -1, -1);

@@ -243,12 +243,16 @@ void fill_rows_blocks(sample_store &store, const msaa_triangle &f, const sample_
                       float clear_colour, int y0, int y1) {
     constexpr int S = 4;
     using V = samples<16>;
-    // The edge offsets a·(j + dx/16) + b·(r + dy/16) = −Δy·(16j + dx) + Δx·(16r + dy) are
-    // integers below 2^22 (f.narrow: |a|, |b| < 2^19), so the float products and the sum are
-    // exact; the depth offsets are the portable kernel's float operations (sample s alone:
-    // the column and row are in the planes' steps).
-    const __m512 bx = _mm512_load_ps(pat.block_x), by = _mm512_load_ps(pat.block_y);
-    const __m512 ox = _mm512_load_ps(pat.lane_dx), oy = _mm512_load_ps(pat.lane_dy);
+    // Lane 4q + s: sample s's offset from its pixel's centre (ox, oy: the pattern's four,
+    // once per pixel) and from pixel 0's (bx = j + dx/16, by = r + dy/16, exact). The edge
+    // offsets a·bx + b·by = −Δy·(16j + dx) + Δx·(16r + dy) are integers below 2^22
+    // (f.narrow: |a|, |b| < 2^19), so the float products and the sum are exact; the depth
+    // offsets are the portable kernel's float operations (sample s alone: the column and row
+    // are in the planes' steps).
+    const __m512i lane_column = _mm512_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1, 0, 0, 0, 0, 1, 1, 1, 1);
+    const __m512i lane_row = _mm512_setr_epi32(0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 1, 1, 1);
+    const __m512 ox = _mm512_broadcast_f32x4(_mm_load_ps(pat.fdx)), oy = _mm512_broadcast_f32x4(_mm_load_ps(pat.fdy));
+    const __m512 bx = V::add(ox, _mm512_cvtepi32_ps(lane_column)), by = V::add(oy, _mm512_cvtepi32_ps(lane_row));
     const int columns = f.max_x - f.min_x + 1;
     const bool scan = columns <= SCAN_COLUMNS_AVX512;
     edge_extremes off;  // (row spans only) over pixel 0's lanes: the pattern's own offsets
@@ -266,8 +270,6 @@ void fill_rows_blocks(sample_store &store, const msaa_triangle &f, const sample_
     const __m512 zdx = V::set(f.zdx), idx = V::set(f.idx), zdy = V::set(f.zdy), idy = V::set(f.idy);
     const __m512 z0 = V::set(f.z), i0 = V::set(f.i);
     const __m512i two_columns = _mm512_set1_epi32(2);
-    const __m512i lane_column = _mm512_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1, 0, 0, 0, 0, 1, 1, 1, 1);
-    const __m512i lane_row = _mm512_setr_epi32(0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 1, 1, 1);
     const __m512i last_column = _mm512_set1_epi32(f.max_x - f.min_x);
     const __m512i to_depth = block::depth_lanes(), to_colour = block::colour_lanes();
     const __m512i to_row0 = block::row0_lanes(), to_row1 = block::row1_lanes();
