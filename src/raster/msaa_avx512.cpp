@@ -103,13 +103,13 @@ inline typename samples<S>::mask passing(typename samples<S>::mask in, typename 
     else return in;
 }
 
-// S = 8 or 16 samples, one register per pixel's depths and one per its colours.
 // Narrow triangles whose boxes are at most this many columns wide are walked whole, every
 // pixel of the box, without the row spans' divisions (most of Scene S's triangles: at 16×
 // 10.1 → 8.9 ms, 8× 9.5 → 7.6; the torus knot's larger triangles ±4 %); the others row span
 // by row span. The 4× block kernel likewise.
 constexpr int SCAN_COLUMNS_AVX512 = 16;
 
+// S = 8 or 16 samples, one register per pixel's depths and one per its colours.
 template <int S, depth_func Test>
 void fill_rows(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, bool depth_write,
                float clear_colour, int y0, int y1) {
@@ -339,31 +339,16 @@ void fill_rows_blocks(sample_store &store, const msaa_triangle &f, const sample_
     }
 }
 
-template <depth_func Test>
-void fill_rows_4(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, bool depth_write,
-                 float clear_colour, int y0, int y1) {
-    if (f.narrow) return fill_rows_blocks<Test>(store, f, pat, depth_write, clear_colour, y0, y1);
-    fill_rows_sse2<4, Test>(store, f, pat, depth_write, clear_colour, y0, y1);
-}
-
-void fill_rows_4_dispatch(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
-                          bool depth_write, float clear_colour, int y0, int y1) {
-    with_depth_test(test, [&](auto t) { fill_rows_4<t.value>(store, f, pat, depth_write, clear_colour, y0, y1); });
-}
-
-template <int S>
-void fill_rows_dispatch(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
-                        bool depth_write, float clear_colour, int y0, int y1) {
-    with_depth_test(test, [&](auto t) { fill_rows<S, t.value>(store, f, pat, depth_write, clear_colour, y0, y1); });
-}
-
 }  // namespace
 
 void fill_rows_avx512(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
                       bool depth_write, float clear_colour, int y0, int y1) {
-    if (pat.count == 4) return fill_rows_4_dispatch(store, f, pat, test, depth_write, clear_colour, y0, y1);
-    if (pat.count == 16) return fill_rows_dispatch<16>(store, f, pat, test, depth_write, clear_colour, y0, y1);
-    return fill_rows_dispatch<8>(store, f, pat, test, depth_write, clear_colour, y0, y1);
+    with_depth_test(test, [&](auto t) {
+        if (pat.count == 4 && f.narrow) fill_rows_blocks<t.value>(store, f, pat, depth_write, clear_colour, y0, y1);
+        else if (pat.count == 4) fill_rows_sse2<4, t.value>(store, f, pat, depth_write, clear_colour, y0, y1);
+        else if (pat.count == 16) fill_rows<16, t.value>(store, f, pat, depth_write, clear_colour, y0, y1);
+        else fill_rows<8, t.value>(store, f, pat, depth_write, clear_colour, y0, y1);
+    });
 }
 
 }  // namespace tiny3d::detail
