@@ -239,10 +239,7 @@ TEST(msaa_multi_draw_frames_do_not_depend_on_the_thread_count) {
     }
 }
 
-// No allocation per frame in steady state, multisampled frames included: after one frame
-// of each mode (the tiles and triangle lists grow to the largest), frames cycling through
-// every mode with several draws (textured, Phong, translucent) allocate nothing.
-// The sample store's layout the AVX-512 4× kernel relies on: rows padded to a multiple of
+// The sample store's layout the AVX2 and AVX-512 4× kernels rely on: rows padded to a multiple of
 // STRIDE_PIXELS and every row's first pixel on a 64-byte boundary (so a pair of pixels from
 // an even column is one aligned 64-byte line at 4 samples), pixels contiguous and disjoint,
 // across resizes that shrink and grow the width.
@@ -264,6 +261,9 @@ TEST(msaa_sample_store_rows_are_padded_and_aligned) {
         }
 }
 
+// No allocation per frame in steady state, multisampled frames included: after one frame
+// of each mode (the tiles and triangle lists grow to the largest), frames cycling through
+// every mode with several draws (textured, Phong, translucent) allocate nothing.
 TEST(msaa_frames_allocate_nothing_in_steady_state) {
     constexpr int S = 64;
     texture grey;

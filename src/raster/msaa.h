@@ -77,11 +77,11 @@ public:
     int width() const { return width_; }
     // Makes the tile rows [y0, y1) (y1 − y0 ≤ rows of resize), every pixel untouched.
     void start(int y0, int y1);
-    // Rows are STRIDE_PIXELS-aligned (stride() ≥ width(), the pixels past the width are
-    // padding no resolve reads) and the samples start 64-byte aligned, so a group of four
-    // pixels from a column that is a multiple of 4 is two whole, aligned 64-byte lines at 4
-    // samples (the AVX-512 4× kernel's unit).
-    static constexpr int STRIDE_PIXELS = 4;
+    // Rows are padded to a multiple of STRIDE_PIXELS (stride() ≥ width(); the pixels past
+    // the width are padding no resolve reads) and the samples start 64-byte aligned, so at 4
+    // samples the pair of pixels from any even column, the last one included, is one whole,
+    // aligned 64-byte line (the AVX2 and AVX-512 4× kernels' unit).
+    static constexpr int STRIDE_PIXELS = 2;
     int stride() const { return stride_; }
     float *pixel(int x, int y) { return base_ + (static_cast<std::size_t>(y - origin_) * stride_ + x) * 2 * samples_; }
     std::uint8_t *touched_row(int y) { return touched_.data() + static_cast<std::size_t>(y - origin_) * stride_; }
