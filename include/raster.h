@@ -342,18 +342,27 @@ enum class sample_count : int { x1 = 1, x4 = 4, x8 = 8, x16 = 16 };
 // otherwise (for command lines).
 result<sample_count> parse_sample_count(const std::string &text);
 
-// The instruction sets the multisampled frames (x4, x8, x16) can use. Every one gives the
-// same samples and images, bit for bit (tests/antialias_test.cpp compares each this CPU
-// runs with the portable one); they differ in speed only (documentation/antialias.md).
-enum class multisample_simd {
+// The instruction sets a render context's triangle fills can use.
+//  Multisampled frames (x4, x8, x16): every one gives the same samples and images, bit for
+//    bit (tests/antialias_test.cpp compares each this CPU runs with the portable one).
+//  1-sample frames: sse2 and avx2 run the SSE2 kernels (there is no AVX2 one), avx512 the
+//    AVX-512 kernel for triangles at most 16 px wide and SSE2's for the others; these give
+//    the same pixels, bit for bit (tests/raster_rules_test.cpp). The portable kernel decides
+//    the same coverage but may differ from them in the last bits of depth and intensity.
+// They differ in speed (documentation/antialias.md, documentation/raster.md).
+enum class raster_simd {
     portable,  // plain C++, 64-bit edge values, one sample at a time
     sse2,      // four samples per register (every x86-64 CPU)
-    avx2,      // 4×: two pixels per register, 8×/16×: a pixel per one or two (AVX2)
-    avx512     // 4×: a 2 × 2 block per register, 8×/16×: a pixel per register (AVX-512 F/VL/DQ/BW)
+    avx2,      // 4×: two pixels per register, 8×/16×: a pixel per one or two (AVX2); 1×: as sse2
+    avx512     // 4×: a 2 × 2 block per register, 8×/16×: a pixel per register, 1×: a row of a narrow
+               // triangle per register (AVX-512 F/VL/DQ/BW)
 };
 // The best of them this CPU runs (CPUID, read by the compiler's runtime); what a render
 // context starts with.
-multisample_simd best_multisample_simd();
+raster_simd best_raster_simd();
+// The names these had when they chose the multisampled frames' kernels only.
+using multisample_simd = raster_simd;
+inline multisample_simd best_multisample_simd() { return best_raster_simd(); }
 
 // Owns every reusable buffer (depth, transformed vertices, triangle setups, the
 // translucent queue) and a worker pool of threads − 1 threads created once. A frame:
@@ -389,11 +398,13 @@ public:
     void end_frame();
     const zbuffer &depth() const;
     const frame_stats &stats() const;
-    // The instruction set of the multisampled frames (best_multisample_simd() unless
-    // changed; the image does not depend on it). use_multisample_simd returns false,
-    // changing nothing, for one this CPU does not run, or between begin_frame and end_frame.
-    multisample_simd multisample_simd_in_use() const;
-    bool use_multisample_simd(multisample_simd simd);
+    // The instruction set of the fills, in every frame (raster_simd above; best_raster_simd()
+    // unless changed). use_simd returns false, changing nothing, for one this CPU does not
+    // run, or between begin_frame and end_frame.
+    raster_simd simd_in_use() const;
+    bool use_simd(raster_simd simd);
+    multisample_simd multisample_simd_in_use() const { return simd_in_use(); }  // the older names
+    bool use_multisample_simd(multisample_simd simd) { return use_simd(simd); }
 
 private:
     struct impl;

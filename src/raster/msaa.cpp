@@ -250,28 +250,6 @@ void sample_store::initialise(float *pixel, float clear_colour) const {
     std::fill(pixel + samples_, pixel + 2 * samples_, clear_colour);
 }
 
-bool msaa_kernel_runs(msaa_kernel k) {
-    switch (k) {
-        case msaa_kernel::portable: return true;
-#ifdef TINY3D_SSE2  // the AVX2 and AVX-512 kernels resolve, and fall back, with SSE2's
-        case msaa_kernel::sse2: return true;
-#ifdef TINY3D_AVX2
-        case msaa_kernel::avx2: return cpu_has_avx2();
-#endif
-#ifdef TINY3D_AVX512
-        case msaa_kernel::avx512: return cpu_has_avx512();
-#endif
-#endif
-        default: return false;
-    }
-}
-
-msaa_kernel best_msaa_kernel() {
-    for (msaa_kernel k : {msaa_kernel::avx512, msaa_kernel::avx2, msaa_kernel::sse2})
-        if (msaa_kernel_runs(k)) return k;
-    return msaa_kernel::portable;
-}
-
 void sample_store::resolve(canvas_t &canvas, zbuffer &depth, float clear_colour, [[maybe_unused]] msaa_kernel kernel) {
     const int S = samples_;
     const float inv = 1.0f / static_cast<float>(S);
@@ -400,7 +378,6 @@ void screen_gradient(const screen_vertex v[3], const float f[3], float &fdx, flo
 
 namespace tiny3d {
 
-multisample_simd best_multisample_simd() { return detail::best_msaa_kernel(); }
 
 result<sample_count> parse_sample_count(const std::string &text) {
     std::string t = text;

@@ -36,12 +36,13 @@ vec3_t world_of(const mat4_t &model, vec3_t p) {
     return {h.x, h.y, h.z};
 }
 
-// Whether every vertex index of `triangles` is < count. Runs on the caller's thread before the
-// workers start, so it is branch-free: no early exit, four indices per SSE2 compare.
-bool indices_below(const std::vector<std::array<std::uint32_t, 3>> &triangles, std::size_t count) {
-    if (count > std::numeric_limits<std::uint32_t>::max()) return true;
-    const std::uint32_t *index = triangles.empty() ? nullptr : triangles.front().data();
-    const std::size_t n = triangles.size() * 3;
+// Whether every vertex index of triangles [first, last) is < count. Branch-free: no early
+// exit, four indices per SSE2 compare.
+bool indices_below(const std::vector<std::array<std::uint32_t, 3>> &triangles, std::size_t first, std::size_t last,
+                   std::size_t count) {
+    if (count > std::numeric_limits<std::uint32_t>::max() || first >= last) return true;
+    const std::uint32_t *index = triangles[first].data();
+    const std::size_t n = (last - first) * 3;
     const std::uint32_t limit = static_cast<std::uint32_t>(count);
     std::size_t k = 0;
     std::uint32_t out_of_range = 0;
@@ -64,12 +65,11 @@ bool indices_below(const std::vector<std::array<std::uint32_t, 3>> &triangles, s
 
 }  // namespace
 
-// ---- phase 1b: triangles -------------------------------------------------------------------
+// ---- a piece's triangles ---------------------------------------------------------------------
 
-// One convex polygon (already inside the near/far planes and the guard band) as a fan;
-// `count`: add its triangles to the stats.
+// One convex polygon (already inside the near/far planes and the guard band) as a fan.
 void render_context::impl::emit(const clip_vertex *poly, int n, const draw_params &p, std::uint32_t state,
-                                bool generic, bool count, segment &out) {
+                                bool generic, piece &out) {
     const int width = target->width, height = target->height;
     const pixel_rect full{0, 0, width, height};
     for (int k = 1; k + 1 < n; ++k) {
@@ -84,12 +84,16 @@ void render_context::impl::emit(const clip_vertex *poly, int n, const draw_param
         if (!multisampled()) {
             const triangle_edges t = triangle_setup(v[0], v[1], v[2], full, p.cull);
             if (!t.valid) {
-                out.stats.culled_backface += count && t.culled;
+                out.stats.culled_backface += t.culled;
                 continue;
             }
-            out.stats.rasterized += count;
-            if (generic) out.generic.push_back(make_generic_triangle(v, c, state));
-            else add_fast(t, depth, shade, out);
+            out.stats.rasterized += 1;
+            if (!generic) {
+                add_fast(t, depth, shade, out);
+                continue;
+            }
+            out.generic.push_back(make_generic_triangle(v, c, state));
+            if (p.alpha >= 1.0f) bin_generic(t.min_y, t.max_y, out);
             continue;
         }
         // Multisampled: on the pattern's grid, as the unclipped triangles (setup_range); a
@@ -100,13 +104,17 @@ void render_context::impl::emit(const clip_vertex *poly, int n, const draw_param
         const std::int64_t area2 = usable ? detail::snapped_area2(X, Y) : 0;
         if (area2 == 0) continue;
         if (detail::facing_culled(area2, p.cull)) {
-            out.stats.culled_backface += count;
+            out.stats.culled_backface += 1;
             continue;
         }
-        out.stats.rasterized += count;
+        out.stats.rasterized += 1;
         if (generic) {
             out.generic.push_back(make_generic_triangle(v, c, state));
-            if (p.alpha >= 1.0f) bin_generic(X, Y, out);
+            if (p.alpha >= 1.0f) {
+                int x0, x1, y0, y1;
+                msaa_bounds(X, Y, *pattern, full, x0, x1, y0, y1);
+                if (x0 <= x1) bin_generic(y0, y1, out);
+            }
             continue;
         }
         detail::msaa_triangle f;
@@ -114,63 +122,72 @@ void render_context::impl::emit(const clip_vertex *poly, int n, const draw_param
     }
 }
 
-// Thread `thread` walks every triangle but sets up only the fast ones that reach its bands
-// (and every clipped or per-pixel-path one: rare, and cheap to repeat); each triangle is
-// counted in the stats by one thread only (thread 0, or for fast triangles the owner of the
-// first row's band). With clusters (`view` not null), whole chunks are decided first: a
-// chunk proven back-facing is skipped by every thread and counted by one; a chunk inside the
-// guard band is walked only by the threads drawing a band among its rows, and its culled
-// triangles are counted by the owner of its first row's band (thread 0 when it has no row
-// on the target) — the same counts as walking every triangle.
-void render_context::impl::setup(const raster_mesh &m, const draw_params &p, const vertex_job &job, std::uint32_t state,
-                                 int thread, const detail::cluster_view *view, segment &out) {
-    if (!view) {
-        transform(m, p, job, {nullptr, m.positions.size()}, out);
-        setup_range(m, p, state, job.generic, thread, thread == 0, 0, m.triangles.size(), out);
+// Piece `number` of the frame (piece k of the draw: number = plan.first + k) set up by thread
+// `thread` into the piece's lists and bins. With clusters (`view` not null) the piece is a
+// run of chunks: each is decided first — proven back-facing: skipped and counted as culled —
+// then the walked chunks' vertices are transformed one chunk at a time when they are fewer
+// than the mesh's (a vertex shared by two walked chunks twice), else every vertex at once
+// (meshes whose chunks are rarely skipped, drawn as one piece), and their triangles set up.
+void render_context::impl::set_up_piece(int thread, int number, const raster_mesh &m, const draw_params &p,
+                                        const vertex_job &job, std::uint32_t state, const cluster_view *view,
+                                        const draw_plan &plan) {
+    segment &seg = segments[thread];
+    piece &out = pieces[static_cast<std::size_t>(number)];
+    out.fast.clear();
+    out.msaa.clear();
+    out.wide.clear();
+    out.generic.clear();
+    if (out.bins.size() < static_cast<std::size_t>(bands.count)) out.bins.resize(bands.count);
+    for (int b = 0; b < bands.count; ++b) out.bins[b].clear();
+    out.stats = {};
+    // Its triangles' vertex indices first: one out of range, and the whole draw is dropped.
+    const std::vector<raster_cluster> *chunks = view ? &p.clusters->clusters() : nullptr;
+    const std::size_t units = chunks ? chunks->size() : m.triangles.size();
+    const std::size_t first = std::min(units, plan.size * static_cast<std::size_t>(number - plan.first));
+    const std::size_t last = std::min(units, first + plan.size);
+    if (first == last) return;
+    const std::size_t first_triangle = chunks ? (*chunks)[first].first : first;
+    const std::size_t last_triangle = chunks ? (*chunks)[last - 1].first + (*chunks)[last - 1].count : last;
+    if (!indices_below(m.triangles, first_triangle, last_triangle, m.positions.size())) {
+        counters.bad_indices.store(true, std::memory_order_relaxed);
         return;
     }
-    // First decide every chunk, then transform: the vertices of the walked chunks one chunk
-    // at a time when they are fewer than the mesh's (a vertex shared by two walked chunks is
-    // transformed twice), else every vertex at once (meshes whose chunks are rarely skipped).
-    const std::vector<raster_cluster> &chunks = p.clusters->clusters();
-    out.chunks.resize(chunks.size());
+    if (!view) {
+        if (!plan.shared_vertices) transform(m, p, job, {nullptr, m.positions.size()}, seg);
+        setup_range(m, p, state, job.generic, plan.shared_vertices ? segments[0] : seg, first, last, out);
+        return;
+    }
+    if (seg.walk.size() < plan.size) seg.walk.resize(plan.size);
     std::size_t walked_vertices = 0;
-    for (std::size_t k = 0; k < chunks.size(); ++k) {
-        const raster_cluster &c = chunks[k];
-        const detail::cluster_verdict v = detail::classify_cluster(*view, c);
-        const bool on_target = v.inside && v.row0 <= v.row1;
-        const int counter = on_target ? bands.owner[bands.of(v.row0)] : 0;
-        detail::chunk_walk &decision = out.chunks[k];
-        decision = {false, thread == counter};
-        if (v.back) {
-            if (decision.counts) {
-                out.stats.culled_backface += c.count;
-                out.stats.backface_by_cluster += c.count;
-            }
-            continue;
+    for (std::size_t k = first; k < last; ++k) {
+        const raster_cluster &c = (*chunks)[k];
+        const bool back = detail::classify_cluster(*view, c).back;
+        seg.walk[k - first] = !back;
+        if (back) {
+            out.stats.culled_backface += c.count;
+            out.stats.backface_by_cluster += c.count;
+        } else {
+            walked_vertices += c.vertex_count;
         }
-        decision.walk = !v.inside || decision.counts || (on_target && bands.draws_rows(thread, v.row0, v.row1));
-        if (decision.walk) walked_vertices += c.vertex_count;
     }
     const bool per_chunk = walked_vertices < m.positions.size();
-    if (!per_chunk) transform(m, p, job, {nullptr, m.positions.size()}, out);
+    if (!per_chunk) transform(m, p, job, {nullptr, m.positions.size()}, seg);
     const std::uint32_t *chunk_vertices = p.clusters->vertices().data();
-    for (std::size_t k = 0; k < chunks.size(); ++k) {
-        if (!out.chunks[k].walk) continue;
-        const raster_cluster &c = chunks[k];
-        if (per_chunk) transform(m, p, job, {chunk_vertices + c.vertex_first, c.vertex_count}, out);
-        setup_range(m, p, state, job.generic, thread, out.chunks[k].counts, c.first, c.first + c.count, out);
+    for (std::size_t k = first; k < last; ++k) {
+        if (!seg.walk[k - first]) continue;
+        const raster_cluster &c = (*chunks)[k];
+        if (per_chunk) transform(m, p, job, {chunk_vertices + c.vertex_first, c.vertex_count}, seg);
+        setup_range(m, p, state, job.generic, seg, c.first, c.first + c.count, out);
     }
 }
 
-// setup() for triangles [first, last); `counts_all`: this thread counts culled and clipped ones.
+// Triangles [first, last) of m, their vertices transformed in `from`, set up into `out`.
 void render_context::impl::setup_range(const raster_mesh &m, const draw_params &p, std::uint32_t state, bool generic,
-                                       int thread, bool counts_all, std::size_t first, std::size_t last,
-                                       segment &out) {
+                                       const segment &from, std::size_t first, std::size_t last, piece &out) {
     const bool flat = p.shade == shading::flat;
     const bool msaa = multisampled();
-    const std::vector<detail::xvertex> &vertices = out.vertices;
-    const std::vector<float> &vertex_attr = out.vertex_attr;
+    const detail::xvertex *vertices = from.vertices.data();
+    const float *vertex_attr = from.vertex_attr.data();
     const pixel_rect full{0, 0, target->width, target->height};
     const std::int64_t last_row = target->height - 1;
     for (std::size_t i = first; i < last; ++i) {
@@ -192,44 +209,41 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
             const std::int64_t area2 = detail::snapped_area2(X, Y);
             if (area2 == 0) continue;
             if (detail::facing_culled(area2, p.cull)) {
-                out.stats.culled_backface += counts_all;
+                out.stats.culled_backface += 1;
                 continue;
             }
-            // Candidate rows (pixel centres 16·row + 8 within the snapped y range): skip the
-            // triangle when this thread draws none of their bands.
-            std::int64_t row0 = std::max<std::int64_t>(
-                -((RASTER_SUBPIXEL_ONE / 2 - std::min({Y[0], Y[1], Y[2]})) >> RASTER_SUBPIXEL_BITS), 0);
-            std::int64_t row1 = std::min<std::int64_t>(
-                (std::max({Y[0], Y[1], Y[2]}) - RASTER_SUBPIXEL_ONE / 2) >> RASTER_SUBPIXEL_BITS, last_row);
-            if (msaa) {  // rows with a sample row in the y range
-                int r0, r1;
-                msaa_candidate_rows(std::min({Y[0], Y[1], Y[2]}), std::max({Y[0], Y[1], Y[2]}), *pattern,
-                                    static_cast<int>(last_row), r0, r1);
-                row0 = r0, row1 = r1;
-            }
-            if (row0 > row1 || !bands.draws_rows(thread, static_cast<int>(row0), static_cast<int>(row1))) continue;
-            const bool counts = bands.owner[bands.of(static_cast<int>(row0))] == thread;
             const float depth[3] = {a.depth, b.depth, c.depth};
             const float shade[3] = {flat ? flat_shade : a.shade, flat ? flat_shade : b.shade, flat ? flat_shade : c.shade};
-            if (msaa) {  // (no pixel centre inside is fine: samples may be)
-                out.stats.rasterized += counts;
+            if (msaa) {  // rows with a sample row in the y range (no pixel centre inside is fine: samples may be)
+                int row0, row1;
+                msaa_candidate_rows(std::min({Y[0], Y[1], Y[2]}), std::max({Y[0], Y[1], Y[2]}), *pattern,
+                                    static_cast<int>(last_row), row0, row1);
+                if (row0 > row1) continue;
+                out.stats.rasterized += 1;
                 detail::msaa_triangle f;
                 if (make_msaa_triangle(X, Y, area2, *pattern, full, depth, shade, f)) add_msaa(f, state, out);
                 continue;
             }
+            // Candidate rows (pixel centres 16·row + 8 within the snapped y range): none on
+            // the target, nothing to count.
+            const std::int64_t row0 = std::max<std::int64_t>(
+                -((RASTER_SUBPIXEL_ONE / 2 - std::min({Y[0], Y[1], Y[2]})) >> RASTER_SUBPIXEL_BITS), 0);
+            const std::int64_t row1 = std::min<std::int64_t>(
+                (std::max({Y[0], Y[1], Y[2]}) - RASTER_SUBPIXEL_ONE / 2) >> RASTER_SUBPIXEL_BITS, last_row);
+            if (row0 > row1) continue;
             // Set up in a local and appended when ready (set up in place at the list's end,
             // emplace_back() zeroed each entry first, out of line).
             detail::fast_triangle f;
             const detail::fast_setup verdict = detail::setup_fast_triangle(X, Y, area2, full, depth, shade, f);
             if (verdict == detail::fast_setup::ready) {
-                out.stats.rasterized += counts;
+                out.stats.rasterized += 1;
                 bin_fast(f, out);
                 continue;
             }
             if (verdict == detail::fast_setup::wide) {
                 const triangle_edges t = detail::triangle_setup_snapped(X, Y, full, p.cull);
                 if (!t.valid) continue;
-                out.stats.rasterized += counts;
+                out.stats.rasterized += 1;
                 add_fast(t, depth, shade, out);
             }
             continue;
@@ -237,24 +251,24 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
         clip_vertex in[3];
         for (int j = 0; j < 3; ++j) {
             const detail::xvertex &x = vertices[tri[j]];
-            in[j].position = out.clip[tri[j]];
+            in[j].position = from.clip[tri[j]];
             in[j].attr.fill(0.0f);
             if (generic)
                 for (int s = 0; s < ATTR_COUNT; ++s) in[j].attr[s] = vertex_attr[tri[j] * ATTR_COUNT + s];
             in[j].attr[ATTR_SHADE] = flat ? flat_shade : x.shade;
         }
         const unsigned planes = a.outcode | b.outcode | c.outcode;
-        if (planes) out.stats.clipped += counts_all;
+        if (planes) out.stats.clipped += 1;
         clip_vertex poly[CLIP_MAX_VERTICES];
         const int n = planes ? clip_polygon(in, 3, planes, guard, ATTR_COUNT, poly) : 3;
-        emit(planes ? poly : in, n, p, state, generic, counts_all, out);
+        emit(planes ? poly : in, n, p, state, generic, out);
     }
 }
 
 // ---- the steps of a draw -------------------------------------------------------------------
 
-// Every thread's buffers hold a transformed copy of every vertex (and the per-pixel path's
-// attributes when wanted).
+// Every thread's buffers can hold a transformed copy of every vertex (and the per-pixel
+// path's attributes when wanted).
 void render_context::impl::grow_segments(std::size_t vertex_count, bool generic) {
     for (int t = 0; t < pool.size(); ++t) {
         segment &seg = segments[t];
@@ -263,53 +277,90 @@ void render_context::impl::grow_segments(std::size_t vertex_count, bool generic)
     }
 }
 
-// One band: cleared if the frame has not been yet, then its fast triangles and (opaque)
-// per-pixel-path triangles from `from`, in submission order.
-void render_context::impl::draw_band(int band, const segment &from, const draw_params &p) {
+// The draw's pieces over `units` cluster chunks (clustered) or triangles: one on one thread;
+// on n threads PIECES_PER_THREAD · n (fewer for a small mesh), after the frame's earlier
+// draws' (multisampled frames keep them until end_frame).
+draw_plan render_context::impl::plan_draw(std::size_t units, bool clustered) {
+    const int n = pool.size();
+    draw_plan plan;
+    std::size_t count = 1;
+    if (n > 1) {
+        const std::size_t by_size = clustered ? units : (units + MIN_PIECE_TRIANGLES - 1) / MIN_PIECE_TRIANGLES;
+        count = std::clamp<std::size_t>(by_size, 1, static_cast<std::size_t>(PIECES_PER_THREAD * n));
+    }
+    plan.size = std::max<std::size_t>((units + count - 1) / count, 1);
+    plan.count = static_cast<int>(units == 0 ? 0 : (units + plan.size - 1) / plan.size);
+    plan.shared_vertices = !clustered && n > 1;
+    plan.first = piece_count;
+    piece_count += plan.count;
+    if (pieces.size() < static_cast<std::size_t>(piece_count)) pieces.resize(static_cast<std::size_t>(piece_count));
+    return plan;
+}
+
+// One band: cleared if the frame has not been yet, then the draw's triangles that reach it,
+// piece after piece (submission order).
+void render_context::impl::draw_band(int band, const draw_params &p, const draw_plan &plan) {
     const int y0 = bands.y0(band), y1 = bands.y0(band + 1);
     if (pending_clear) clear_band(band);
-    for (std::uint32_t index : from.bins[band]) {
-        const fast_triangle &f = from.fast[index];
-        fill_fast_rows(*target, &depth, f, f.wide >= 0 ? &from.wide[f.wide] : nullptr, p.depth, true, y0, y1);
+    const bool generic = p.shade == shading::phong || p.tex != nullptr || p.alpha < 1.0f;  // (translucent: no bins)
+    for (int number = plan.first; number < plan.first + plan.count; ++number) {
+        const piece &from = pieces[static_cast<std::size_t>(number)];
+        const std::vector<std::uint32_t> &bin = from.bins[band];
+        if (!generic) {
+            fill_fast_bin(*target, depth, from.fast.data(), from.wide.data(), bin.data(), bin.size(), p.depth, y0, y1,
+                          kernel);
+            continue;
+        }
+        for (std::uint32_t index : bin) draw_generic_rows(*target, depth, p, from.generic[index & ~GENERIC_BIN], y0, y1);
     }
-    if (p.alpha >= 1.0f)
-        for (const generic_triangle &g : from.generic) draw_generic_rows(*target, depth, p, g, y0, y1);
 }
 
-// What thread `thread` does in a draw's one parallel phase: transform every vertex (with
-// clusters: those of the chunks it walks) into its own segment (repeating that cheap pass
-// costs less than sharing vertex lines between cores), set up the triangles that reach its
-// bands, say so, and draw its bands, then help with the others' (draw_bands).
+// What thread `thread` does in a draw's one parallel phase (render_bands.h): [without
+// clusters, on several threads: transform its range of the vertices into segment 0, and wait
+// for the others'] set up pieces handed out one at a time; then, in a 1-sample frame, wait
+// until every piece is set up and draw bands handed out one at a time (multisampled frames
+// draw at end_frame).
 void render_context::impl::set_up_and_draw(int thread, const raster_mesh &m, const draw_params &p,
-                                           const vertex_job &job, std::uint32_t state, const cluster_view *view) {
-    segment &seg = segments[thread];
-    if (!segments_hold_frame) {
-        seg.fast.clear();
-        seg.msaa.clear();
-        seg.wide.clear();
-        seg.generic.clear();
-        for (int b = 0; b < bands.count; ++b) seg.bins[b].clear();
+                                           const vertex_job &job, std::uint32_t state, const cluster_view *view,
+                                           const draw_plan &plan) {
+    if (plan.shared_vertices) {
+        // Ranges of whole 64-vertex blocks: no two threads write one cache line of the arrays.
+        const int n = pool.size();
+        const std::size_t blocks = (m.positions.size() + 63) / 64;
+        const std::size_t first = std::min(m.positions.size(), blocks * thread / n * 64);
+        const std::size_t last = std::min(m.positions.size(), blocks * (thread + 1) / n * 64);
+        segment &shared = segments[0];
+        detail::transform_vertices(m, p, job, guard, {nullptr, last - first, static_cast<std::uint32_t>(first)},
+                                   shared.vertices.data(), shared.clip.data(), shared.vertex_attr.data());
+        counters.vertex_ranges_done.fetch_add(1, std::memory_order_release);
+        phase_counters::wait_for(counters.vertex_ranges_done, n);
     }
-    seg.stats = {};
-    setup(m, p, job, state, thread, view, seg);
+    counters.hand_out(counters.next_piece, plan.count, [&](int k) {
+        set_up_piece(thread, plan.first + k, m, p, job, state, view, plan);
+        counters.pieces_done.fetch_add(1, std::memory_order_release);
+    });
     if (multisampled()) return;  // drawn at end_frame
-    claims.mark_ready(thread);
-    draw_bands(bands, claims, thread, pool.size(), [&](int band, int owner) { draw_band(band, segments[owner], p); });
+    phase_counters::wait_for(counters.pieces_done, plan.count);
+    const bool drop = counters.bad_indices.load(std::memory_order_relaxed);
+    counters.hand_out(counters.next_band, bands.count, [&](int band) {
+        if (!drop) draw_band(band, p, plan);
+        else if (pending_clear) clear_band(band);
+    });
 }
 
-// Translucent triangles wait for end_frame: every segment holds all per-pixel-path
-// triangles, so segment 0's are taken (from `first`: multisampled frames keep earlier draws').
-void render_context::impl::queue_translucent(std::size_t first) {
-    for (std::size_t k = first; k < segments[0].generic.size(); ++k) {
-        generic_triangle g = segments[0].generic[k];
-        g.sequence = static_cast<std::uint32_t>(translucent.size());
-        translucent.push_back(g);
-    }
+// Translucent triangles wait for end_frame: the draw's per-pixel-path triangles, piece by
+// piece.
+void render_context::impl::queue_translucent(const draw_plan &plan) {
+    for (int number = plan.first; number < plan.first + plan.count; ++number)
+        for (generic_triangle g : pieces[static_cast<std::size_t>(number)].generic) {
+            g.sequence = static_cast<std::uint32_t>(translucent.size());
+            translucent.push_back(g);
+        }
 }
 
-void render_context::impl::gather_stats() {
-    for (int t = 0; t < pool.size(); ++t) {
-        const frame_stats &st = segments[t].stats;
+void render_context::impl::gather_stats(const draw_plan &plan) {
+    for (int number = plan.first; number < plan.first + plan.count; ++number) {
+        const frame_stats &st = pieces[static_cast<std::size_t>(number)].stats;
         stats.culled_backface += st.culled_backface;
         stats.clipped += st.clipped;
         stats.rasterized += st.rasterized;
@@ -326,7 +377,6 @@ void render_context::draw(const raster_mesh &mesh, const draw_params &params) {
         s.stats.culled_frustum += mesh.triangles.size();
         return;
     }
-    if (!indices_below(mesh.triangles, mesh.positions.size())) return;
     const bool generic = params.shade == shading::phong || params.tex != nullptr || params.alpha < 1.0f;
     const std::uint32_t state = static_cast<std::uint32_t>(s.states.size());
     s.states.push_back(params);
@@ -338,14 +388,18 @@ void render_context::draw(const raster_mesh &mesh, const draw_params &params) {
     if (use_clusters) view = make_cluster_view(mvp, s.target->width, s.target->height, s.guard, params.cull);
     const vertex_job job = make_vertex_job(params, mvp, generic, s.target->width, s.target->height, s.pattern->bits);
     s.grow_segments(mesh.positions.size(), generic);
-    s.claims.next_draw();
-    auto phase = [&](int t) { s.set_up_and_draw(t, mesh, params, job, state, use_clusters ? &view : nullptr); };
-    const std::size_t generic_first = s.segments_hold_frame ? s.segments[0].generic.size() : 0;
+    if (!s.multisampled()) s.piece_count = 0;  // (a multisampled frame keeps every draw's pieces)
+    const draw_plan plan = s.plan_draw(use_clusters ? clusters->clusters().size() : mesh.triangles.size(), use_clusters);
+    s.counters.reset();
+    auto phase = [&](int t) { s.set_up_and_draw(t, mesh, params, job, state, use_clusters ? &view : nullptr, plan); };
     s.pool.run(phase);
-    s.segments_hold_frame = s.multisampled();
-    if (params.alpha < 1.0f) s.queue_translucent(generic_first);
     s.pending_clear = false;
-    s.gather_stats();
+    if (s.counters.bad_indices.load(std::memory_order_relaxed)) {  // an index out of range: nothing drawn
+        s.piece_count = plan.first;  // (a multisampled frame's earlier draws stay)
+        return;
+    }
+    if (params.alpha < 1.0f) s.queue_translucent(plan);
+    s.gather_stats(plan);
 }
 
 // ---- the public class -------------------------------------------------------------------------
@@ -355,10 +409,10 @@ render_context::~render_context() = default;
 int render_context::threads() const { return impl_->pool.size(); }
 const zbuffer &render_context::depth() const { return impl_->depth; }
 const frame_stats &render_context::stats() const { return impl_->stats; }
-multisample_simd render_context::multisample_simd_in_use() const { return impl_->kernel; }
+raster_simd render_context::simd_in_use() const { return impl_->kernel; }
 
-bool render_context::use_multisample_simd(multisample_simd simd) {
-    if (impl_->target || !detail::msaa_kernel_runs(simd)) return false;
+bool render_context::use_simd(raster_simd simd) {
+    if (impl_->target || !detail::fill_kernel_runs(simd)) return false;
     impl_->kernel = simd;
     return true;
 }
@@ -372,7 +426,7 @@ status render_context::begin_frame(canvas_t &target, float clear_intensity, samp
     const status size_ok = s.depth.resize(target.width, target.height);
     if (!size_ok) return size_ok;
     s.pattern = &detail::pattern_of(count);
-    s.segments_hold_frame = false;
+    s.piece_count = 0;
     s.target = &target;
     s.clear_intensity = detail::clamp01(clear_intensity);
     s.pending_clear = true;
@@ -400,14 +454,14 @@ void render_context::end_frame() {
         s.target = nullptr;
         return;
     }
-    auto phase = [&](int thread) {
-        for (int band = 0; band < s.bands.count; ++band) {
-            if (s.bands.owner[band] != thread) continue;
+    s.counters.reset();
+    auto phase = [&](int) {
+        s.counters.hand_out(s.counters.next_band, s.bands.count, [&](int band) {
             const int y0 = s.bands.y0(band), y1 = s.bands.y0(band + 1);
             if (s.pending_clear) s.clear_band(band);
             for (const generic_triangle &g : s.translucent)
                 draw_generic_rows(*s.target, s.depth, s.states[g.state], g, y0, y1);
-        }
+        });
     };
     s.pool.run(phase);
     s.pending_clear = false;

@@ -348,11 +348,10 @@ void fill_rows_sse2(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bo
     }
 }
 
-// Triangles at most NARROW_WIDTH px wide: every row is drawn as the same `groups` groups
-// of four from min_x, the lanes outside the row's span masked off, so the branches are the
-// row loop and a group loop of constant trip count (the span loop's per-row trip counts
-// mispredict on small triangles). Needs min_x + 4·groups ≤ canvas width.
-constexpr int NARROW_WIDTH = 16;
+// Triangles that narrow_fits (raster_internal.h): every row is drawn as the same `groups`
+// groups of four from min_x, the lanes outside the row's span masked off, so the branches
+// are the row loop and a group loop of constant trip count (the span loop's per-row trip
+// counts mispredict on small triangles).
 
 template <depth_func Test, bool HasDepth, int Groups>
 void fill_rows_narrow(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bool depth_write, int y0, int y1) {
@@ -393,7 +392,7 @@ template <depth_func Test, bool HasDepth>
 void fill_rows_sse2_any(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bool depth_write, int y0, int y1) {
     const int groups = (f.max_x - f.min_x + 4) / 4;  // ⌈bounding-box width / 4⌉
     static_assert(NARROW_WIDTH == 16, "one case per group count below");
-    if (f.max_x - f.min_x < NARROW_WIDTH && f.min_x + 4 * groups <= canvas.width) {
+    if (narrow_fits(f, canvas.width)) {
         // The group count as a constant: the group loop is unrolled, so no per-row loop exit
         // to mispredict when consecutive triangles have different widths.
         switch (groups) {
@@ -411,6 +410,7 @@ void fill_rows_dispatch(canvas_t &canvas, zbuffer *depth, const fast_triangle &f
                         bool depth_write, int y0, int y1) {
     with_depth_test(test, [&](auto t) { fill_rows_sse2_any<t.value, HasDepth>(canvas, depth, f, depth_write, y0, y1); });
 }
+
 #endif
 
 }  // namespace
@@ -440,8 +440,30 @@ void fill_floats(float *dst, std::size_t count, float value) {
     for (; i < count; ++i) dst[i] = value;
 }
 
+bool fill_kernel_runs(fill_kernel k) {
+    switch (k) {
+        case fill_kernel::portable: return true;
+#ifdef TINY3D_SSE2  // the AVX2 and AVX-512 kernels resolve, and fall back, with SSE2's
+        case fill_kernel::sse2: return true;
+#ifdef TINY3D_AVX2
+        case fill_kernel::avx2: return cpu_has_avx2();
+#endif
+#ifdef TINY3D_AVX512
+        case fill_kernel::avx512: return cpu_has_avx512();
+#endif
+#endif
+        default: return false;
+    }
+}
+
+fill_kernel best_fill_kernel() {
+    for (fill_kernel k : {fill_kernel::avx512, fill_kernel::avx2, fill_kernel::sse2})
+        if (fill_kernel_runs(k)) return k;
+    return fill_kernel::portable;
+}
+
 void fill_fast_rows(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, const triangle_edges *wide_edges,
-                    depth_func test, bool depth_write, int y0, int y1) {
+                    depth_func test, bool depth_write, int y0, int y1, [[maybe_unused]] fill_kernel kernel) {
     y0 = std::max(y0, f.min_y);
     y1 = std::min(y1, f.max_y + 1);
     if (y0 >= y1) return;
@@ -450,6 +472,10 @@ void fill_fast_rows(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, co
         return;
     }
 #ifdef TINY3D_SSE2
+#ifdef TINY3D_AVX512
+    if (kernel == fill_kernel::avx512 && narrow_fits(f, canvas.width))
+        return fill_rows_narrow_avx512(canvas, depth, f, test, depth_write, y0, y1);
+#endif
     if (depth) fill_rows_dispatch<true>(canvas, depth, f, test, depth_write, y0, y1);
     else fill_rows_dispatch<false>(canvas, depth, f, depth_func::always, false, y0, y1);
 #else
@@ -467,7 +493,34 @@ void fill_fast_rows(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, co
 #endif
 }
 
+void fill_fast_bin(canvas_t &canvas, zbuffer &depth, const fast_triangle *tris, const triangle_edges *wide,
+                   const std::uint32_t *bin, std::size_t count, depth_func test, int y0, int y1, fill_kernel kernel) {
+#ifdef TINY3D_AVX512
+    if (kernel == fill_kernel::avx512) return fill_fast_bin_avx512(canvas, depth, tris, wide, bin, count, test, y0, y1);
+#endif
+#ifdef TINY3D_SSE2
+    if (kernel != fill_kernel::portable) {
+        with_depth_test(test, [&](auto t) {
+            for (std::size_t k = 0; k < count; ++k) {
+                const fast_triangle &f = tris[bin[k]];
+                const int first = std::max(y0, f.min_y), end = std::min(y1, f.max_y + 1);
+                if (first >= end) continue;
+                if (f.wide >= 0) fill_rows_scalar64(canvas, &depth, f, wide[f.wide], test, true, first, end);
+                else fill_rows_sse2_any<t.value, true>(canvas, &depth, f, true, first, end);
+            }
+        });
+        return;
+    }
+#endif
+    for (std::size_t k = 0; k < count; ++k) {
+        const fast_triangle &f = tris[bin[k]];
+        fill_fast_rows(canvas, &depth, f, f.wide >= 0 ? &wide[f.wide] : nullptr, test, true, y0, y1, kernel);
+    }
+}
+
 }  // namespace detail
+
+raster_simd best_raster_simd() { return detail::best_fill_kernel(); }
 
 void fill_triangle(canvas_t &canvas, zbuffer *depth, const screen_vertex v[3], const float intensity[3],
                    depth_func test, bool depth_write, pixel_rect clip) {
@@ -480,7 +533,7 @@ void fill_triangle(canvas_t &canvas, zbuffer *depth, const screen_vertex v[3], c
     detail::fast_triangle f;
     const float depth_z[3] = {v[0].z, v[1].z, v[2].z};
     if (!detail::make_fast_triangle(t, depth_z, intensity, 0, f)) return;
-    detail::fill_fast_rows(canvas, depth, f, &t, test, depth_write, f.min_y, f.max_y + 1);
+    detail::fill_fast_rows(canvas, depth, f, &t, test, depth_write, f.min_y, f.max_y + 1, detail::best_fill_kernel());
 }
 
 // ---- the faithful scan-line fill (seed 003) ---------------------------------------------

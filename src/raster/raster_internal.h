@@ -182,10 +182,44 @@ enum class fast_setup {
 fast_setup setup_fast_triangle(const std::int32_t X[3], const std::int32_t Y[3], std::int64_t area2, pixel_rect clip,
                                const float depth[3], const float intensity[3], fast_triangle &out);
 
-// Draws rows [y0, y1) ∩ [min_y, max_y] of the triangle. `wide_edges` is the triangle's
-// 64-bit edges when f.wide ≥ 0 (ignored otherwise).
-void fill_fast_rows(canvas_t &canvas, zbuffer *depth, const fast_triangle &f,
-                    const triangle_edges *wide_edges, depth_func test, bool depth_write, int y0, int y1);
+// The 1-sample fill's kernels, by the instruction set a render context is told to use
+// (raster.h): portable (plain C++), SSE2 (every x86-64 CPU; also what avx2 runs: there is no
+// AVX2 1-sample kernel) and AVX-512 for narrow triangles. Every one gives the same pixels
+// as SSE2's; the portable one differs from them in the last bits of depth and intensity.
+using fill_kernel = raster_simd;
+// Whether this build runs kernel k on this CPU, and the fastest it does (as for the
+// multisample kernels, msaa.h).
+bool fill_kernel_runs(fill_kernel k);
+fill_kernel best_fill_kernel();
+
+// Draws rows [y0, y1) ∩ [min_y, max_y] of the triangle with `kernel` (fill_kernel_runs).
+// `wide_edges` is the triangle's 64-bit edges when f.wide ≥ 0 (ignored otherwise).
+void fill_fast_rows(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, const triangle_edges *wide_edges,
+                    depth_func test, bool depth_write, int y0, int y1, fill_kernel kernel);
+
+// Draws rows [y0, y1) of the triangles tris[i] for each i of `bin`, in that order, with
+// depth (the render context's band loop): fill_fast_rows for each, the depth test and the
+// kernel chosen once. `wide` holds the 64-bit edges of the triangles with wide ≥ 0.
+void fill_fast_bin(canvas_t &canvas, zbuffer &depth, const fast_triangle *tris, const triangle_edges *wide,
+                   const std::uint32_t *bin, std::size_t count, depth_func test, int y0, int y1, fill_kernel kernel);
+
+// Triangles at most NARROW_WIDTH px wide whose groups of four from min_x stay inside the
+// canvas (`width`) are drawn by the narrow kernels: every row as the same groups, the lanes
+// outside the row's span masked off.
+inline constexpr int NARROW_WIDTH = 16;
+inline bool narrow_fits(const fast_triangle &f, int width) {
+    return f.max_x - f.min_x < NARROW_WIDTH && f.min_x + 4 * ((f.max_x - f.min_x + 4) / 4) <= width;
+}
+
+#ifdef TINY3D_AVX512
+// The AVX-512 kernel (raster_fill_avx512.cpp) for a triangle that narrow_fits, rows
+// [y0, y1) within f's.
+void fill_rows_narrow_avx512(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, depth_func test,
+                             bool depth_write, int y0, int y1);
+// fill_fast_bin with the AVX-512 kernel for the narrow triangles (SSE2's for the others).
+void fill_fast_bin_avx512(canvas_t &canvas, zbuffer &depth, const fast_triangle *tris, const triangle_edges *wide,
+                          const std::uint32_t *bin, std::size_t count, depth_func test, int y0, int y1);
+#endif
 
 // The depth and intensity planes through snapped (or any) vertices x, y (px), as the fast
 // path computes them: planes = {z, ∂z/∂x, ∂z/∂y, i, ∂i/∂x, ∂i/∂y} at the centre of pixel

@@ -1,6 +1,12 @@
-// render_bands.h — how the render context shares a frame between threads: the frame is cut
-// into horizontal bands, each owned by one thread, and a thread done with its own bands
-// draws (steals) other threads' bands not yet claimed. Not installed.
+// render_bands.h — how the render context shares a draw between threads ("sort-middle"):
+// the draw's triangles are cut into pieces (runs of consecutive cluster chunks, or of
+// triangles), handed out to the threads one at a time; a thread sets up the triangles of a
+// piece into that piece's own lists and bins them by the horizontal bands of the frame they
+// reach. Once every piece is set up, the bands are handed out; a band is drawn by one
+// thread, piece after piece in piece order — the draw's submission order — so the pixels
+// depend neither on the number of threads nor on which thread set up or drew what, and a
+// piece's lists grow to the same sizes every frame whoever sets it up (no allocation in a
+// steady scene). Not installed.
 #ifndef TINY3D_RENDER_BANDS_H
 #define TINY3D_RENDER_BANDS_H
 
@@ -20,94 +26,63 @@ inline constexpr std::size_t CACHE_LINE = 64;  // bytes
 // band's colour and depth rows stay in cache while all its triangles are drawn.
 inline constexpr int BAND_ROWS = 32;
 inline constexpr int MAX_BANDS = 128;
-// Blocks of neighbouring bands per thread: 2 (256-row blocks at 1024 px on two threads) lets
-// a thread skip whole cluster chunks (~100 rows high at Scene S level 6) far more often than
-// 4 did, and fewer triangles straddle two owners; per-thread work stayed as even on Scene S
-// and on the sphere moved off-centre (documentation/raster.md).
-inline constexpr int BLOCKS_PER_THREAD = 2;
 static_assert(MAX_BANDS <= 256, "band_layout stores band numbers in 8 bits");
+// Pieces per thread in a draw on more than one thread: enough that a thread whose pieces
+// were cheap (back-facing chunks) takes more of them, few enough that the per-piece
+// bookkeeping (two offsets per band) stays small. One thread sets up a draw as one piece.
+inline constexpr int PIECES_PER_THREAD = 8;
+// Without clusters, a piece is at least this many triangles.
+inline constexpr std::size_t MIN_PIECE_TRIANGLES = 512;
 
-// Which rows form each band and which thread owns it (set once per frame).
+// Which rows form each band (set once per frame).
 struct band_layout {
     int count = 1;
     int height = 0;
     std::vector<std::uint8_t> row_band;  // the band holding each row (inverse of y0)
-    std::uint8_t owner[MAX_BANDS];       // the thread that sets up each band's triangles
 
-    // Bands of band_rows rows (at least one per thread, at most MAX_BANDS and `height`);
-    // threads own blocks of neighbouring bands, dealt in turn (BLOCKS_PER_THREAD each when
-    // there are enough bands): few triangles straddle two owners, and the load stays even
-    // when the scene is not.
-    void plan(int rows, int threads, int band_rows = BAND_ROWS) {
+    // Bands of band_rows rows, at least min_count (one per thread: a small target still
+    // keeps every thread busy), at most MAX_BANDS and `rows`.
+    void plan(int rows, int min_count, int band_rows = BAND_ROWS) {
         height = rows;
-        count = std::clamp(rows / band_rows, threads, MAX_BANDS);
+        count = std::clamp(rows / band_rows, min_count, MAX_BANDS);
         count = std::min(count, std::max(rows, 1));
         if (row_band.size() < static_cast<std::size_t>(rows)) row_band.resize(rows);
         for (int b = 0; b < count; ++b)
             for (int y = y0(b); y < y0(b + 1); ++y) row_band[static_cast<std::size_t>(y)] = static_cast<std::uint8_t>(b);
-        const int block = std::max(1, count / (BLOCKS_PER_THREAD * threads));
-        for (int b = 0; b < count; ++b) owner[b] = static_cast<std::uint8_t>(b / block % threads);
     }
     int of(int y) const { return row_band[static_cast<std::size_t>(y)]; }
     // First row of band b (b = count: the target's height).
     int y0(int b) const { return static_cast<int>(static_cast<long long>(height) * b / count); }
-    // Whether thread t owns a band among rows [first, last] (inclusive, inside the target).
-    bool draws_rows(int t, int first, int last) const {
-        for (int b = of(first); b <= of(last); ++b)
-            if (owner[b] == t) return true;
-        return false;
-    }
 };
 
-// Per draw (numbered by serial): which bands have been claimed for drawing, and which
-// threads' set-ups are complete. A band is drawn by its owner or, once the owner's set-up is
-// complete, by a thread that has finished its own bands (always from the owner's set-up, in
-// submission order, so the pixels do not depend on who draws it).
-struct band_claims {
-    std::uint32_t serial = 0;
-    std::atomic<std::uint32_t> claim[MAX_BANDS] = {};
-    struct alignas(CACHE_LINE) ready_flag {
-        std::atomic<std::uint32_t> serial{0};
-    };
-    ready_flag ready[MAX_THREADS];
+// The shared counters of one draw's phase, each on a cache line of its own: the next piece
+// and band to hand out, and how many pieces (and vertex ranges) are done. Reset by the
+// caller before the workers start (published to them by worker_pool::run).
+struct phase_counters {
+    alignas(CACHE_LINE) std::atomic<int> next_piece{0};
+    alignas(CACHE_LINE) std::atomic<int> pieces_done{0};
+    alignas(CACHE_LINE) std::atomic<int> next_band{0};
+    alignas(CACHE_LINE) std::atomic<int> vertex_ranges_done{0};
+    std::atomic<bool> bad_indices{false};  // a piece found a vertex index out of range
 
-    // Starts a draw (before the workers run: published to them by worker_pool::run).
-    void next_draw() {
-        if (++serial == 0) {  // wrapped: 0 is what the flags start from
-            for (auto &c : claim) c.store(0, std::memory_order_relaxed);
-            for (auto &r : ready) r.serial.store(0, std::memory_order_relaxed);
-            serial = 1;
-        }
+    void reset() {
+        bad_indices.store(false, std::memory_order_relaxed);
+        next_piece.store(0, std::memory_order_relaxed);
+        pieces_done.store(0, std::memory_order_relaxed);
+        next_band.store(0, std::memory_order_relaxed);
+        vertex_ranges_done.store(0, std::memory_order_relaxed);
     }
-    // True for the one thread that claims band b in this draw.
-    bool take(int b) { return claim[b].exchange(serial, std::memory_order_relaxed) != serial; }
-    bool taken(int b) const { return claim[b].load(std::memory_order_relaxed) == serial; }
-    void mark_ready(int thread) { ready[thread].serial.store(serial, std::memory_order_release); }
-    void wait_ready(int thread) const {
-        parallel::spin_until_yielding([&] { return ready[thread].serial.load(std::memory_order_acquire) == serial; });
+    // Calls take(k) for k = 0, 1, … up to n − 1, each k once over all threads.
+    template <class Take>
+    void hand_out(std::atomic<int> &next, int n, Take &&take) {
+        for (int k; (k = next.fetch_add(1, std::memory_order_relaxed)) < n;) take(k);
+    }
+    // Waits (spinning, then yielding) until `counter` reaches n; the acquire pairs with the
+    // release of the increments, so everything written before them is visible.
+    static void wait_for(const std::atomic<int> &counter, int n) {
+        parallel::spin_until_yielding([&] { return counter.load(std::memory_order_acquire) >= n; });
     }
 };
-
-// Thread t of n draws its own bands in order, then helps: the other threads' bands not yet
-// claimed, from their last band backwards (their owners go forwards), each once its owner's
-// set-up is complete. draw_band(band, owner) draws one band from the owner's set-up.
-template <class DrawBand>
-void draw_bands(const band_layout &layout, band_claims &claims, int t, int n, DrawBand &&draw_band) {
-    for (int band = 0; band < layout.count; ++band)
-        if (layout.owner[band] == t && claims.take(band)) draw_band(band, t);
-    for (int k = 1; k < n; ++k) {
-        const int owner = (t + k) % n;
-        bool ready = false;
-        for (int band = layout.count - 1; band >= 0; --band) {
-            if (layout.owner[band] != owner || claims.taken(band)) continue;
-            if (!ready) {
-                claims.wait_ready(owner);
-                ready = true;
-            }
-            if (claims.take(band)) draw_band(band, owner);
-        }
-    }
-}
 
 }  // namespace tiny3d::detail
 

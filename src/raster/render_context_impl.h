@@ -46,15 +46,19 @@ void draw_generic_samples(sample_store &tile, const sample_pattern &pat, float c
 
 // Multisampled frames: bands of MSAA_BAND_ROWS rows (one band's samples, 8 · samples bytes
 // per pixel, stay in the core's caches while every triangle reaching it is drawn: 16 rows
-// measured faster than 8 at 4x and 16x on Scene S, fewer triangles straddling bands); a band
-// bin entry with GENERIC_BIN set names a per-pixel-path triangle.
+// measured faster than 8 at 4x and 16x on Scene S, fewer triangles straddling bands). In
+// every frame, a band bin entry with GENERIC_BIN set names a per-pixel-path triangle.
 inline constexpr int MSAA_BAND_ROWS = 16;
 inline constexpr std::uint32_t GENERIC_BIN = 1u << 31;
 
-// What a thread does with one cluster chunk of the draw: skip it, or walk it (and whether it
-// counts the chunk's culled triangles).
-struct chunk_walk {
-    bool walk, counts;
+// How a draw is cut into pieces (render_bands.h): pieces [first, first + count) of the
+// frame's, each `size` cluster chunks (with clusters) or triangles; with shared_vertices,
+// the threads first transform a range of vertices each into segment 0's arrays, which every
+// piece then reads (a draw without clusters on several threads).
+struct draw_plan {
+    int first = 0, count = 0;
+    std::size_t size = 0;
+    bool shared_vertices = false;
 };
 
 }  // namespace detail
@@ -74,32 +78,35 @@ struct render_context::impl {
     // band by band into a per-thread tile of samples and resolves it.
     const detail::sample_pattern *pattern = &detail::pattern_of(1);
     detail::sample_store tiles[detail::MAX_THREADS];
-    detail::msaa_kernel kernel = detail::best_msaa_kernel();  // fills and resolves the tiles (use_multisample_simd)
-    bool segments_hold_frame = false;  // the segments already hold this frame's earlier draws
-    std::atomic<int> next_band{0};     // end_frame's band queue
+    detail::fill_kernel kernel = detail::best_fill_kernel();  // every fill's instruction set (use_simd)
     bool multisampled() const { return pattern->count > 1; }
 
-    // What one thread produced for the current draw. Aligned to a cache line of its own: the
-    // vector headers and stats are written per triangle, and two threads writing one line
-    // (false sharing) made the two-thread setup slower than one thread's.
+    // One thread's transformed vertices. Aligned to a cache line of its own: the vector
+    // headers are read per triangle, and another thread writing the same line (false
+    // sharing) slows every read.
     struct alignas(detail::CACHE_LINE) segment {
-        std::vector<detail::xvertex> vertices;  // every vertex of the draw, transformed by this thread
+        std::vector<detail::xvertex> vertices;  // the vertices of the draw this thread transformed
         std::vector<vec4_t> clip;               // their clip-space positions
         std::vector<float> vertex_attr;         // ATTR_COUNT per vertex (generic path only)
+        std::vector<std::uint8_t> walk;         // a piece's cluster chunks: walked or skipped
+    };
+    // What the set-up of one piece produced (render_bands.h), on cache lines of its own.
+    struct alignas(detail::CACHE_LINE) piece {
         std::vector<detail::fast_triangle> fast;
         std::vector<detail::msaa_triangle> msaa;  // instead of `fast` in multisampled frames
         std::vector<triangle_edges> wide;
         std::vector<detail::generic_triangle> generic;
-        std::vector<std::uint32_t> bins[detail::MAX_BANDS];  // fast-triangle indices per band (multisampled:
-                                                             // msaa ones, or generic with GENERIC_BIN)
-        std::vector<detail::chunk_walk> chunks;              // this draw's cluster chunks, as decided
+        std::vector<std::vector<std::uint32_t>> bins;  // per band: fast-triangle indices (multisampled:
+                                                       // msaa ones), or generic with GENERIC_BIN
         frame_stats stats;
     };
     segment segments[detail::MAX_THREADS];
+    std::vector<piece> pieces;  // the frame's first piece_count are in use (grown, never shrunk)
+    int piece_count = 0;
     std::vector<draw_params> states;                    // this frame's draw calls
     std::vector<detail::generic_triangle> translucent;  // queued for end_frame
     detail::band_layout bands;
-    detail::band_claims claims;
+    detail::phase_counters counters;
 
     void clear_band(int b) {
         const int y0 = bands.y0(b), y1 = bands.y0(b + 1);
@@ -110,22 +117,23 @@ struct render_context::impl {
 
     // The steps of draw (raster_context.cpp).
     void grow_segments(std::size_t vertex_count, bool generic);
+    detail::draw_plan plan_draw(std::size_t units, bool clustered);
     void set_up_and_draw(int thread, const raster_mesh &m, const draw_params &p, const detail::vertex_job &job,
-                         std::uint32_t state, const detail::cluster_view *view);
-    void draw_band(int band, const segment &from, const draw_params &p);
-    void queue_translucent(std::size_t first);
-    void gather_stats();
+                         std::uint32_t state, const detail::cluster_view *view, const detail::draw_plan &plan);
+    void draw_band(int band, const draw_params &p, const detail::draw_plan &plan);
+    void queue_translucent(const detail::draw_plan &plan);
+    void gather_stats(const detail::draw_plan &plan);
 
     void transform(const raster_mesh &m, const draw_params &p, const detail::vertex_job &job, detail::vertex_set set,
                    segment &out) {
         detail::transform_vertices(m, p, job, guard, set, out.vertices.data(), out.clip.data(), out.vertex_attr.data());
     }
-    void setup(const raster_mesh &m, const draw_params &p, const detail::vertex_job &job, std::uint32_t state, int thread,
-               const detail::cluster_view *clusters, segment &out);
-    void setup_range(const raster_mesh &m, const draw_params &p, std::uint32_t state, bool generic, int thread,
-                     bool counts_all, std::size_t first, std::size_t last, segment &out);
+    void set_up_piece(int thread, int number, const raster_mesh &m, const draw_params &p, const detail::vertex_job &job,
+                      std::uint32_t state, const detail::cluster_view *view, const detail::draw_plan &plan);
+    void setup_range(const raster_mesh &m, const draw_params &p, std::uint32_t state, bool generic,
+                     const segment &vertices, std::size_t first, std::size_t last, piece &out);
     // Appends a fast triangle and its band bins (skips empty ones).
-    void add_fast(const triangle_edges &t, const float depth_at[3], const float shade[3], segment &out) {
+    void add_fast(const triangle_edges &t, const float depth_at[3], const float shade[3], piece &out) {
         detail::fast_triangle f;
         if (!detail::make_fast_triangle(t, depth_at, shade, static_cast<std::int32_t>(out.wide.size()), f)) return;
         if (f.wide >= 0) out.wide.push_back(t);
@@ -134,19 +142,22 @@ struct render_context::impl {
     // Appends a set-up fast triangle and puts it into the bins of the bands it covers. Out
     // of line, so that the vector appends inline here (in the large set-up loop they were
     // calls: +0.7 % instructions for Scene S level 6).
-    [[gnu::noinline]] void bin_fast(const detail::fast_triangle &f, segment &out) {
+    [[gnu::noinline]] void bin_fast(const detail::fast_triangle &f, piece &out) {
         const std::uint32_t index = static_cast<std::uint32_t>(out.fast.size());
         out.fast.push_back(f);
         for (int b = bands.of(f.min_y); b <= bands.of(f.max_y); ++b) out.bins[b].push_back(index);
     }
-    void emit(const clip_vertex *poly, int n, const draw_params &p, std::uint32_t state, bool generic, bool count,
-              segment &out);
+    void emit(const clip_vertex *poly, int n, const draw_params &p, std::uint32_t state, bool generic, piece &out);
 
     // Multisampled frames (raster_multisample.cpp).
     // Appends f (made by make_msaa_triangle: either form) with the draw state and bins it.
-    void add_msaa(detail::msaa_triangle &f, std::uint32_t state, segment &out);
-    // The last of out.generic (opaque), by the box of its vertices on the pattern's grid.
-    void bin_generic(const std::int32_t X[3], const std::int32_t Y[3], segment &out);
+    void add_msaa(detail::msaa_triangle &f, std::uint32_t state, piece &out);
+    // The last of out.generic (opaque) into the bins of rows [y0, y1] (inclusive).
+    void bin_generic(int y0, int y1, piece &out) {
+        if (y0 > y1) return;
+        const std::uint32_t index = static_cast<std::uint32_t>(out.generic.size() - 1) | detail::GENERIC_BIN;
+        for (int b = bands.of(y0); b <= bands.of(y1); ++b) out.bins[b].push_back(index);
+    }
     void draw_multisampled_band(int band, detail::sample_store &tile);
     void end_multisampled_frame();
 };

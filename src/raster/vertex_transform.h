@@ -39,11 +39,12 @@ struct vertex_job {
     bool directional_gouraud;  // Gouraud with directional lights only (no position needed)
 };
 
-// The vertices one transform() call handles: 0..count−1, or list[0..count).
+// The vertices one transform() call handles: first..first + count − 1, or list[0..count).
 struct vertex_set {
     const std::uint32_t *list;
     std::size_t count;
-    std::uint32_t operator[](std::size_t k) const { return list ? list[k] : static_cast<std::uint32_t>(k); }
+    std::uint32_t first = 0;
+    std::uint32_t operator[](std::size_t k) const { return list ? list[k] : first + static_cast<std::uint32_t>(k); }
 };
 
 // ---- the portable reference kernels (the SSE2 ones match them bit for bit) ----
