@@ -297,11 +297,12 @@ draw_plan render_context::impl::plan_draw(std::size_t units, bool clustered) {
     return plan;
 }
 
-// One band: cleared if the frame has not been yet, then the draw's triangles that reach it,
-// piece after piece (submission order).
-void render_context::impl::draw_band(int band, const draw_params &p, const draw_plan &plan) {
+// One band: cleared if the frame has not been yet (and `clear`: not already done while
+// waiting for the set-up), then the draw's triangles that reach it, piece after piece
+// (submission order).
+void render_context::impl::draw_band(int band, const draw_params &p, const draw_plan &plan, bool clear) {
     const int y0 = bands.y0(band), y1 = bands.y0(band + 1);
-    if (pending_clear) clear_band(band);
+    if (clear && pending_clear) clear_band(band);
     const bool generic = p.shade == shading::phong || p.tex != nullptr || p.alpha < 1.0f;  // (translucent: no bins)
     for (int number = plan.first; number < plan.first + plan.count; ++number) {
         const piece &from = pieces[static_cast<std::size_t>(number)];
@@ -340,12 +341,26 @@ void render_context::impl::set_up_and_draw(int thread, const raster_mesh &m, con
         counters.pieces_done.fetch_add(1, std::memory_order_release);
     });
     if (multisampled()) return;  // drawn at end_frame
+    // Until the other threads' last pieces are set up: claim the next bands and clear them
+    // (the frame's first draw), to draw them first once every piece is ready.
+    int claimed[MAX_BANDS], claimed_count = 0;
+    while (pending_clear && counters.pieces_done.load(std::memory_order_acquire) < plan.count) {
+        const int band = counters.next_band.fetch_add(1, std::memory_order_relaxed);
+        if (band >= bands.count) break;
+        clear_band(band);
+        claimed[claimed_count++] = band;
+    }
     phase_counters::wait_for(counters.pieces_done, plan.count);
     const bool drop = counters.bad_indices.load(std::memory_order_relaxed);
-    counters.hand_out(counters.next_band, bands.count, [&](int band) {
-        if (!drop) draw_band(band, p, plan);
-        else if (pending_clear) clear_band(band);
-    });
+    auto draw = [&](int band, bool cleared) {
+        if (drop) {
+            if (pending_clear && !cleared) clear_band(band);
+            return;
+        }
+        draw_band(band, p, plan, !cleared);
+    };
+    for (int k = 0; k < claimed_count; ++k) draw(claimed[k], true);
+    counters.hand_out(counters.next_band, bands.count, [&](int band) { draw(band, false); });
 }
 
 // Translucent triangles wait for end_frame: the draw's per-pixel-path triangles, piece by

@@ -82,7 +82,7 @@ struct span_batch {
 };
 
 template <depth_func Test, bool HasDepth>
-void narrow_rows(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bool depth_write, int y0, int y1) {
+[[gnu::always_inline]] inline void narrow_rows(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bool depth_write, int y0, int y1) {
     const __m512 column = _mm512_setr_ps(0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3);
     const __m512 zoff = _mm512_mul_ps(_mm512_set1_ps(f.zdx), column);
     const __m512 ioff = _mm512_mul_ps(_mm512_set1_ps(f.idx), column);
