@@ -2,7 +2,7 @@
 // flat, Gouraud and Phong shading (left to right), two textured cubes (bottom row) mapped
 // affine (left) and perspective-correct (right), and a translucent sphere drifting in front
 // of them. 36 frames, 10° per frame, into build/frames/shaded/.
-//   shaded [--out DIR] [--frames A:B] [--size WxH] [--threads N] [--png]
+//   shaded [--out DIR] [--frames A:B] [--size WxH] [--threads N] [--aa N] [--png]
 #include <cmath>
 #include <string>
 #include <vector>

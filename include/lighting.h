@@ -44,10 +44,10 @@ typedef struct light_t {
 // The report's per-edge Lambert, kept as its faithful variant:
 //     clamp01( unit(end − start) · unit(light_dir) )
 // A zero-length edge or zero light direction gives 0 (no NaN). Known flaw, kept on purpose
-// and measured by tests/bench/edge_lighting.cpp: an edge direction is not a surface normal
-// and has no preferred sign, so under any light about half of a wireframe's edges come out
-// black (and an edge lying along the light is fully lit). tiny3d::mesh_edge_normals plus
-// tiny3d::shade_edge is the corrected model.
+// (bench `edge_lighting`, row 'lambert_intensity per edge (report)'): an edge direction
+// is not a surface normal and has no preferred sign, so under any light about half of a
+// wireframe's edges come out black (and an edge lying along the light is fully lit).
+// tiny3d::mesh_edge_normals plus tiny3d::shade_edge is the corrected model.
 float lambert_intensity(vec3_t start, vec3_t end, vec3_t light_dir);
 
 namespace tiny3d {

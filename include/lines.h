@@ -26,7 +26,7 @@
 // `thickness` made of set_pixel_f(…, 1) splats on a 0.5 px grid. Coordinates in the
 // report's convention (canvas.h: integer coordinates are pixel centres); the report's
 // pixels bit for bit while the line stays on the canvas, to float rounding when it is
-// clipped. Known flaws, kept on purpose and measured by the benchmark: thickness
+// clipped. Known flaws, kept on purpose (bench `lines`, rows 'faithful DDA splat …'): thickness
 // < 2 − √2 ≈ 0.586 draws nothing (no disc sample passes kx² + ky² ≤ T²/4); from there up
 // to T = 1 each sample is a single splat, offset (½ − T/2)·(1, 1) from the line, about
 // 2–2.5 times the true ink at 0.59–0.70; thickness 1 puts about twice the true ink down;
@@ -69,15 +69,15 @@ struct line_style {
 // cross-section is one interval [lower(X), upper(X)], so a pixel's area is a difference
 // of ∫ max(y − t, 0) dX over the boundary pieces (straight sides, butt ends, cap arcs with
 // primitive ½(w·√(h² − w²) + h²·asin(w/h))) — see src/lines/stroke_outline.h. A stroke
-// that contains the whole canvas fills it. Measured against line_coverage_reference over
-// thousands of random segments (lengths 0–300 px, T 0.5–8): max |error| < 1e-4 (about
-// 1e-6 seen), total ink = length·T (+ πT²/4 for round caps) to 1e-3 relative
-// (tests/lines_test.cpp). Half-widths beyond ~1e9 px whose edge crosses the canvas lose
-// double precision in the end columns (area error ≈ T·1e-16).
+// that contains the whole canvas fills it. Against line_coverage_reference over thousands
+// of random segments (lengths 0–300 px, T 0.5–8): max |error| < 1e-4, total ink =
+// length·T (+ πT²/4 for round caps) to 1e-3 relative (tests/lines_test.cpp). Half-widths
+// beyond ~1e9 px whose edge crosses the canvas lose double precision in the end columns
+// (area error ≈ T·1e-16).
 // Drawing (x1, y1)→(x0, y0) gives the bit-identical image (the ends are put in a
 // canonical order first). thickness ≤ 0, NaN or ±inf anywhere draws nothing; a
 // zero-length segment with round caps is a disc (butt: nothing). Cost grows with the
-// length plus a fixed part per end (figures in documentation/benchmarks.md).
+// length plus a fixed part per end (bench `lines`, rows 'fast coverage').
 void draw_line_coverage(canvas_t *canvas, float x0, float y0, float x1, float y1, float thickness,
                         const line_style &style = {});
 
@@ -85,7 +85,8 @@ void draw_line_coverage(canvas_t *canvas, float x0, float y0, float x1, float y1
 // square inside the stroke, by clipping the square against the rectangle's four
 // half-planes (Sutherland–Hodgman, shoelace area) plus, for round caps, the area of the
 // square beyond each end inside the end's disc (exact circle-segment areas). 0 for
-// non-finite input or thickness ≤ 0. Slow (~0.2 µs per pixel); for tests and benchmarks.
+// non-finite input or thickness ≤ 0. Slow (a polygon clipped per pixel); for tests and
+// benchmarks (bench `lines`, rows 'exact reference').
 double line_coverage_reference_at(int px, int py, double x0, double y0, double x1, double y1, double thickness,
                                   line_cap cap = line_cap::round);
 
@@ -130,8 +131,8 @@ line_simd best_line_simd();
 // positions within their pixel in steps of 1/24 px per axis; a drawn end blends 8 of them
 // (bilinear in position, linear in direction). Float: 1.35 MB up to thickness 1.75,
 // 5.4 MB beyond; building it evaluates the reference ~690,000 times up to 1.75, ~2.1 M at
-// 4 (tens to hundreds of ms): make it once per thickness and keep it (render_wireframe keeps them in
-// its workspace). From about 5.35 px (up to kMaxThickness) the table is empty and
+// 4: make it once per thickness and keep it (render_wireframe keeps them in its
+// workspace). From about 5.35 px (up to kMaxThickness) the table is empty and
 // draw_line_tabulated draws with the exact line.
 class line_table {
 public:
@@ -172,10 +173,10 @@ private:
 // from ~5.35 px on (no table) are drawn by draw_line_coverage. Pixels are done 16 at a time with AVX-512
 // (tiles of 4 × 4, 8 × 2 or 16 × 1 pixels, the narrowest the stroke fits), 4 at a time
 // with SSE2, or one at a time: table.simd(). Error against line_coverage_reference over
-// random segments (1–40 px, every angle, thickness 0.5–3, round and butt): mean
-// 4e-5–9e-5, max 0.003–0.013 (tests/line_tabulated_test.cpp bounds: mean ≤ 2e-4, max ≤
-// 0.015; speeds in documentation/benchmarks.md). Drawing B→A gives the bit-identical image. Non-finite coordinates
-// draw nothing; ends far off the canvas are clipped first (the stroke continues, no cap
+// random segments (1–40 px, every angle, thickness 0.5–3, round and butt): mean ≤ 2e-4,
+// max ≤ 0.015 (tests/line_tabulated_test.cpp); cost: bench `lines`, rows 'tabulated
+// coverage'. Drawing B→A gives the bit-identical image. Non-finite coordinates draw
+// nothing; ends far off the canvas are clipped first (the stroke continues, no cap
 // there).
 void draw_line_tabulated(canvas_t *canvas, float x0, float y0, float x1, float y1, const line_table &table,
                          float intensity = 1.0f);

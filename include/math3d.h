@@ -89,15 +89,15 @@ vec3_t vec3_from_spherical(float r, float theta, float phi);
 void vec3_to_spherical(vec3_t v, float *r, float *theta, float *phi);
 
 // The report's normalisation: Quake III inverse square root (magic 0x5f3759df, one
-// Newton step) — the faithful variant; max relative error 1.8e-3 (measured by
-// tests/bench/normalize). Made safe: the squared length is brought into the normal float
+// Newton step) — the faithful variant; max relative error 1.8e-3 (bench `normalize`, its
+// error column). Made safe: the squared length is brought into the normal float
 // range by an exact power-of-two prescale when needed, so tiny, denormal and huge inputs
 // (up to FLT_MAX) give a unit vector with the same 1.8e-3 accuracy, never inf or NaN.
 // The zero vector (±0) gives {0, 0, 0}; any NaN component gives {0, 0, 0}; infinite
 // components give the direction of the infinities (e.g. (inf, 5, −inf) → (0.707, 0, −0.707)).
 // The global name keeps the report's (Quake) behaviour so the report's programs see the
 // numbers they always saw; tiny3d::vec3_normalize (exact) and
-// tiny3d::vec3_normalize_fast_accurate (≤ 2e-7, no slower) are the better choices.
+// tiny3d::vec3_normalize_fast_accurate (≤ 2e-7) are the better choices.
 vec3_t vec3_normalize_fast(vec3_t v);
 // Pointer form used by several other libtiny3d programs: *v = vec3_normalize_fast(*v).
 // A null pointer is ignored.
@@ -106,7 +106,7 @@ void vec3_normalize_fast(vec3_t *v);
 // The report's slerp between directions a and b, kept as the faithful variant: inputs
 // normalised with vec3_normalize_fast (Quake), θ₀ = acos(a·b), linear interpolation +
 // renormalisation when a·b > 0.9995, otherwise s0·a + s1·b. The Quake inputs are 1.75e-3
-// off unit length, which the acos/1/sin θ₀ form amplifies as θ grows; measured max error
+// off unit length, which the acos/1/sin θ₀ form amplifies as θ grows; max error
 // of the unit result (t in [0, 1]): 1.8e-3 for θ ≤ 90°, 6e-3 for θ ≤ 135°, 0.05 beyond
 // (tests/math3d_vector_test, tests/bench/slerp). Made safe: pairs within ~17° of antipodal
 // (a·b < 0 and sin θ₀ < 0.3, where the report's formula returns vectors of length down
@@ -152,9 +152,9 @@ float vec3_length(vec3_t v);
 // infinities; denormal and huge inputs are exact too.
 vec3_t vec3_normalize(vec3_t v);
 
-// The fast accurate normalisation, chosen by measurement (tests/bench/normalize; see the
-// implementation for the numbers): max relative error ≤ 2e-7 against the double
-// reference and no slower than the Quake variant. Same special cases as vec3_normalize.
+// The fast accurate normalisation (1/sqrt in float): max relative error ≤ 2e-7 against
+// the double reference; its cost beside the Quake variant's: bench `normalize`. Same
+// special cases as vec3_normalize.
 vec3_t vec3_normalize_fast_accurate(vec3_t v);
 
 // Slerp that is right for every input, with constant angular speed:

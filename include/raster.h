@@ -140,10 +140,12 @@ void rasterize_triangle(const screen_vertex &v0, const screen_vertex &v1, const 
 void fill_triangle(canvas_t &canvas, zbuffer *depth, const screen_vertex v[3],
                    const float intensity[3], depth_func test, bool depth_write, pixel_rect clip);
 
-// The faithful variant (seed 003): sort the vertices by y, walk the long and the two short
-// edges row by row (pixel-centre rows), fill each span between the edge crossings;
-// intensity and depth by barycentrics per pixel. Float arithmetic on unsnapped vertices:
-// shared edges can leave gaps or double hits (measured by the benchmark).
+// The faithful variant (the classic edge-walking scan-line fill): sort the vertices by y,
+// walk the long and the two short edges row by row (pixel-centre rows), fill each span
+// between the edge crossings; intensity and depth by barycentrics per pixel. Float
+// arithmetic on unsnapped vertices: shared edges can leave gaps or double hits (no
+// guarantee; bench `fill`, row 'triangles scan-line (edge walking)', compares its coverage
+// with a double-precision reference).
 void fill_triangle_scanline(canvas_t &canvas, zbuffer *depth, const screen_vertex v[3],
                             const float intensity[3], depth_func test);
 

@@ -142,7 +142,7 @@ void command_line::add_frames(std::function<int()> frame_count) {
 
 void command_line::add_threads(int default_threads) {
     common.threads = default_threads;
-    integer("--threads", common.threads, 1, 16, "worker threads (default " + std::to_string(default_threads) + ")");
+    integer("--threads", common.threads, 1, 16, "worker threads, 1..16 (default " + std::to_string(default_threads) + ")");
 }
 
 void command_line::add_samples(tiny3d::sample_count default_samples) {

@@ -149,7 +149,7 @@ std::string frame_path(const common_options &o, int frame, const std::string &pr
 // Per-frame timing, the "wrote" lines / progress line and the closing summary.
 class progress {
 public:
-    // `total` = frames this run renders; writes go to stdout, the summary to stderr.
+    // `total` = frames the program renders; writes go to stdout, the summary to stderr.
     progress(std::string name, int total);
     void start();  // a frame begins
     void stop();   // the frame's pixels are done (its time is recorded)

@@ -58,7 +58,7 @@ template <class = void> int save_canvas_pgm(const canvas_t *canvas, const char *
 template <class = void> int save_canvas_to_pgm(const canvas_t *canvas, const char *path) { return canvas_save_pgm(canvas, path); }
 
 // ---- the report's canvas.h also declared draw_line_f ------------------------------------
-// Its home is now lines.h (the lines module draws on the canvas; the canvas module knows
+// Its home is lines.h (the lines module draws on the canvas; the canvas module knows
 // nothing of lines). Included here so that a program written for the report that includes
 // canvas.h alone still calls draw_line_f (and the 7-argument form, compat/lines_alias.h).
 // lines.h includes canvas.h itself, so either order of inclusion gives both complete.

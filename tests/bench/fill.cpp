@@ -1,6 +1,6 @@
 // fill.cpp — filled-triangle costs against accuracy:
 //  * fill rate: 16 full-screen opaque quads (32 triangles) at 1024², each nearer than the
-//    last, depth LESS — half-space (SSE2) fast path, the seed's scan-line fill, and the
+//    last, depth LESS — half-space (SSE2) fast path, the faithful scan-line fill, and the
 //    exact 64-bit visitor; ns per pixel (Gpixel/s printed);
 //  * triangle fill: 2,000 seeded random triangles on 512², scan-line vs half-space vs the
 //    double-precision per-pixel ray cast (reference: centre inside the unsnapped triangle);
@@ -115,7 +115,7 @@ int main(int argc, char **argv) {
         const auto es = image_error();
         const bench::timing tf = bench::measure_ns(repeats, pixels, [&] { layers(fast); });
         const auto ef = image_error();
-        rows.push_back({"fill", "16 layers scan-line (seed 003)", "faithful", "ns/px", ts, es.first, es.second,
+        rows.push_back({"fill", "16 layers scan-line (edge walking)", "faithful", "ns/px", ts, es.first, es.second,
                         "abs intensity", ""});
         rows.push_back({"fill", "16 layers exact 64-bit visitor", "reference", "ns/px", te, 0, 0, "abs intensity", ""});
         rows.push_back({"fill", "16 layers half-space SSE2", "fast", "ns/px", tf, ef.first, ef.second, "abs intensity",
@@ -183,7 +183,7 @@ int main(int argc, char **argv) {
             for (const auto &t : tris) fill_triangle(*c, nullptr, t.data(), ones, depth_func::always, false, {0, 0, TRI_SIDE, TRI_SIDE});
         });
         const auto ef = coverage_error(*c, *ref);
-        rows.push_back({"fill", "triangles scan-line (seed 003)", "faithful", "ns/tri", ts, es.first, es.second,
+        rows.push_back({"fill", "triangles scan-line (edge walking)", "faithful", "ns/tri", ts, es.first, es.second,
                         "coverage fraction", "incl. canvas clear"});
         rows.push_back({"fill", "triangles raycast double", "reference", "ns/tri", tr, 0, 0, "coverage fraction",
                         "incl. canvas clear"});
@@ -213,7 +213,7 @@ int main(int argc, char **argv) {
             bench::timing per_px = t;
             const double n = static_cast<double>(covered);
             per_px.median /= n, per_px.min /= n, per_px.max /= n;
-            rows.push_back({"fill", perspective ? "texture perspective-correct" : "texture affine (seed 004)",
+            rows.push_back({"fill", perspective ? "texture perspective-correct" : "texture affine (screen-space u, v)",
                             perspective ? "fast" : "faithful", "ns/textured px", per_px, sum / n, worst, "abs u", ""});
         }
     }
