@@ -299,17 +299,23 @@ draw_plan render_context::impl::plan_draw(std::size_t units, bool clustered) {
 
 // One band: cleared if the frame has not been yet (and `clear`: not already done while
 // waiting for the set-up), then the draw's triangles that reach it, piece after piece
-// (submission order).
-void render_context::impl::draw_band(int band, const draw_params &p, const draw_plan &plan, bool clear) {
+// (submission order), while the lines of band `next` (this thread's next, or −1) are
+// fetched for its clear.
+void render_context::impl::draw_band(int band, const draw_params &p, const draw_plan &plan, bool clear, int next) {
     const int y0 = bands.y0(band), y1 = bands.y0(band + 1);
     if (clear && pending_clear) clear_band(band);
+    band_prefetch ahead;  // the next band, when it is still to be cleared
+    if (pending_clear && next >= 0 && next < bands.count) {
+        const int n0 = bands.y0(next), n1 = bands.y0(next + 1);
+        ahead = band_prefetch(target->pixels[n0], depth.row(n0), static_cast<std::size_t>(n1 - n0) * target->width);
+    }
     const bool generic = p.shade == shading::phong || p.tex != nullptr || p.alpha < 1.0f;  // (translucent: no bins)
     for (int number = plan.first; number < plan.first + plan.count; ++number) {
         const piece &from = pieces[static_cast<std::size_t>(number)];
         const std::vector<std::uint32_t> &bin = from.bins[band];
         if (!generic) {
             fill_fast_bin(*target, depth, from.fast.data(), from.wide.data(), bin.data(), bin.size(), p.depth, y0, y1,
-                          kernel);
+                          kernel, ahead);
             continue;
         }
         for (std::uint32_t index : bin) draw_generic_rows(*target, depth, p, from.generic[index & ~GENERIC_BIN], y0, y1);
@@ -352,15 +358,22 @@ void render_context::impl::set_up_and_draw(int thread, const raster_mesh &m, con
     }
     phase_counters::wait_for(counters.pieces_done, plan.count);
     const bool drop = counters.bad_indices.load(std::memory_order_relaxed);
-    auto draw = [&](int band, bool cleared) {
+    // Then the bands one ahead: a thread takes its next band before drawing the current
+    // one, so that it can fetch the next one's lines meanwhile.
+    int next = counters.next_band.fetch_add(1, std::memory_order_relaxed);
+    auto draw = [&](int band, bool cleared, int ahead) {
         if (drop) {
             if (pending_clear && !cleared) clear_band(band);
             return;
         }
-        draw_band(band, p, plan, !cleared);
+        draw_band(band, p, plan, !cleared, ahead);
     };
-    for (int k = 0; k < claimed_count; ++k) draw(claimed[k], true);
-    counters.hand_out(counters.next_band, bands.count, [&](int band) { draw(band, false); });
+    for (int k = 0; k < claimed_count; ++k) draw(claimed[k], true, k + 1 < claimed_count ? -1 : next);
+    while (next < bands.count) {
+        const int band = next;
+        next = counters.next_band.fetch_add(1, std::memory_order_relaxed);
+        draw(band, false, next);
+    }
 }
 
 // Translucent triangles wait for end_frame: the draw's per-pixel-path triangles, piece by

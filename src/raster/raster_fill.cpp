@@ -494,14 +494,17 @@ void fill_fast_rows(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, co
 }
 
 void fill_fast_bin(canvas_t &canvas, zbuffer &depth, const fast_triangle *tris, const triangle_edges *wide,
-                   const std::uint32_t *bin, std::size_t count, depth_func test, int y0, int y1, fill_kernel kernel) {
+                   const std::uint32_t *bin, std::size_t count, depth_func test, int y0, int y1, fill_kernel kernel,
+                   band_prefetch &ahead) {
 #ifdef TINY3D_AVX512
-    if (kernel == fill_kernel::avx512) return fill_fast_bin_avx512(canvas, depth, tris, wide, bin, count, test, y0, y1);
+    if (kernel == fill_kernel::avx512)
+        return fill_fast_bin_avx512(canvas, depth, tris, wide, bin, count, test, y0, y1, ahead);
 #endif
 #ifdef TINY3D_SSE2
     if (kernel != fill_kernel::portable) {
         with_depth_test(test, [&](auto t) {
             for (std::size_t k = 0; k < count; ++k) {
+                ahead.step();
                 const fast_triangle &f = tris[bin[k]];
                 const int first = std::max(y0, f.min_y), end = std::min(y1, f.max_y + 1);
                 if (first >= end) continue;
@@ -513,6 +516,7 @@ void fill_fast_bin(canvas_t &canvas, zbuffer &depth, const fast_triangle *tris, 
     }
 #endif
     for (std::size_t k = 0; k < count; ++k) {
+        ahead.step();
         const fast_triangle &f = tris[bin[k]];
         fill_fast_rows(canvas, &depth, f, f.wide >= 0 ? &wide[f.wide] : nullptr, test, true, y0, y1, kernel);
     }

@@ -124,9 +124,11 @@ void fill_rows_narrow_avx512(canvas_t &canvas, zbuffer *depth, const fast_triang
 }
 
 void fill_fast_bin_avx512(canvas_t &canvas, zbuffer &depth, const fast_triangle *tris, const triangle_edges *wide,
-                          const std::uint32_t *bin, std::size_t count, depth_func test, int y0, int y1) {
+                          const std::uint32_t *bin, std::size_t count, depth_func test, int y0, int y1,
+                          band_prefetch &ahead) {
     with_depth_test(test, [&](auto t) {
         for (std::size_t k = 0; k < count; ++k) {
+            ahead.step();
             const fast_triangle &f = tris[bin[k]];
             if (k + 6 < count) {
                 _mm_prefetch(reinterpret_cast<const char *>(&tris[bin[k + 6]]), _MM_HINT_T0);

@@ -120,7 +120,7 @@ struct render_context::impl {
     detail::draw_plan plan_draw(std::size_t units, bool clustered);
     void set_up_and_draw(int thread, const raster_mesh &m, const draw_params &p, const detail::vertex_job &job,
                          std::uint32_t state, const detail::cluster_view *view, const detail::draw_plan &plan);
-    void draw_band(int band, const draw_params &p, const detail::draw_plan &plan, bool clear);
+    void draw_band(int band, const draw_params &p, const detail::draw_plan &plan, bool clear, int next);
     void queue_translucent(const detail::draw_plan &plan);
     void gather_stats(const detail::draw_plan &plan);
 
