@@ -3,8 +3,9 @@
 // Gouraud Lambert (ambient 0.1, light towards (1, 1, 1)), depth LESS, back-face culling,
 // colour and depth cleared every frame, mesh turned 1° about +y per frame; 5 warm-up and 50
 // timed frames (median, min, max ms); one and two threads, with cluster culling
-// (make_raster_clusters, built once before timing) and, for comparison, without; frame time
-// against triangle count for levels 3–7. Only what this program measures is printed; other
+// (make_raster_clusters, built once before timing) and, for comparison, without, and with
+// the SSE2 fill forced on a CPU that has a faster one (what CPUs without AVX-512 get); frame
+// time against triangle count for levels 3–7. Only what this program measures is printed; other
 // renderers' figures are in documentation/benchmarks.md, with their source and date.
 // Error column: fraction of pixels where the two-thread frame differs from the one-thread
 // frame, or the frame without clusters from the frame with them (must be 0).
@@ -53,10 +54,12 @@ scene make_scene(const tiny3d::mesh &m) {
     return s;
 }
 
-// Times frames of the scene with `threads`, with or without its clusters; the last frame
-// stays in `canvas`.
-bench::timing time_frames(scene &s, int threads, canvas_t &canvas, int frames, bool clusters = true) {
+// Times frames of the scene with `threads`, with or without its clusters, filled with the
+// instruction set `simd`; the last frame stays in `canvas`.
+bench::timing time_frames(scene &s, int threads, canvas_t &canvas, int frames, bool clusters = true,
+                          tiny3d::raster_simd simd = tiny3d::best_raster_simd()) {
     tiny3d::render_context ctx(threads);
+    ctx.use_simd(simd);
     s.params.clusters = clusters ? &s.clusters : nullptr;
     int frame = 0;
     auto render = [&] {
@@ -135,6 +138,17 @@ int main(int argc, char **argv) {
         rows.push_back({"frame", w.name + " libtiny3d 2 threads, no clusters", "other", "ms/frame", t2_plain, diff2_plain,
                         diff2_plain, "px fraction", "error = pixels differing from the 1-thread frame with clusters",
                         "libtiny3d 2 threads, no clusters", tag});
+        // What a CPU without AVX-512 gets: the SSE2 fill (AVX2 CPUs run it too at 1 sample).
+        if (tiny3d::best_raster_simd() != tiny3d::raster_simd::sse2 && tiny3d::best_raster_simd() != tiny3d::raster_simd::portable) {
+            for (int threads : {1, 2}) {
+                const bench::timing t = time_frames(s, threads, *plain, frames, true, tiny3d::raster_simd::sse2);
+                const double diff = differing_fraction(*one, *plain);
+                const std::string name = " libtiny3d " + std::to_string(threads) + (threads == 1 ? " thread" : " threads");
+                rows.push_back({"frame", w.name + name + ", SSE2 kernel (CPUs without AVX-512)", "other", "ms/frame", t, diff,
+                                diff, "px fraction", "error = pixels differing from the frame of the best kernel",
+                                "libtiny3d" + name + ", SSE2 kernel", tag});
+            }
+        }
     }
     // Frame time against triangle count (one thread).
     std::printf("frame time vs triangle count (1 thread, median ms):\n");
