@@ -21,8 +21,8 @@ CPPFLAGS := -Iinclude -MMD -MP $(SIMD_FLAGS)
 OPT      ?= -O2
 # float-cast-overflow is not part of GCC's "undefined" group: out-of-range float→int is UB too.
 # -g1 (line tables only): reports still name file:line, and the sanitizer build — most of
-# `make test`'s time — compiles ~25 % faster than with full -g. -Og: the library compiles
-# ~35 % faster than at -O1 and the sanitized tests run as fast (32 s against 31 s, 2 cores).
+# `make test`'s time — compiles faster than with full -g. -Og: the library compiles faster
+# than at -O1 and the sanitized tests run as fast.
 SANFLAGS := -Og -g1 -fsanitize=address,undefined,float-cast-overflow -fno-omit-frame-pointer -fno-sanitize-recover=all
 LDLIBS   := -pthread
 
@@ -80,11 +80,11 @@ $(BUILD)/san/obj/%.o: %.cpp
 	$(CXX) $(STD) $(SANFLAGS) $(WARN) $(CPPFLAGS) -c $< -o $@
 
 # The test programs' own code (tests/*_test.cpp; not the library they test, not the
-# benchmarks) is compiled at -O0, plain and under the sanitizers: compiling the tests is
-# most of `make test`'s time, and they spend their run time in the library, which keeps
-# $(OPT) and SANFLAGS' -Og. With the precompiled prelude below, compiling eight of the
-# tests took 24 s of CPU against 54 s at -O2 / -O1 without it. (-O1 is no choice for the
-# plain build: GCC 12 then warns falsely of array bounds inside std::string.)
+# benchmarks) is compiled at -O0 with the precompiled prelude below, plain and under the
+# sanitizers: compiling the tests is most of `make test`'s time, -O0 and the prelude
+# compile them much faster than -O2 / -O1 without it, and the tests spend their run time
+# in the library, which keeps $(OPT) and SANFLAGS' -Og. (-O1 is no choice for the plain
+# build: GCC 12 then warns falsely of array bounds inside std::string.)
 TEST_OPT       ?= -O0
 SAN_TEST_FLAGS := $(subst -Og,-O0,$(SANFLAGS))
 # tests/test_prelude.h (the standard and library headers most tests include) is compiled

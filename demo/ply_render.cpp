@@ -1,4 +1,5 @@
-// ply_render — the PLY ray-cast lab (seed 002):
+// ply_render — the PLY ray-cast program (the lab exercise it reproduces: a ray per pixel,
+// z-buffer):
 //   ply_render FILE.ply RX RY RZ [OUT] [--method raycast|fast] [--size NxN]
 // Angles in degrees (rotation about X, then Y, then Z). Writes a 256×256 grey image (the
 // lab's size; --size changes it, square only): P6 PPM, or P5 PGM when OUT ends in .pgm;

@@ -1,7 +1,7 @@
-// lab.h — the library part of the PLY ray-cast lab (seed 002): its camera (eq. 1–12), the
-// faithful per-pixel ray caster (eq. 13–21), its fast projected-box variant and the
-// lab's image files. Implementation: src/lab/raster_lab.cpp; the program is
-// demo/ply_render.cpp.
+// lab.h — the library part of the PLY ray-cast program (the lab exercise it reproduces: a
+// ray per pixel, z-buffer): the lab's camera (eq. 1–12), the faithful per-pixel ray
+// caster (eq. 13–21), its fast projected-box variant and the lab's image files.
+// Implementation: src/lab/raster_lab.cpp; the program is demo/ply_render.cpp.
 //
 // Conventions: the lab's own (double precision, angles in radians); it uses the mesh
 // module and nothing of the render context (raster.h).

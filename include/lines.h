@@ -201,17 +201,18 @@ void draw_line_supersampled(canvas_t *canvas, float x0, float y0, float x1, floa
 // the segment spans. Pixel centres at +0.5 as above. Combined "over".
 void draw_line_wu(canvas_t *canvas, float x0, float y0, float x1, float y1, float intensity = 1.0f);
 
-// Integer Bresenham (seed 003, all eight octants by swapping axes and ends; one code path):
+// Integer Bresenham (all eight octants by swapping axes and ends; one code path):
 // sets pixels (x, y) from (x0, y0) to (x1, y1), both included, to `intensity` (clamped
 // 0..1). The chosen minor coordinate at major step k is round(k·dy/dx) with exact halves
 // rounded towards the start after ordering the ends by the major axis, so swapping the
 // endpoints gives the same pixel set. Any int coordinates (64/128-bit intermediates).
 void draw_line_bresenham(canvas_t *canvas, int x0, int y0, int x1, int y1, float intensity = 1.0f);
 
-// Seed 004's mixColors for intensities: a·(1 − t) + b·t with t clamped to 0..1.
+// The linear mix of two intensities (the gradient line's colour mix): a·(1 − t) + b·t
+// with t clamped to 0..1.
 float mix_intensity(float a, float b, float t);
 
-// Seed 004's gradient line: the Bresenham pixels of (x0, y0)–(x1, y1), each set to
+// The gradient line: the Bresenham pixels of (x0, y0)–(x1, y1), each set to
 // mix_intensity(intensity0, intensity1, k / n) for the k-th of the n + 1 pixels from
 // (x0, y0) (n = max(|dx|, |dy|); a single pixel takes intensity0).
 void draw_line_gradient(canvas_t *canvas, int x0, int y0, int x1, int y1, float intensity0, float intensity1);

@@ -1,7 +1,7 @@
 // scene.h — a flat scene: objects, lights and one camera, rendered into a canvas in one call.
 //
-// Seed 004's "scene graph" kept flat (no hierarchy: no demo needs one). An object is a mesh
-// plus its model matrix plus how to draw it:
+// A scene graph kept flat (no hierarchy: no demo needs one). An object is a mesh plus its
+// model matrix plus how to draw it:
 //  * wireframe — the mesh's edges through tiny3d::render_wireframe, each edge's ink from
 //    the lighting module: the corrected model (edge normal = mean of the adjacent faces'
 //    normals, shade_edge, with ambient) or the report's per-edge Lambert

@@ -1,6 +1,7 @@
-// raster_lab.cpp — the PLY ray-cast lab (seed 002): the lab's camera (eq. 1–12), its
-// per-pixel ray / plane / inside tests (eq. 13–21) with a z-buffer on n/d, and a fast path
-// that runs the very same per-pixel test only inside each triangle's projected box.
+// raster_lab.cpp — the PLY ray-cast program (the lab exercise it reproduces: a ray per
+// pixel, z-buffer): the lab's camera (eq. 1–12), its per-pixel ray / plane / inside tests
+// (eq. 13–21) with a z-buffer on n/d, and a fast path that runs the very same per-pixel
+// test only inside each triangle's projected box.
 #include <algorithm>
 #include <cmath>
 #include <limits>

@@ -1,7 +1,7 @@
-// line_thin.cpp — one-pixel lines: integer Bresenham (seed 003), the gradient line
-// (seed 004) and Xiaolin Wu's anti-aliased line. Each has one code path for all eight
-// octants: the axes are swapped so the line advances along "major" faster than along
-// "minor", and the ends are ordered along major.
+// line_thin.cpp — one-pixel lines: integer Bresenham, the gradient line and Xiaolin Wu's
+// anti-aliased line. Each has one code path for all eight octants: the axes are swapped so
+// the line advances along "major" faster than along "minor", and the ends are ordered along
+// major.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -38,7 +38,7 @@ struct oriented_canvas {
 // number of steps; `reversed` says the ends were swapped to order them along major.
 //
 // After ordering, the minor offset at step k is c_k = ceil((2k·dy − dx) / (2dx)) — the
-// closed form of seed 003's decision variable D (D_k = 2(k+1)dy − dx − 2dx·c_k; step up
+// closed form of Bresenham's decision variable D (D_k = 2(k+1)dy − dx − 2dx·c_k; step up
 // when D_k > 0) — so the walk can start at the first visible step without iterating up to
 // it.
 template <class Plot>

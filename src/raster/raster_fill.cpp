@@ -1,6 +1,6 @@
 // raster_fill.cpp — triangle setup (snapping, orientation, top-left bias), the half-space
 // fill with depth and affine intensity (SSE2 4-wide, scalar 64-bit fallback), and the
-// faithful scan-line fill of seed 003.
+// faithful scan-line fill (the classic edge-walking method).
 #include <algorithm>
 #include <cmath>
 
@@ -540,14 +540,14 @@ void fill_triangle(canvas_t &canvas, zbuffer *depth, const screen_vertex v[3], c
     detail::fill_fast_rows(canvas, depth, f, &t, test, depth_write, f.min_y, f.max_y + 1, detail::best_fill_kernel());
 }
 
-// ---- the faithful scan-line fill (seed 003) ---------------------------------------------
+// ---- the faithful scan-line fill (classic edge walking) ---------------------------------
 
 void fill_triangle_scanline(canvas_t &canvas, zbuffer *depth, const screen_vertex v[3], const float intensity[3],
                             depth_func test) {
     if (!canvas.pixels || (depth && (depth->width() != canvas.width || depth->height() != canvas.height))) return;
     for (int k = 0; k < 3; ++k)
         if (!usable(v[k]) || !std::isfinite(v[k].z) || !std::isfinite(intensity[k])) return;
-    // Sort by y (the seed's bubble sort), keeping each vertex's intensity with it.
+    // Sort by y (a bubble sort of the three), keeping each vertex's intensity with it.
     int order[3] = {0, 1, 2};
     if (v[order[0]].y > v[order[1]].y) std::swap(order[0], order[1]);
     if (v[order[1]].y > v[order[2]].y) std::swap(order[1], order[2]);
