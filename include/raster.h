@@ -369,10 +369,11 @@ inline multisample_simd best_multisample_simd() { return best_raster_simd(); }
 // Owns every reusable buffer (depth, transformed vertices, triangle setups, the
 // translucent queue) and a worker pool of threads − 1 threads created once. A frame:
 //   begin_frame(canvas) → draw(...)* → end_frame().
-// The canvas is split into horizontal 32-row bands; each thread owns blocks of bands, sets up
-// the triangles that reach them and draws them in submission order (a thread done with its
-// own bands draws another thread's remaining ones from that thread's set-up triangles), so
-// the image (and the stats) are identical for any thread count.
+// A draw's triangles are cut into pieces (runs of cluster chunks or of triangles) that the
+// threads take in turn and set up once each, binned by horizontal 32-row bands of the
+// canvas; then the threads take bands in turn, each band drawn by one thread piece after
+// piece in submission order, so the image (and the stats) are identical for any thread
+// count (documentation/raster.md, "Threads and buffers").
 // No allocation per frame once buffers have grown to the scene's size.
 class render_context {
 public:

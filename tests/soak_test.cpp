@@ -36,8 +36,7 @@ constexpr int SIDE = 128;              // px
 constexpr int FRAMES_PER_PATH = 1500;  // after warm-up, per path
 constexpr int WARMUP_FRAMES = 300;
 // Reused buffers may still grow a few times after warm-up when the random scene first hits
-// a new largest combination (with 2 threads, how triangles fall into bands varies with
-// timing: seen once in 1500 frames under ASan). Anything allocating per frame, even on a
+// a new largest combination of mesh and options. Anything allocating per frame, even on a
 // path taken by a tenth of the frames, makes 150+ allocations.
 constexpr std::size_t MAX_LATE_GROWTHS = 4;
 constexpr unsigned SEED = 20261123;
