@@ -19,29 +19,12 @@ using namespace tiny3d;
 
 namespace {
 
-struct rendered {
-    std::vector<float> colour, depth;
-    frame_stats stats;
-};
+using raster_test::rendered;
+using raster_test::same_frame;
 
 rendered render_frame(render_context &ctx, canvas_t &c, const raster_mesh &m, const draw_params &p) {
-    rendered r;
-    if (!raster_test::draw_frame(ctx, c, m, p, 0.05f).ok()) return r;
-    const std::size_t n = static_cast<std::size_t>(c.width) * c.height;
-    r.colour.assign(c.data, c.data + n);
-    r.depth.assign(ctx.depth().row(0), ctx.depth().row(0) + n);
-    r.stats = ctx.stats();
-    return r;
-}
-
-// Bit-identical pixels and depths, and equal stats apart from the cluster share.
-bool same_frame(const rendered &a, const rendered &b) {
-    auto bits_equal = [](const std::vector<float> &x, const std::vector<float> &y) {
-        return x.size() == y.size() && std::memcmp(x.data(), y.data(), x.size() * sizeof(float)) == 0;
-    };
-    return bits_equal(a.colour, b.colour) && bits_equal(a.depth, b.depth) && a.stats.triangles_in == b.stats.triangles_in &&
-           a.stats.culled_frustum == b.stats.culled_frustum && a.stats.culled_backface == b.stats.culled_backface &&
-           a.stats.clipped == b.stats.clipped && a.stats.rasterized == b.stats.rasterized;
+    if (!raster_test::draw_frame(ctx, c, m, p, 0.05f).ok()) return {};
+    return raster_test::capture(ctx, c);
 }
 
 draw_params scene_s_params() {

@@ -6,7 +6,9 @@
 #define TINY3D_RASTER_TEST_UTIL_H
 
 #include <cmath>
+#include <cstring>
 #include <span>
+#include <vector>
 
 #include "raster.h"
 
@@ -100,6 +102,34 @@ inline tiny3d::draw_params flat_params(float intensity) {
     p.lights = constant_light(intensity);
     p.shade = tiny3d::shading::flat;
     return p;
+}
+
+// A rendered frame: colour, depth and stats.
+struct rendered {
+    std::vector<float> colour, depth;
+    tiny3d::frame_stats stats;
+};
+
+// The frame `ctx` last drew into `c`.
+inline rendered capture(const tiny3d::render_context &ctx, const canvas_t &c) {
+    rendered r;
+    const std::size_t n = static_cast<std::size_t>(c.width) * c.height;
+    r.colour.assign(c.data, c.data + n);
+    r.depth.assign(ctx.depth().row(0), ctx.depth().row(0) + n);
+    r.stats = ctx.stats();
+    return r;
+}
+
+// Bit-identical pixels and depths and equal stats (with `cluster_share`, also the share
+// of back faces culled by cluster).
+inline bool same_frame(const rendered &a, const rendered &b, bool cluster_share = false) {
+    auto bits_equal = [](const std::vector<float> &x, const std::vector<float> &y) {
+        return x.size() == y.size() && std::memcmp(x.data(), y.data(), x.size() * sizeof(float)) == 0;
+    };
+    return bits_equal(a.colour, b.colour) && bits_equal(a.depth, b.depth) && a.stats.triangles_in == b.stats.triangles_in &&
+           a.stats.culled_frustum == b.stats.culled_frustum && a.stats.culled_backface == b.stats.culled_backface &&
+           a.stats.clipped == b.stats.clipped && a.stats.rasterized == b.stats.rasterized &&
+           (!cluster_share || a.stats.backface_by_cluster == b.stats.backface_by_cluster);
 }
 
 }  // namespace raster_test

@@ -26,20 +26,10 @@ using namespace tiny3d;
 
 namespace {
 
-struct rendered {
-    std::vector<float> colour, depth;
-    frame_stats stats;
-};
+using raster_test::rendered;
 
-bool same(const rendered &a, const rendered &b) {
-    auto bits_equal = [](const std::vector<float> &x, const std::vector<float> &y) {
-        return x.size() == y.size() && std::memcmp(x.data(), y.data(), x.size() * sizeof(float)) == 0;
-    };
-    return bits_equal(a.colour, b.colour) && bits_equal(a.depth, b.depth) && a.stats.triangles_in == b.stats.triangles_in &&
-           a.stats.culled_frustum == b.stats.culled_frustum && a.stats.culled_backface == b.stats.culled_backface &&
-           a.stats.clipped == b.stats.clipped && a.stats.rasterized == b.stats.rasterized &&
-           a.stats.backface_by_cluster == b.stats.backface_by_cluster;
-}
+// Bit-identical frames, stats included (the share culled by cluster too).
+bool same(const rendered &a, const rendered &b) { return raster_test::same_frame(a, b, true); }
 
 struct draw_call {
     const raster_mesh *mesh;
@@ -51,15 +41,10 @@ rendered render(int threads, canvas_t &c, const std::vector<draw_call> &draws, s
                 raster_simd simd = best_raster_simd()) {
     render_context ctx(threads);
     ctx.use_simd(simd);
-    rendered r;
-    if (!ctx.begin_frame(c, 0.05f, n).ok()) return r;
+    if (!ctx.begin_frame(c, 0.05f, n).ok()) return {};
     for (const draw_call &d : draws) ctx.draw(*d.mesh, d.params);
     ctx.end_frame();
-    const std::size_t pixels = static_cast<std::size_t>(c.width) * c.height;
-    r.colour.assign(c.data, c.data + pixels);
-    r.depth.assign(ctx.depth().row(0), ctx.depth().row(0) + pixels);
-    r.stats = ctx.stats();
-    return r;
+    return raster_test::capture(ctx, c);
 }
 
 draw_params scene_s_params(float angle) {
