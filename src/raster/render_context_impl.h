@@ -74,7 +74,7 @@ struct render_context::impl {
     float guard = 1.0f;
     frame_stats stats;
     // Multisampling (raster_multisample.cpp): the frame's pattern. draw() then only sets up
-    // and bins (the segments keep every draw's triangles until end_frame); end_frame() draws
+    // and bins (the pieces keep every draw's triangles until end_frame); end_frame() draws
     // band by band into a per-thread tile of samples and resolves it.
     const detail::sample_pattern *pattern = &detail::pattern_of(1);
     detail::sample_store tiles[detail::MAX_THREADS];
@@ -149,15 +149,16 @@ struct render_context::impl {
     }
     void emit(const clip_vertex *poly, int n, const draw_params &p, std::uint32_t state, bool generic, piece &out);
 
-    // Multisampled frames (raster_multisample.cpp).
-    // Appends f (made by make_msaa_triangle: either form) with the draw state and bins it.
-    void add_msaa(detail::msaa_triangle &f, std::uint32_t state, piece &out);
     // The last of out.generic (opaque) into the bins of rows [y0, y1] (inclusive).
     void bin_generic(int y0, int y1, piece &out) {
         if (y0 > y1) return;
         const std::uint32_t index = static_cast<std::uint32_t>(out.generic.size() - 1) | detail::GENERIC_BIN;
         for (int b = bands.of(y0); b <= bands.of(y1); ++b) out.bins[b].push_back(index);
     }
+
+    // Multisampled frames (raster_multisample.cpp).
+    // Appends f (made by make_msaa_triangle: either form) with the draw state and bins it.
+    void add_msaa(detail::msaa_triangle &f, std::uint32_t state, piece &out);
     void draw_multisampled_band(int band, detail::sample_store &tile);
     void end_multisampled_frame();
 };
