@@ -180,7 +180,6 @@ cluster_view make_cluster_view(const mat4_t &mvp, int width, int height, float g
     }
     v.half_w = 0.5 * width;
     v.half_h = 0.5 * height;
-    v.height = height;
     double minor[4];
     for (int skip = 0; skip < 4; ++skip) {
         double a[3], b[3], c[3];
@@ -239,11 +238,6 @@ cluster_verdict classify_cluster(const cluster_view &v, const raster_cluster &c)
     };
     const double delta = SNAP_ERROR + std::max(screen_error(0, v.half_w), screen_error(1, v.half_h));
     if (!(delta < MAX_PERTURBATION)) return out;
-    // A candidate row holds a pixel centre within the snapped y range, which is within delta
-    // (< ½ px) of the screen y range [hh·(1 − hi), hh·(1 − lo)].
-    const double last_row = v.height - 1;
-    out.row0 = static_cast<int>(std::clamp(std::floor(v.half_h * (1 - hi[1])) - 1, 0.0, last_row + 1));
-    out.row1 = static_cast<int>(std::clamp(std::ceil(v.half_h * (1 - lo[1])) + 1, -1.0, last_row));
     out.inside = true;
     if (!v.cone_usable || !c.cone_valid) return out;
     // Every triangle's n·(p − eye) ≥ |u|·cos(α + θ) + apex_margin, u = apex − eye (raster.h).

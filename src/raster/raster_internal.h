@@ -270,16 +270,13 @@ struct cluster_view {
     double area_scale;        // hw·hh·|κ|: a triangle's screen double area (px²) is
                               // area_scale · |N| · n·(p − eye) / (w0·w1·w2)
     double half_w, half_h;
-    int height;
     bool cone_usable;         // a perspective eye with front = counter-clockwise, and cull_mode::back
 };
 cluster_view make_cluster_view(const mat4_t &mvp, int width, int height, float guard, cull_mode cull);
 
 struct cluster_verdict {
-    bool inside = false;      // every vertex has outcode 0 (inside near, far and guard band)
-    bool back = false;        // inside, and every triangle's snapped area is nonzero and back-facing
-    int row0 = 0, row1 = -1;  // when inside: every candidate row of every triangle, clamped to
-                              // the target (row0 > row1: none on it)
+    bool inside = false;  // every vertex has outcode 0 (inside near, far and guard band)
+    bool back = false;    // inside, and every triangle's snapped area is nonzero and back-facing
 };
 // Conservative: `inside` and `back` are claimed only when the float transform and the 1/16 px
 // snapping of render_context cannot make any triangle of the chunk decide otherwise.
