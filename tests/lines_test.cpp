@@ -1,6 +1,6 @@
 // lines_test.cpp — the exact-coverage line against its double-precision reference, the
 // reference against geometry and supersampling, the faithful line's pinned flaws, Wu,
-// Bresenham (all octants vs seed 003's algorithm), the gradient line, clipping.
+// Bresenham (all octants vs the classic plotLine), the gradient line, clipping.
 #include "harness.h"
 
 #include <algorithm>
@@ -351,7 +351,7 @@ TEST(wu_weights) {
 
 namespace {
 
-// Seed 003's plotLine, transcribed as written (steep swap, end swap, yi sign), unclipped.
+// The classic integer plotLine (all octants), transcribed as written (steep swap, end swap, yi sign), unclipped.
 std::set<std::pair<int, int>> seed_bresenham(int x0, int y0, int x1, int y1) {
     std::set<std::pair<int, int>> out;
     bool steep = false;

@@ -107,7 +107,7 @@ TEST(normalize_stability_zero_tiny_huge_denormal_nonfinite) {
 
 namespace {
 
-// The report's listings (seed 000, Task 2), transcribed with std::bit_cast for the
+// The libtiny3d report's listings (Task 2), transcribed with std::bit_cast for the
 // pointer punning: the global functions must reproduce them bit for bit on ordinary input.
 vec3_t report_normalize_fast(vec3_t v) {
     const float squared_length = v.x * v.x + v.y * v.y + v.z * v.z;

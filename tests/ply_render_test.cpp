@@ -1,4 +1,4 @@
-// ply_render_test.cpp — the PLY lab (seed 002): camera equations against hand values, the
+// ply_render_test.cpp — the PLY ray-cast program: camera equations against hand values, the
 // fast path equal to the per-pixel ray cast on shipped and generated meshes at several
 // rotations, the same image from ascii, both binary byte orders and reordered headers,
 // and the program's exit codes.
