@@ -8,7 +8,10 @@
 //  * every 1-sample kernel this CPU runs (raster_simd) gives the SSE2 kernel's pixels bit
 //    for bit under every depth test, and the portable kernel the same coverage with depth
 //    and intensity within 2e-6 of them (depth test always), on random triangles of every
-//    width (narrow ones with 1–4 groups of four, wide ones, ones at the canvas' right edge).
+//    width (narrow ones with 1–4 groups of four, wide ones, ones at the canvas' right edge);
+//  * the AVX-512 set-up of eight triangles at once gives setup_fast_triangle's verdicts and
+//    fast triangles bit for bit (random snapped triangles: small, large, too wide, off the
+//    clip rectangle, with horizontal edges, either orientation).
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -21,6 +24,8 @@
 #include "mesh.h"
 #include "raster.h"
 #include "raster_test_util.h"
+#include "../src/raster/raster_internal.h"
+#include "../src/simd_config.h"
 
 using namespace tiny3d;
 
@@ -182,4 +187,66 @@ TEST(one_sample_kernels_give_the_sse2_pixels_and_the_portable_coverage) {
         }
     }
     CHECK(compared >= (best_raster_simd() == raster_simd::avx512 ? 56 : 0));
+}
+
+TEST(batched_setup_gives_the_scalar_setup_bit_for_bit) {
+#ifdef TINY3D_AVX512
+    if (!detail::fill_kernel_runs(raster_simd::avx512)) return;
+    std::mt19937 rng(20261203);
+    const pixel_rect clip{3, 5, 250, 200};
+    int compared = 0, scalar = 0, ready = 0;
+    for (int round = 0; round < 4000; ++round) {
+        detail::setup_batch batch;
+        std::uniform_int_distribution<int> count_of(1, detail::SETUP_BATCH), coin(0, 7);
+        const int count = count_of(rng);
+        for (int l = 0; l < count; ++l) {
+            // Vertices on the 1/16 px grid around a point of the clip rectangle, spans of
+            // 2 px to ~2,100 px (past the fast path's limit), some rows or columns shared.
+            const int reach = coin(rng) == 0 ? 34000 : (coin(rng) < 4 ? 200 : 2000);
+            std::uniform_int_distribution<int> centre(-400, 4400), offset(-reach, reach);
+            const int cx = centre(rng), cy = centre(rng);
+            std::int32_t X[3], Y[3];
+            for (int k = 0; k < 3; ++k) X[k] = cx + offset(rng), Y[k] = cy + offset(rng);
+            if (coin(rng) == 0) Y[1] = Y[0];  // a horizontal edge
+            if (coin(rng) == 0) X[2] = X[1];  // a vertical one
+            std::int64_t area2 = detail::snapped_area2(X, Y);
+            if (area2 == 0) X[2] += 16, area2 = detail::snapped_area2(X, Y);
+            if (area2 == 0) continue;
+            std::uniform_real_distribution<float> value(0.0f, 1.0f);
+            const float depth[3] = {value(rng), value(rng), value(rng)}, shade[3] = {value(rng), value(rng), value(rng)};
+            batch.add(X, Y, area2, depth, shade);
+        }
+        detail::fast_setup verdict[detail::SETUP_BATCH];
+        detail::fast_triangle batched[detail::SETUP_BATCH];
+        detail::setup_fast_batch_avx512(batch, clip, verdict, batched);
+        for (int l = 0; l < batch.count; ++l) {
+            const std::int32_t X[3] = {batch.X[0][l], batch.X[1][l], batch.X[2][l]};
+            const std::int32_t Y[3] = {batch.Y[0][l], batch.Y[1][l], batch.Y[2][l]};
+            const float depth[3] = {batch.depth[0][l], batch.depth[1][l], batch.depth[2][l]};
+            const float shade[3] = {batch.shade[0][l], batch.shade[1][l], batch.shade[2][l]};
+            detail::fast_triangle one;
+            const detail::fast_setup expected = detail::setup_fast_triangle(X, Y, batch.area2[l], clip, depth, shade, one);
+            if (verdict[l] == detail::fast_setup::scalar) {  // allowed only for a horizontal edge
+                CHECK(X[0] == X[1] || Y[0] == Y[1] || Y[1] == Y[2] || Y[2] == Y[0]);
+                ++scalar;
+                continue;
+            }
+            CHECK(verdict[l] == expected);
+            ++compared;
+            if (expected != detail::fast_setup::ready) continue;
+            ++ready;
+            const detail::fast_triangle &b = batched[l];
+            CHECK(b.min_x == one.min_x && b.max_x == one.max_x && b.min_y == one.min_y && b.max_y == one.max_y);
+            CHECK(std::memcmp(b.cross, one.cross, sizeof one.cross) == 0);
+            CHECK(std::memcmp(b.cross_step, one.cross_step, sizeof one.cross_step) == 0);
+            const float planes_b[6] = {b.z, b.zdx, b.zdy, b.i, b.idx, b.idy};
+            const float planes_one[6] = {one.z, one.zdx, one.zdy, one.i, one.idx, one.idy};
+            CHECK(std::memcmp(planes_b, planes_one, sizeof planes_b) == 0);
+            CHECK(b.wide == one.wide);
+        }
+    }
+    CHECK(ready > 2000);
+    CHECK(scalar > 100);
+    CHECK(compared > 10000);
+#endif
 }

@@ -190,6 +190,41 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
     const float *vertex_attr = from.vertex_attr.data();
     const pixel_rect full{0, 0, target->width, target->height};
     const std::int64_t last_row = target->height - 1;
+    // A fast triangle's set-up verdict, acted on: binned, or too wide for the fast path.
+    auto finish = [&](fast_setup verdict, const fast_triangle &f, const std::int32_t X[3], const std::int32_t Y[3],
+                      const float depth[3], const float shade[3]) {
+        if (verdict == fast_setup::ready) {
+            out.stats.rasterized += 1;
+            bin_fast(f, out);
+        } else if (verdict == fast_setup::wide) {
+            const triangle_edges t = detail::triangle_setup_snapped(X, Y, full, p.cull);
+            if (!t.valid) return;
+            out.stats.rasterized += 1;
+            add_fast(t, depth, shade, out);
+        }
+    };
+    // With the AVX-512 kernels, fast triangles are set up eight at a time (in submission
+    // order: the batch is finished before a clipped triangle and at the end).
+    setup_batch batch;
+    [[maybe_unused]] const bool batched = kernel == fill_kernel::avx512 && !msaa;
+    auto finish_batch = [&] {
+#ifdef TINY3D_AVX512
+        if (batch.count == 0) return;
+        fast_setup verdict[SETUP_BATCH];
+        fast_triangle set_up[SETUP_BATCH];
+        setup_fast_batch_avx512(batch, full, verdict, set_up);
+        for (int l = 0; l < batch.count; ++l) {
+            const std::int32_t X[3] = {batch.X[0][l], batch.X[1][l], batch.X[2][l]};
+            const std::int32_t Y[3] = {batch.Y[0][l], batch.Y[1][l], batch.Y[2][l]};
+            const float depth[3] = {batch.depth[0][l], batch.depth[1][l], batch.depth[2][l]};
+            const float shade[3] = {batch.shade[0][l], batch.shade[1][l], batch.shade[2][l]};
+            if (verdict[l] == fast_setup::scalar)
+                verdict[l] = detail::setup_fast_triangle(X, Y, batch.area2[l], full, depth, shade, set_up[l]);
+            finish(verdict[l], set_up[l], X, Y, depth, shade);
+        }
+        batch.count = 0;
+#endif
+    };
     for (std::size_t i = first; i < last; ++i) {
         const std::array<std::uint32_t, 3> &tri = m.triangles[i];
         const detail::xvertex &a = vertices[tri[0]], &b = vertices[tri[1]], &c = vertices[tri[2]];
@@ -231,23 +266,18 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
             const std::int64_t row1 = std::min<std::int64_t>(
                 (std::max({Y[0], Y[1], Y[2]}) - RASTER_SUBPIXEL_ONE / 2) >> RASTER_SUBPIXEL_BITS, last_row);
             if (row0 > row1) continue;
+            if (batched) {
+                batch.add(X, Y, area2, depth, shade);
+                if (batch.count == SETUP_BATCH) finish_batch();
+                continue;
+            }
             // Set up in a local and appended when ready (set up in place at the list's end,
             // emplace_back() zeroed each entry first, out of line).
             detail::fast_triangle f;
-            const detail::fast_setup verdict = detail::setup_fast_triangle(X, Y, area2, full, depth, shade, f);
-            if (verdict == detail::fast_setup::ready) {
-                out.stats.rasterized += 1;
-                bin_fast(f, out);
-                continue;
-            }
-            if (verdict == detail::fast_setup::wide) {
-                const triangle_edges t = detail::triangle_setup_snapped(X, Y, full, p.cull);
-                if (!t.valid) continue;
-                out.stats.rasterized += 1;
-                add_fast(t, depth, shade, out);
-            }
+            finish(detail::setup_fast_triangle(X, Y, area2, full, depth, shade, f), f, X, Y, depth, shade);
             continue;
         }
+        finish_batch();
         clip_vertex in[3];
         for (int j = 0; j < 3; ++j) {
             const detail::xvertex &x = vertices[tri[j]];
@@ -263,6 +293,7 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
         const int n = planes ? clip_polygon(in, 3, planes, guard, ATTR_COUNT, poly) : 3;
         emit(planes ? poly : in, n, p, state, generic, out);
     }
+    finish_batch();
 }
 
 // ---- the steps of a draw -------------------------------------------------------------------

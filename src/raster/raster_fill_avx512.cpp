@@ -142,6 +142,159 @@ void fill_fast_bin_avx512(canvas_t &canvas, zbuffer &depth, const fast_triangle 
     });
 }
 
+// ---- eight triangles' set-up at once ----------------------------------------------------
+
+namespace {
+
+inline __m512i widen(__m256i v) { return _mm512_cvtepi32_epi64(v); }
+inline __m512d to_double(__m256i v) { return _mm512_cvtepi32_pd(v); }
+inline __m512d negate(__m512d v) { return _mm512_xor_pd(v, _mm512_set1_pd(-0.0)); }  // −x, as the scalar −x
+
+// Edge k of setup_fast_triangle (snapped_edge_at at the centre (cx, cy)), eight lanes: its
+// dx, dy (32 bits: the fast path's boxes are < 2^15) and value e (64 bits).
+struct lane_edges {
+    __m256i dx, dy;
+    __m512i e;
+};
+inline lane_edges edge_at(__m256i s, __m256i xa, __m256i ya, __m256i xb, __m256i yb, __m256i cx, __m256i cy) {
+    lane_edges g;
+    g.dx = _mm256_mullo_epi32(s, _mm256_sub_epi32(xb, xa));
+    g.dy = _mm256_mullo_epi32(s, _mm256_sub_epi32(yb, ya));
+    const __m512i e = _mm512_sub_epi64(_mm512_mul_epi32(widen(g.dx), widen(_mm256_sub_epi32(cy, ya))),
+                                       _mm512_mul_epi32(widen(g.dy), widen(_mm256_sub_epi32(cx, xa))));
+    // top_left_edge: dy < 0, or dy = 0 and dx > 0: bias 0, else 1.
+    const __m256i zero = _mm256_setzero_si256();
+    const __mmask8 top_left = static_cast<__mmask8>(_mm256_cmplt_epi32_mask(g.dy, zero) |
+                                                    (_mm256_cmpeq_epi32_mask(g.dy, zero) & _mm256_cmpgt_epi32_mask(g.dx, zero)));
+    g.e = _mm512_mask_sub_epi64(e, static_cast<__mmask8>(~top_left), e, _mm512_set1_epi64(1));
+    return g;
+}
+
+// set_crossing's value and step for edge g (not horizontal): sign·(−e/a), sign·(−b/a) with
+// a = −16·dy, b = 16·dx, sign = +1 for a left edge (a > 0), −1 for a right one.
+inline void crossing_of(const lane_edges &g, __m512d &cross, __m512d &step) {
+    const __m512d a = to_double(_mm256_mullo_epi32(g.dy, _mm256_set1_epi32(-RASTER_SUBPIXEL_ONE)));
+    const __m512d b = to_double(_mm256_mullo_epi32(g.dx, _mm256_set1_epi32(RASTER_SUBPIXEL_ONE)));
+    const __m512d inv_a = _mm512_div_pd(_mm512_set1_pd(1.0), a);
+    const __mmask8 left = _mm256_cmplt_epi32_mask(g.dy, _mm256_setzero_si256());
+    const __m512d sign = _mm512_mask_blend_pd(left, _mm512_set1_pd(-1.0), _mm512_set1_pd(1.0));
+    cross = _mm512_mul_pd(sign, _mm512_mul_pd(negate(_mm512_cvtepi64_pd(g.e)), inv_a));
+    step = _mm512_mul_pd(sign, _mm512_mul_pd(negate(b), inv_a));
+}
+
+// attribute_plane: the plane of f at the reference centre, its steps.
+inline void plane_of(const float *f0, const float *f1, const float *f2, __m512d d1x, __m512d d1y, __m512d d2x,
+                     __m512d d2y, __m512d inv_det, __m512d ref_dx, __m512d ref_dy, __m256 &at, __m256 &gx_f,
+                     __m256 &gy_f) {
+    const __m512d v0 = _mm512_cvtps_pd(_mm256_load_ps(f0));
+    const __m512d a1 = _mm512_sub_pd(_mm512_cvtps_pd(_mm256_load_ps(f1)), v0);
+    const __m512d a2 = _mm512_sub_pd(_mm512_cvtps_pd(_mm256_load_ps(f2)), v0);
+    const __m512d gx = _mm512_mul_pd(_mm512_sub_pd(_mm512_mul_pd(a1, d2y), _mm512_mul_pd(a2, d1y)), inv_det);
+    const __m512d gy = _mm512_mul_pd(_mm512_sub_pd(_mm512_mul_pd(a2, d1x), _mm512_mul_pd(a1, d2x)), inv_det);
+    const __m512d ref = _mm512_add_pd(_mm512_add_pd(v0, _mm512_mul_pd(gx, ref_dx)), _mm512_mul_pd(gy, ref_dy));
+    at = _mm512_cvtpd_ps(ref);
+    gx_f = _mm512_cvtpd_ps(gx);
+    gy_f = _mm512_cvtpd_ps(gy);
+}
+
+}  // namespace
+
+void setup_fast_batch_avx512(const setup_batch &in, pixel_rect clip, fast_setup verdict[SETUP_BATCH],
+                             fast_triangle out[SETUP_BATCH]) {
+    const __m256i X0 = _mm256_load_si256(reinterpret_cast<const __m256i *>(in.X[0]));
+    const __m256i X1 = _mm256_load_si256(reinterpret_cast<const __m256i *>(in.X[1]));
+    const __m256i X2 = _mm256_load_si256(reinterpret_cast<const __m256i *>(in.X[2]));
+    const __m256i Y0 = _mm256_load_si256(reinterpret_cast<const __m256i *>(in.Y[0]));
+    const __m256i Y1 = _mm256_load_si256(reinterpret_cast<const __m256i *>(in.Y[1]));
+    const __m256i Y2 = _mm256_load_si256(reinterpret_cast<const __m256i *>(in.Y[2]));
+    const __m256i min_X = _mm256_min_epi32(_mm256_min_epi32(X0, X1), X2), max_X = _mm256_max_epi32(_mm256_max_epi32(X0, X1), X2);
+    const __m256i min_Y = _mm256_min_epi32(_mm256_min_epi32(Y0, Y1), Y2), max_Y = _mm256_max_epi32(_mm256_max_epi32(Y0, Y1), Y2);
+    const __m256i limit = _mm256_set1_epi32(static_cast<int>(FAST_SPAN_LIMIT));
+    const __mmask8 wide = static_cast<__mmask8>(_mm256_cmpge_epi32_mask(_mm256_sub_epi32(max_X, min_X), limit) |
+                                                _mm256_cmpge_epi32_mask(_mm256_sub_epi32(max_Y, min_Y), limit));
+    // pixel_bounds: the pixels whose centre 16·p + 8 lies in [lo, hi], within the clip.
+    const __m256i half = _mm256_set1_epi32(RASTER_SUBPIXEL_ONE / 2), zero = _mm256_setzero_si256();
+    auto first_pixel = [&](__m256i lo, int clip0) {
+        return _mm256_max_epi32(_mm256_sub_epi32(zero, _mm256_srai_epi32(_mm256_sub_epi32(half, lo), RASTER_SUBPIXEL_BITS)),
+                                _mm256_set1_epi32(clip0));
+    };
+    auto last_pixel = [&](__m256i hi, int clip1) {
+        return _mm256_min_epi32(_mm256_srai_epi32(_mm256_sub_epi32(hi, half), RASTER_SUBPIXEL_BITS), _mm256_set1_epi32(clip1 - 1));
+    };
+    const __m256i min_x = first_pixel(min_X, clip.x0), max_x = last_pixel(max_X, clip.x1);
+    const __m256i min_y = first_pixel(min_Y, clip.y0), max_y = last_pixel(max_Y, clip.y1);
+    const __mmask8 empty = static_cast<__mmask8>(_mm256_cmpgt_epi32_mask(min_x, max_x) | _mm256_cmpgt_epi32_mask(min_y, max_y));
+    // Oriented by s = sign(area2), at the centre of pixel (min_x, min_y).
+    const __mmask8 positive = _mm512_cmpgt_epi64_mask(_mm512_load_si512(in.area2), _mm512_setzero_si512());
+    const __m256i s = _mm256_mask_blend_epi32(positive, _mm256_set1_epi32(-1), _mm256_set1_epi32(1));
+    const __m256i cx = _mm256_add_epi32(_mm256_slli_epi32(min_x, RASTER_SUBPIXEL_BITS), half);
+    const __m256i cy = _mm256_add_epi32(_mm256_slli_epi32(min_y, RASTER_SUBPIXEL_BITS), half);
+    const lane_edges g0 = edge_at(s, X1, Y1, X2, Y2, cx, cy);  // edge k from vertex k + 1 to k − 1
+    const lane_edges g1 = edge_at(s, X2, Y2, X0, Y0, cx, cy);
+    const lane_edges g2 = edge_at(s, X0, Y0, X1, Y1, cx, cy);
+    const __mmask8 horizontal = static_cast<__mmask8>(
+        _mm256_cmpeq_epi32_mask(g0.dy, zero) | _mm256_cmpeq_epi32_mask(g1.dy, zero) | _mm256_cmpeq_epi32_mask(g2.dy, zero));
+    // The crossings, in set_crossing's slots: left edges (dy < 0) to 0 then 2, right ones to
+    // 1 then 3, in edge order; the slot no edge takes holds NO_EDGE (clear_crossings).
+    __m512d c0, s0, c1, s1, c2, s2;
+    crossing_of(g0, c0, s0);
+    crossing_of(g1, c1, s1);
+    crossing_of(g2, c2, s2);
+    const __mmask8 L0 = _mm256_cmplt_epi32_mask(g0.dy, zero), L1 = _mm256_cmplt_epi32_mask(g1.dy, zero);
+    const __mmask8 L2 = _mm256_cmplt_epi32_mask(g2.dy, zero);
+    const __mmask8 slot_of[4][3] = {
+        {L0, static_cast<__mmask8>(L1 & ~L0), static_cast<__mmask8>(L2 & ~L0 & ~L1)},
+        {static_cast<__mmask8>(~L0), static_cast<__mmask8>(~L1 & L0), static_cast<__mmask8>(~L2 & L0 & L1)},
+        {0, static_cast<__mmask8>(L1 & L0), static_cast<__mmask8>(L2 & (L0 ^ L1))},
+        {0, static_cast<__mmask8>(~L1 & ~L0), static_cast<__mmask8>(~L2 & (L0 ^ L1))},
+    };
+    constexpr double NO_EDGE = -1e30;
+    alignas(64) double cross[4][SETUP_BATCH], cross_step[4][SETUP_BATCH];
+    for (int j = 0; j < 4; ++j) {
+        __m512d c = _mm512_set1_pd(NO_EDGE), st = _mm512_setzero_pd();
+        c = _mm512_mask_blend_pd(slot_of[j][0], c, c0), st = _mm512_mask_blend_pd(slot_of[j][0], st, s0);
+        c = _mm512_mask_blend_pd(slot_of[j][1], c, c1), st = _mm512_mask_blend_pd(slot_of[j][1], st, s1);
+        c = _mm512_mask_blend_pd(slot_of[j][2], c, c2), st = _mm512_mask_blend_pd(slot_of[j][2], st, s2);
+        _mm512_store_pd(cross[j], c);
+        _mm512_store_pd(cross_step[j], st);
+    }
+    // The planes through the snapped vertices (px), at the centre of pixel (min_x, min_y).
+    const __m512d step = _mm512_set1_pd(1.0 / RASTER_SUBPIXEL_ONE);
+    const __m512d x0 = _mm512_mul_pd(to_double(X0), step), x1 = _mm512_mul_pd(to_double(X1), step);
+    const __m512d x2 = _mm512_mul_pd(to_double(X2), step), y0 = _mm512_mul_pd(to_double(Y0), step);
+    const __m512d y1 = _mm512_mul_pd(to_double(Y1), step), y2 = _mm512_mul_pd(to_double(Y2), step);
+    const __m512d d1x = _mm512_sub_pd(x1, x0), d1y = _mm512_sub_pd(y1, y0);
+    const __m512d d2x = _mm512_sub_pd(x2, x0), d2y = _mm512_sub_pd(y2, y0);
+    const __m512d inv_det = _mm512_div_pd(_mm512_set1_pd(1.0), _mm512_sub_pd(_mm512_mul_pd(d1x, d2y), _mm512_mul_pd(d2x, d1y)));
+    const __m512d ref_dx = _mm512_sub_pd(_mm512_add_pd(to_double(min_x), _mm512_set1_pd(0.5)), x0);
+    const __m512d ref_dy = _mm512_sub_pd(_mm512_add_pd(to_double(min_y), _mm512_set1_pd(0.5)), y0);
+    alignas(32) float z[SETUP_BATCH], zdx[SETUP_BATCH], zdy[SETUP_BATCH], i[SETUP_BATCH], idx[SETUP_BATCH], idy[SETUP_BATCH];
+    __m256 at, gx, gy;
+    plane_of(in.depth[0], in.depth[1], in.depth[2], d1x, d1y, d2x, d2y, inv_det, ref_dx, ref_dy, at, gx, gy);
+    _mm256_store_ps(z, at), _mm256_store_ps(zdx, gx), _mm256_store_ps(zdy, gy);
+    plane_of(in.shade[0], in.shade[1], in.shade[2], d1x, d1y, d2x, d2y, inv_det, ref_dx, ref_dy, at, gx, gy);
+    _mm256_store_ps(i, at), _mm256_store_ps(idx, gx), _mm256_store_ps(idy, gy);
+    alignas(32) std::int32_t bounds[4][SETUP_BATCH];
+    _mm256_store_si256(reinterpret_cast<__m256i *>(bounds[0]), min_x);
+    _mm256_store_si256(reinterpret_cast<__m256i *>(bounds[1]), max_x);
+    _mm256_store_si256(reinterpret_cast<__m256i *>(bounds[2]), min_y);
+    _mm256_store_si256(reinterpret_cast<__m256i *>(bounds[3]), max_y);
+    for (int l = 0; l < in.count; ++l) {
+        const unsigned bit = 1u << l;
+        if (wide & bit) verdict[l] = fast_setup::wide;
+        else if (empty & bit) verdict[l] = fast_setup::empty;
+        else if (horizontal & bit) verdict[l] = fast_setup::scalar;
+        else {
+            verdict[l] = fast_setup::ready;
+            fast_triangle &f = out[l];
+            f.min_x = bounds[0][l], f.max_x = bounds[1][l], f.min_y = bounds[2][l], f.max_y = bounds[3][l];
+            for (int j = 0; j < 4; ++j) f.cross[j] = cross[j][l], f.cross_step[j] = cross_step[j][l];
+            f.z = z[l], f.zdx = zdx[l], f.zdy = zdy[l], f.i = i[l], f.idx = idx[l], f.idy = idy[l];
+            f.wide = -1;
+        }
+    }
+}
+
 }  // namespace tiny3d::detail
 
 #include "../avx512_region_close.inc"

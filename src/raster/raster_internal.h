@@ -171,9 +171,10 @@ bool make_fast_triangle(const triangle_edges &t, const float depth[3], const flo
 
 // setup_fast_triangle's verdict on one snapped triangle.
 enum class fast_setup {
-    ready,  // `out` is set
-    empty,  // no pixel centre inside (within the clip rectangle)
-    wide,   // too big for the fast path: use triangle_setup_snapped + make_fast_triangle
+    ready,   // `out` is set
+    empty,   // no pixel centre inside (within the clip rectangle)
+    wide,    // too big for the fast path: use triangle_setup_snapped + make_fast_triangle
+    scalar,  // (setup_fast_batch only) a horizontal edge: use setup_fast_triangle
 };
 
 // The fast path's setup straight from snapped, usable vertices (sub-pixel units) of
@@ -191,6 +192,31 @@ using fill_kernel = raster_simd;
 // multisample kernels, msaa.h).
 bool fill_kernel_runs(fill_kernel k);
 fill_kernel best_fill_kernel();
+
+// Up to SETUP_BATCH triangles for setup_fast_batch, one lane each: the arguments of
+// setup_fast_triangle (snapped vertices, area2, depths, shades), lane by lane.
+inline constexpr int SETUP_BATCH = 8;
+struct setup_batch {
+    alignas(64) std::int64_t area2[SETUP_BATCH] = {};
+    alignas(32) std::int32_t X[3][SETUP_BATCH] = {}, Y[3][SETUP_BATCH] = {};
+    alignas(32) float depth[3][SETUP_BATCH] = {}, shade[3][SETUP_BATCH] = {};
+    int count = 0;
+    void add(const std::int32_t x[3], const std::int32_t y[3], std::int64_t a2, const float z[3], const float i[3]) {
+        area2[count] = a2;
+        for (int k = 0; k < 3; ++k) X[k][count] = x[k], Y[k][count] = y[k], depth[k][count] = z[k], shade[k][count] = i[k];
+        ++count;
+    }
+};
+
+#ifdef TINY3D_AVX512
+// setup_fast_triangle for the first in.count lanes of `in` at once (AVX-512, eight lanes of
+// doubles: the same operations in the same order, so the same fast_triangle bit for bit and
+// the same verdict), except that a triangle with a horizontal edge gets fast_setup::scalar
+// (rare: its rows are cut in integers; setup_fast_triangle does it). Lanes at and after
+// in.count are left alone.
+void setup_fast_batch_avx512(const setup_batch &in, pixel_rect clip, fast_setup verdict[SETUP_BATCH],
+                             fast_triangle out[SETUP_BATCH]);
+#endif
 
 // Draws rows [y0, y1) ∩ [min_y, max_y] of the triangle with `kernel` (fill_kernel_runs).
 // `wide_edges` is the triangle's 64-bit edges when f.wide ≥ 0 (ignored otherwise).
