@@ -29,7 +29,8 @@ inline constexpr int MAX_BANDS = 128;
 static_assert(MAX_BANDS <= 256, "band_layout stores band numbers in 8 bits");
 // Pieces per thread in a draw on more than one thread: enough that a thread whose pieces
 // were cheap (back-facing chunks) takes more of them, few enough that the per-piece
-// bookkeeping (two offsets per band) stays small. One thread sets up a draw as one piece.
+// bookkeeping (a bin per band, visited by every band's draw) stays small. One thread sets
+// up a draw as one piece.
 inline constexpr int PIECES_PER_THREAD = 8;
 // Without clusters, a piece is at least this many triangles.
 inline constexpr std::size_t MIN_PIECE_TRIANGLES = 512;
