@@ -30,6 +30,10 @@ bool to_screen(const vec4_t &clip, int width, int height, screen_vertex &out) {
     return !p.behind;
 }
 
+// Whether a draw goes through the per-pixel path (Phong, a texture, translucency) rather
+// than the fast one.
+bool per_pixel_path(const draw_params &p) { return p.shade == shading::phong || p.tex != nullptr || p.alpha < 1.0f; }
+
 // The world position of a model-space point (the xyz part of model·(p, 1)).
 vec3_t world_of(const mat4_t &model, vec3_t p) {
     const vec4_t h = mul_point_scalar(model, p);
@@ -340,7 +344,7 @@ void render_context::impl::draw_band(int band, const draw_params &p, const draw_
         const int n0 = bands.y0(next), n1 = bands.y0(next + 1);
         ahead = band_prefetch(target->pixels[n0], depth.row(n0), static_cast<std::size_t>(n1 - n0) * target->width);
     }
-    const bool generic = p.shade == shading::phong || p.tex != nullptr || p.alpha < 1.0f;  // (translucent: no bins)
+    const bool generic = per_pixel_path(p);  // (translucent triangles are not binned)
     for (int number = plan.first; number < plan.first + plan.count; ++number) {
         const piece &from = pieces[static_cast<std::size_t>(number)];
         const std::vector<std::uint32_t> &bin = from.bins[band];
@@ -436,7 +440,7 @@ void render_context::draw(const raster_mesh &mesh, const draw_params &params) {
         s.stats.culled_frustum += mesh.triangles.size();
         return;
     }
-    const bool generic = params.shade == shading::phong || params.tex != nullptr || params.alpha < 1.0f;
+    const bool generic = per_pixel_path(params);
     const std::uint32_t state = static_cast<std::uint32_t>(s.states.size());
     s.states.push_back(params);
     // Cluster culling for the fast path, when the clusters were built from this mesh.
