@@ -371,9 +371,7 @@ void render_context::impl::set_up_and_draw(int thread, const raster_mesh &m, con
         const std::size_t blocks = (m.positions.size() + 63) / 64;
         const std::size_t first = std::min(m.positions.size(), blocks * thread / n * 64);
         const std::size_t last = std::min(m.positions.size(), blocks * (thread + 1) / n * 64);
-        segment &shared = segments[0];
-        detail::transform_vertices(m, p, job, guard, {nullptr, last - first, static_cast<std::uint32_t>(first)},
-                                   shared.vertices.data(), shared.clip.data(), shared.vertex_attr.data());
+        transform(m, p, job, {nullptr, last - first, static_cast<std::uint32_t>(first)}, segments[0]);
         counters.vertex_ranges_done.fetch_add(1, std::memory_order_release);
         phase_counters::wait_for(counters.vertex_ranges_done, n);
     }
