@@ -344,16 +344,20 @@ void render_context::impl::draw_band(int band, const draw_params &p, const draw_
         const int n0 = bands.y0(next), n1 = bands.y0(next + 1);
         ahead = band_prefetch(target->pixels[n0], depth.row(n0), static_cast<std::size_t>(n1 - n0) * target->width);
     }
-    const bool generic = per_pixel_path(p);  // (translucent triangles are not binned)
+    if (!per_pixel_path(p)) {  // one call for the band's bins of every piece (translucent triangles are not binned)
+        band_bin bins[PIECES_PER_THREAD * MAX_THREADS];  // (plan_draw: at most that many pieces)
+        int count = 0;
+        for (int number = plan.first; number < plan.first + plan.count; ++number) {
+            const piece &from = pieces[static_cast<std::size_t>(number)];
+            const std::vector<std::uint32_t> &bin = from.bins[band];
+            if (!bin.empty()) bins[count++] = {from.fast.data(), from.wide.data(), bin.data(), bin.size()};
+        }
+        fill_fast_bins(*target, depth, bins, count, p.depth, y0, y1, kernel, ahead);
+        return;
+    }
     for (int number = plan.first; number < plan.first + plan.count; ++number) {
         const piece &from = pieces[static_cast<std::size_t>(number)];
-        const std::vector<std::uint32_t> &bin = from.bins[band];
-        if (!generic) {
-            fill_fast_bin(*target, depth, from.fast.data(), from.wide.data(), bin.data(), bin.size(), p.depth, y0, y1,
-                          kernel, ahead);
-            continue;
-        }
-        for (std::uint32_t index : bin) draw_generic_rows(*target, depth, p, from.generic[index & ~GENERIC_BIN], y0, y1);
+        for (std::uint32_t index : from.bins[band]) draw_generic_rows(*target, depth, p, from.generic[index & ~GENERIC_BIN], y0, y1);
     }
 }
 

@@ -2,6 +2,7 @@
 // fill with depth and affine intensity (SSE2 4-wide, scalar 64-bit fallback), and the
 // faithful scan-line fill (the classic edge-walking method).
 #include <algorithm>
+#include <span>
 #include <cmath>
 
 #include "raster_internal.h"
@@ -493,33 +494,33 @@ void fill_fast_rows(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, co
 #endif
 }
 
-void fill_fast_bin(canvas_t &canvas, zbuffer &depth, const fast_triangle *tris, const triangle_edges *wide,
-                   const std::uint32_t *bin, std::size_t count, depth_func test, int y0, int y1, fill_kernel kernel,
-                   band_prefetch &ahead) {
+void fill_fast_bins(canvas_t &canvas, zbuffer &depth, const band_bin *bins, int bin_count, depth_func test, int y0,
+                    int y1, fill_kernel kernel, band_prefetch &ahead) {
 #ifdef TINY3D_AVX512
-    if (kernel == fill_kernel::avx512)
-        return fill_fast_bin_avx512(canvas, depth, tris, wide, bin, count, test, y0, y1, ahead);
+    if (kernel == fill_kernel::avx512) return fill_fast_bins_avx512(canvas, depth, bins, bin_count, test, y0, y1, ahead);
 #endif
 #ifdef TINY3D_SSE2
     if (kernel != fill_kernel::portable) {
         with_depth_test(test, [&](auto t) {
-            for (std::size_t k = 0; k < count; ++k) {
-                ahead.step();
-                const fast_triangle &f = tris[bin[k]];
-                const int first = std::max(y0, f.min_y), end = std::min(y1, f.max_y + 1);
-                if (first >= end) continue;
-                if (f.wide >= 0) fill_rows_scalar64(canvas, &depth, f, wide[f.wide], test, true, first, end);
-                else fill_rows_sse2_any<t.value, true>(canvas, &depth, f, true, first, end);
-            }
+            for (const band_bin &bin : std::span(bins, static_cast<std::size_t>(bin_count)))
+                for (std::size_t k = 0; k < bin.count; ++k) {
+                    ahead.step();
+                    const fast_triangle &f = bin.tris[bin.index[k]];
+                    const int first = std::max(y0, f.min_y), end = std::min(y1, f.max_y + 1);
+                    if (first >= end) continue;
+                    if (f.wide >= 0) fill_rows_scalar64(canvas, &depth, f, bin.wide[f.wide], test, true, first, end);
+                    else fill_rows_sse2_any<t.value, true>(canvas, &depth, f, true, first, end);
+                }
         });
         return;
     }
 #endif
-    for (std::size_t k = 0; k < count; ++k) {
-        ahead.step();
-        const fast_triangle &f = tris[bin[k]];
-        fill_fast_rows(canvas, &depth, f, f.wide >= 0 ? &wide[f.wide] : nullptr, test, true, y0, y1, kernel);
-    }
+    for (const band_bin &bin : std::span(bins, static_cast<std::size_t>(bin_count)))
+        for (std::size_t k = 0; k < bin.count; ++k) {
+            ahead.step();
+            const fast_triangle &f = bin.tris[bin.index[k]];
+            fill_fast_rows(canvas, &depth, f, f.wide >= 0 ? &bin.wide[f.wide] : nullptr, test, true, y0, y1, kernel);
+        }
 }
 
 }  // namespace detail

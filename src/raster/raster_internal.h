@@ -243,13 +243,20 @@ struct band_prefetch {
     }
 };
 
-// Draws rows [y0, y1) of the triangles tris[i] for each i of `bin`, in that order, with
-// depth (the render context's band loop): fill_fast_rows for each, the depth test and the
-// kernel chosen once; ahead.step() after each triangle. `wide` holds the 64-bit edges of
-// the triangles with wide ≥ 0.
-void fill_fast_bin(canvas_t &canvas, zbuffer &depth, const fast_triangle *tris, const triangle_edges *wide,
-                   const std::uint32_t *bin, std::size_t count, depth_func test, int y0, int y1, fill_kernel kernel,
-                   band_prefetch &ahead);
+// The triangles of one piece that reach a band: tris[index[k]] for k < count (count ≥ 1),
+// `wide` holding the 64-bit edges of the triangles with wide ≥ 0.
+struct band_bin {
+    const fast_triangle *tris = nullptr;
+    const triangle_edges *wide = nullptr;
+    const std::uint32_t *index = nullptr;
+    std::size_t count = 0;
+};
+
+// Draws rows [y0, y1) of every triangle of bins[0..bin_count) (none empty), bin after bin and
+// each in its order, with depth (the render context's band loop): fill_fast_rows for each,
+// the depth test and the kernel chosen once per band; ahead.step() after each triangle.
+void fill_fast_bins(canvas_t &canvas, zbuffer &depth, const band_bin *bins, int bin_count, depth_func test, int y0,
+                    int y1, fill_kernel kernel, band_prefetch &ahead);
 
 // Triangles at most NARROW_WIDTH px wide whose groups of four from min_x stay inside the
 // canvas (`width`) are drawn by the narrow kernels: every row as the same groups, the lanes
@@ -264,10 +271,9 @@ inline bool narrow_fits(const fast_triangle &f, int width) {
 // [y0, y1) within f's.
 void fill_rows_narrow_avx512(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, depth_func test,
                              bool depth_write, int y0, int y1);
-// fill_fast_bin with the AVX-512 kernel for the narrow triangles (SSE2's for the others).
-void fill_fast_bin_avx512(canvas_t &canvas, zbuffer &depth, const fast_triangle *tris, const triangle_edges *wide,
-                          const std::uint32_t *bin, std::size_t count, depth_func test, int y0, int y1,
-                          band_prefetch &ahead);
+// fill_fast_bins with the AVX-512 kernel for the narrow triangles (SSE2's for the others).
+void fill_fast_bins_avx512(canvas_t &canvas, zbuffer &depth, const band_bin *bins, int bin_count, depth_func test,
+                           int y0, int y1, band_prefetch &ahead);
 #endif
 
 // The depth and intensity planes through snapped (or any) vertices x, y (px), as the fast
