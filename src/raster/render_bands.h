@@ -48,8 +48,11 @@ struct band_layout {
         count = std::clamp(rows / band_rows, min_count, MAX_BANDS);
         count = std::min(count, std::max(rows, 1));
         if (row_band.size() < static_cast<std::size_t>(rows)) row_band.resize(rows);
-        for (int b = 0; b < count; ++b)
-            for (int y = y0(b); y < y0(b + 1); ++y) row_band[static_cast<std::size_t>(y)] = static_cast<std::uint8_t>(b);
+        for (int b = 0, end = y0(0); b < count; ++b) {  // (one division per band, not per row)
+            const int start = end;
+            end = y0(b + 1);
+            std::fill(row_band.begin() + start, row_band.begin() + end, static_cast<std::uint8_t>(b));
+        }
     }
     int of(int y) const { return row_band[static_cast<std::size_t>(y)]; }
     // First row of band b (b = count: the target's height).
