@@ -146,7 +146,7 @@ int main(int argc, char **argv) {
                 const std::string name = " libtiny3d " + std::to_string(threads) + (threads == 1 ? " thread" : " threads");
                 rows.push_back({"frame", w.name + name + ", SSE2 kernel (CPUs without AVX-512)", "other", "ms/frame", t, diff,
                                 diff, "px fraction", "error = pixels differing from the frame of the best kernel",
-                                "libtiny3d" + name + ", SSE2 kernel", tag});
+                                name.substr(1) + ", SSE2 kernel", tag});
             }
         }
     }
