@@ -2,8 +2,8 @@
 // fill with depth and affine intensity (SSE2 4-wide, scalar 64-bit fallback), and the
 // faithful scan-line fill (the classic edge-walking method).
 #include <algorithm>
-#include <span>
 #include <cmath>
+#include <span>
 
 #include "raster_internal.h"
 #include "../simd_config.h"
