@@ -203,10 +203,9 @@ cluster_view make_cluster_view(const mat4_t &mvp, int width, int height, float g
     return v;
 }
 
-cluster_verdict classify_cluster(const cluster_view &v, const raster_cluster &c) {
-    cluster_verdict out;
+bool cluster_back_facing(const cluster_view &v, const raster_cluster &c) {
     const double r = c.radius;
-    if (!(r < INFINITY)) return out;  // also NaN
+    if (!(r < INFINITY)) return false;  // also NaN
     const dvec3 center = load(c.center);
     const dvec3 abs_reach{std::fabs(center.x) + r, std::fabs(center.y) + r, std::fabs(center.z) + r};
     double at_center[4], magnitude[4];  // clip coordinate at the centre, and the sum of the
@@ -219,10 +218,10 @@ cluster_verdict classify_cluster(const cluster_view &v, const raster_cluster &c)
     for (int k = 0; k < 6; ++k) {
         const int a = v.plane_row[k];
         const double distance = dot(load(v.plane[k]), center) + v.plane[k][3] - v.plane_length[k] * r;
-        if (!(distance >= FLOAT_ERROR * (magnitude[a] + v.plane_guard[k] * magnitude[3]))) return out;
+        if (!(distance >= FLOAT_ERROR * (magnitude[a] + v.plane_guard[k] * magnitude[3]))) return false;
     }
     const double w_min = at_center[3] - v.row_length[3] * r, w_max = at_center[3] + v.row_length[3] * r;
-    if (!(w_min > 0)) return out;
+    if (!(w_min > 0)) return false;
     // Range of x/w (k = 0) or y/w (k = 1) over the sphere, x and w ranges taken independently.
     double lo[2], hi[2], largest[2];
     for (int k = 0; k < 2; ++k) {
@@ -237,14 +236,13 @@ cluster_verdict classify_cluster(const cluster_view &v, const raster_cluster &c)
         return half * FLOAT_ERROR * ((magnitude[k] + largest[k] * magnitude[3]) / w_min + largest[k] + 1);
     };
     const double delta = SNAP_ERROR + std::max(screen_error(0, v.half_w), screen_error(1, v.half_h));
-    if (!(delta < MAX_PERTURBATION)) return out;
-    out.inside = true;
-    if (!v.cone_usable || !c.cone_valid) return out;
+    if (!(delta < MAX_PERTURBATION)) return false;
+    if (!v.cone_usable || !c.cone_valid) return false;
     // Every triangle's n·(p − eye) ≥ |u|·cos(α + θ) + apex_margin, u = apex − eye (raster.h).
     const dvec3 axis = load(c.axis), u = load(c.apex) - load(v.eye);
     const double along = dot(u, axis), across = length(u - axis * along);
     const double h = c.cone_cos * along - c.cone_sin * across + c.apex_margin - v.eye_slack;
-    if (!(h > 0)) return out;
+    if (!(h > 0)) return false;
     // Triangle i's exact screen double area is ≥ area_scale·|N_i|·h / w_max³. Moving each
     // vertex by ≤ delta per axis (float transform and snapping) changes (b − a) × (c − a) by
     // ≤ 2·delta·(|b − a|₁ + |c − a|₁) + 8·delta², and a screen edge's |·|₁ is at most
@@ -256,8 +254,7 @@ cluster_verdict classify_cluster(const cluster_view &v, const raster_cluster &c)
     const double area_per_normal = v.area_scale * h / (w_max * w_max * w_max);
     const double change = 2 * delta * lipschitz * c.edge_ratio + 8 * delta * delta / c.min_double_area;
     constexpr double ROUNDING_FACTOR = 1 + 1e-9;  // the double evaluation of the two sides
-    out.back = area_per_normal > change * ROUNDING_FACTOR;
-    return out;
+    return area_per_normal > change * ROUNDING_FACTOR;
 }
 
 }  // namespace detail

@@ -165,7 +165,7 @@ void render_context::impl::set_up_piece(int thread, int number, const raster_mes
     std::size_t walked_vertices = 0;
     for (std::size_t k = first; k < last; ++k) {
         const raster_cluster &c = (*chunks)[k];
-        const bool back = detail::classify_cluster(*view, c).back;
+        const bool back = detail::cluster_back_facing(*view, c);
         seg.walk[k - first] = !back;
         if (back) {
             out.stats.culled_backface += c.count;

@@ -288,7 +288,7 @@ void fill_floats(float *dst, std::size_t count, float value);
 // ---- cluster culling (raster_clusters.cpp) ------------------------------------------------
 
 // What one draw needs to classify chunks (raster_cluster): the MVP rows, the eye and the
-// screen, with the per-draw constants of classify_cluster precomputed.
+// screen, with the per-draw constants of cluster_back_facing precomputed.
 struct cluster_view {
     double row[4][4];         // MVP rows x, y, z, w: row[r][c] (the float matrix, exactly)
     double abs_row[4][4];     // |row[r][c]|
@@ -306,13 +306,11 @@ struct cluster_view {
 };
 cluster_view make_cluster_view(const mat4_t &mvp, int width, int height, float guard, cull_mode cull);
 
-struct cluster_verdict {
-    bool inside = false;  // every vertex has outcode 0 (inside near, far and guard band)
-    bool back = false;    // inside, and every triangle's snapped area is nonzero and back-facing
-};
-// Conservative: `inside` and `back` are claimed only when the float transform and the 1/16 px
-// snapping of render_context cannot make any triangle of the chunk decide otherwise.
-cluster_verdict classify_cluster(const cluster_view &v, const raster_cluster &c);
+// Whether chunk c is back-facing as a whole: every vertex has outcode 0 (inside near, far
+// and guard band) and every triangle's snapped area is nonzero and back-facing.
+// Conservative: claimed only when the float transform and the 1/16 px snapping of
+// render_context cannot make any triangle of the chunk decide otherwise.
+bool cluster_back_facing(const cluster_view &v, const raster_cluster &c);
 
 // Depth comparison as a function, shared by the scalar paths.
 // (A template so the double-precision reference renderer uses the same comparisons.)
