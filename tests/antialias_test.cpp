@@ -34,7 +34,7 @@ std::vector<detail::msaa_kernel> msaa_kernels() {
     std::vector<detail::msaa_kernel> out;
     for (detail::msaa_kernel k : {detail::msaa_kernel::portable, detail::msaa_kernel::sse2, detail::msaa_kernel::avx2,
                                   detail::msaa_kernel::avx512})
-        if (detail::msaa_kernel_runs(k)) out.push_back(k);
+        if (detail::fill_kernel_runs(k)) out.push_back(k);
     return out;
 }
 

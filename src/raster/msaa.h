@@ -57,12 +57,9 @@ const sample_pattern &pattern_of(int samples);
 // is SSE2's for all but the portable one. All give bit-identical samples and images; a
 // faster one runs where its precondition holds (msaa_triangle::chunkable, narrow) and the
 // portable one elsewhere.
+// Which of them this build runs on this CPU, and the fastest: fill_kernel_runs and
+// best_fill_kernel (raster_internal.h; the 1-sample fill's kernels are chosen alike).
 using msaa_kernel = raster_simd;  // raster.h
-// Whether this build runs kernel k on this CPU (avx2 where the CPU has AVX2, avx512 where it
-// has AVX-512 F/VL/DQ/BW).
-inline bool msaa_kernel_runs(msaa_kernel k) { return fill_kernel_runs(k); }
-// The fastest kernel this build runs on this CPU (= best_multisample_simd()).
-inline msaa_kernel best_msaa_kernel() { return best_fill_kernel(); }
 
 // The samples of a tile of rows [origin, origin + rows) of the canvas: per pixel S sample
 // depths, then S sample colours (floats, contiguous), and whether the pixel has been touched

@@ -71,7 +71,7 @@ inline void sample_offsets_exact(const msaa_triangle &f, const sample_pattern &p
 }
 
 #ifdef TINY3D_AVX2
-// The AVX2 kernel (msaa_kernel::avx2; only on CPUs best_msaa_kernel() reports it for, or
+// The AVX2 kernel (msaa_kernel::avx2; only on CPUs best_fill_kernel() reports it for, or
 // avx512): f.narrow, pat.count = 4, 8 or 16, rows [y0, y1) already clamped to f's. The same integer
 // tests and float operations as the portable kernel.
 void fill_rows_avx2(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
@@ -79,7 +79,7 @@ void fill_rows_avx2(sample_store &store, const msaa_triangle &f, const sample_pa
 #endif
 
 #ifdef TINY3D_AVX512
-// The AVX-512 kernels (msaa_kernel::avx512; only on CPUs best_msaa_kernel() reports it for):
+// The AVX-512 kernels (msaa_kernel::avx512; only on CPUs best_fill_kernel() reports it for):
 // f.chunkable, pat.count = 4, 8 or 16, rows [y0, y1) already clamped to f's. The same integer
 // tests and float operations as the portable kernel.
 void fill_rows_avx512(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
