@@ -13,7 +13,7 @@ void render_context::impl::add_msaa(msaa_triangle &f, std::uint32_t state, piece
     f.state = state;
     const std::uint32_t index = static_cast<std::uint32_t>(out.msaa.size());
     out.msaa.push_back(f);
-    for (int b = bands.of(f.min_y); b <= bands.of(f.max_y); ++b) out.bins[b].push_back(index);
+    bin_rows(f.min_y, f.max_y, index, out);
 }
 
 // Every triangle of the frame that reaches the band, in submission order (piece after piece

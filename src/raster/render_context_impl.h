@@ -145,15 +145,19 @@ struct render_context::impl {
     [[gnu::noinline]] void bin_fast(const detail::fast_triangle &f, piece &out) {
         const std::uint32_t index = static_cast<std::uint32_t>(out.fast.size());
         out.fast.push_back(f);
-        for (int b = bands.of(f.min_y); b <= bands.of(f.max_y); ++b) out.bins[b].push_back(index);
+        bin_rows(f.min_y, f.max_y, index, out);
+    }
+    // Bin entry `index` into the bins of the bands of rows [y0, y1] (inclusive, on the
+    // target). Inlined: called out of line from bin_fast it cost 0.4 % more instructions.
+    [[gnu::always_inline]] void bin_rows(int y0, int y1, std::uint32_t index, piece &out) {
+        for (int b = bands.of(y0); b <= bands.of(y1); ++b) out.bins[b].push_back(index);
     }
     void emit(const clip_vertex *poly, int n, const draw_params &p, std::uint32_t state, bool generic, piece &out);
 
     // The last of out.generic (opaque) into the bins of rows [y0, y1] (inclusive).
     void bin_generic(int y0, int y1, piece &out) {
         if (y0 > y1) return;
-        const std::uint32_t index = static_cast<std::uint32_t>(out.generic.size() - 1) | detail::GENERIC_BIN;
-        for (int b = bands.of(y0); b <= bands.of(y1); ++b) out.bins[b].push_back(index);
+        bin_rows(y0, y1, static_cast<std::uint32_t>(out.generic.size() - 1) | detail::GENERIC_BIN, out);
     }
 
     // Multisampled frames (raster_multisample.cpp).
