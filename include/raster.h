@@ -349,7 +349,7 @@ result<sample_count> parse_sample_count(const std::string &text);
 //    bit (tests/antialias_test.cpp compares each this CPU runs with the portable one).
 //  1-sample frames: sse2 and avx2 run the SSE2 kernels (there is no AVX2 one), avx512 the
 //    AVX-512 kernel for triangles at most 16 px wide and SSE2's for the others; these give
-//    the same pixels, bit for bit (tests/raster_rules_test.cpp). The portable kernel decides
+//    the same pixels, bit for bit (tests/raster_threads_test.cpp). The portable kernel decides
 //    the same coverage but may differ from them in the last bits of depth and intensity.
 // They differ in speed (documentation/antialias.md, documentation/raster.md).
 enum class raster_simd {
