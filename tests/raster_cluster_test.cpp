@@ -27,16 +27,8 @@ rendered render_frame(render_context &ctx, canvas_t &c, const raster_mesh &m, co
     return raster_test::capture(ctx, c);
 }
 
-draw_params scene_s_params() {
-    draw_params p;
-    const light_t light = {{1, 1, 1}, 1.0f};
-    p.lights = make_light_rig(std::span<const light_t>(&light, 1), 0.1f).value();
-    p.view_projection = mat4_multiply(mat4_perspective(static_cast<float>(M_PI / 4), 1.0f, 0.1f, 100.0f),
-                                      mat4_look_at({0, 0, 3}, {0, 0, 0}, {0, 1, 0}));
-    return p;
-}
-
-raster_mesh smooth_raster_mesh(const mesh &m) { return make_raster_mesh(m, mesh_vertex_normals(m)).value(); }
+using raster_test::scene_s_params;
+using raster_test::smooth_raster_mesh;
 
 }  // namespace
 

@@ -1,7 +1,8 @@
 // raster_test_util.h — helpers shared by the raster tests (and tests/bench/fill.cpp): a
-// light rig of ambient light only, a frame holding one draw, and the slanted textured quad
-// whose exact u at every pixel centre is known in closed form; a quad straight in clip
-// space and flat, constant-light draw parameters for it.
+// light rig of ambient light only, Scene S's camera and light, a raster mesh with smooth
+// normals, a frame holding one draw, a captured frame and its comparison, and the slanted
+// textured quad whose exact u at every pixel centre is known in closed form; a quad
+// straight in clip space and flat, constant-light draw parameters for it.
 #ifndef TINY3D_RASTER_TEST_UTIL_H
 #define TINY3D_RASTER_TEST_UTIL_H
 
@@ -10,6 +11,7 @@
 #include <span>
 #include <vector>
 
+#include "mesh.h"
 #include "raster.h"
 
 namespace raster_test {
@@ -17,6 +19,22 @@ namespace raster_test {
 // Shade = ambient everywhere (no directional light).
 inline tiny3d::light_rig constant_light(float ambient) {
     return tiny3d::make_light_rig(std::span<const light_t>(), ambient).value();
+}
+
+// Scene S's draw parameters (documentation/benchmarks.md): one light towards (1, 1, 1),
+// ambient 0.1, a 45° square perspective from (0, 0, 3) looking at the origin; model identity.
+inline tiny3d::draw_params scene_s_params() {
+    tiny3d::draw_params p;
+    const light_t light = {{1, 1, 1}, 1.0f};
+    p.lights = tiny3d::make_light_rig(std::span<const light_t>(&light, 1), 0.1f).value();
+    p.view_projection = mat4_multiply(tiny3d::mat4_perspective(static_cast<float>(M_PI / 4), 1.0f, 0.1f, 100.0f),
+                                      tiny3d::mat4_look_at({0, 0, 3}, {0, 0, 0}, {0, 1, 0}));
+    return p;
+}
+
+// m as a raster mesh with its smooth vertex normals.
+inline tiny3d::raster_mesh smooth_raster_mesh(const tiny3d::mesh &m) {
+    return tiny3d::make_raster_mesh(m, tiny3d::mesh_vertex_normals(m)).value();
 }
 
 // One frame with one draw: begin_frame (cleared to `clear_intensity`, `samples` per pixel),

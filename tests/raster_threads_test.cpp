@@ -52,17 +52,14 @@ rendered render(int threads, canvas_t &c, const std::vector<draw_call> &draws, s
     return raster_test::capture(ctx, c);
 }
 
+// Scene S's parameters with the model turned by `angle` about +y.
 draw_params scene_s_params(float angle) {
-    draw_params p;
-    const light_t light = {{1, 1, 1}, 1.0f};
-    p.lights = make_light_rig(std::span<const light_t>(&light, 1), 0.1f).value();
-    p.view_projection = mat4_multiply(mat4_perspective(static_cast<float>(M_PI / 4), 1.0f, 0.1f, 100.0f),
-                                      mat4_look_at({0, 0, 3}, {0, 0, 0}, {0, 1, 0}));
+    draw_params p = raster_test::scene_s_params();
     p.model = mat4_rotate_y(angle);
     return p;
 }
 
-raster_mesh smooth(const mesh &m) { return make_raster_mesh(m, mesh_vertex_normals(m)).value(); }
+using raster_test::smooth_raster_mesh;
 
 // `count` random triangles in front of the camera of scene_s_params, each within a box of
 // up to `size` (object units) around a random centre in [−1.2, 1.2]² × [−1, 1]: at 256²
@@ -104,7 +101,7 @@ raster_mesh doubled(const raster_mesh &m) {
 
 TEST(every_thread_count_from_1_to_16_gives_the_one_thread_frame) {
     canvas_ptr c = make_canvas(256, 256).value();
-    const raster_mesh sphere = smooth(make_icosphere(4));
+    const raster_mesh sphere = smooth_raster_mesh(make_icosphere(4));
     const raster_clusters clusters = make_raster_clusters(sphere).value();
     draw_params plain = scene_s_params(0.3f), clustered = plain;
     clustered.clusters = &clusters;
@@ -119,7 +116,7 @@ TEST(every_thread_count_from_1_to_16_gives_the_one_thread_frame) {
     quad_params.cull = cull_mode::none;
     quad_params.tex = &grey;
     quad_params.model = mat4_identity();
-    const raster_mesh knot = smooth(make_torus_knot(2, 3, 60, 8));
+    const raster_mesh knot = smooth_raster_mesh(make_torus_knot(2, 3, 60, 8));
     draw_params knot_params = scene_s_params(0.7f);
     knot_params.alpha = 0.5f;
     knot_params.model = mat4_multiply(mat4_translate(0, 0, 1.0f), mat4_scale(0.4f, 0.4f, 0.4f));
