@@ -3,7 +3,6 @@
 // faithful scan-line fill (the classic edge-walking method).
 #include <algorithm>
 #include <cmath>
-#include <span>
 
 #include "raster_internal.h"
 #include "../simd_config.h"
@@ -502,25 +501,19 @@ void fill_fast_bins(canvas_t &canvas, zbuffer &depth, const band_bin *bins, int 
 #ifdef TINY3D_SSE2
     if (kernel != fill_kernel::portable) {
         with_depth_test(test, [&](auto t) {
-            for (const band_bin &bin : std::span(bins, static_cast<std::size_t>(bin_count)))
-                for (std::size_t k = 0; k < bin.count; ++k) {
-                    ahead.step();
-                    const fast_triangle &f = bin.tris[bin.index[k]];
-                    const int first = std::max(y0, f.min_y), end = std::min(y1, f.max_y + 1);
-                    if (first >= end) continue;
-                    if (f.wide >= 0) fill_rows_scalar64(canvas, &depth, f, bin.wide[f.wide], test, true, first, end);
-                    else fill_rows_sse2_any<t.value, true>(canvas, &depth, f, true, first, end);
-                }
+            for_each_bin_triangle(bins, bin_count, ahead, [&](const band_bin &bin, const fast_triangle &f) {
+                const int first = std::max(y0, f.min_y), end = std::min(y1, f.max_y + 1);
+                if (first >= end) return;
+                if (f.wide >= 0) fill_rows_scalar64(canvas, &depth, f, bin.wide[f.wide], test, true, first, end);
+                else fill_rows_sse2_any<t.value, true>(canvas, &depth, f, true, first, end);
+            });
         });
         return;
     }
 #endif
-    for (const band_bin &bin : std::span(bins, static_cast<std::size_t>(bin_count)))
-        for (std::size_t k = 0; k < bin.count; ++k) {
-            ahead.step();
-            const fast_triangle &f = bin.tris[bin.index[k]];
-            fill_fast_rows(canvas, &depth, f, f.wide >= 0 ? &bin.wide[f.wide] : nullptr, test, true, y0, y1, kernel);
-        }
+    for_each_bin_triangle(bins, bin_count, ahead, [&](const band_bin &bin, const fast_triangle &f) {
+        fill_fast_rows(canvas, &depth, f, f.wide >= 0 ? &bin.wide[f.wide] : nullptr, test, true, y0, y1, kernel);
+    });
 }
 
 }  // namespace detail

@@ -252,6 +252,18 @@ struct band_bin {
     std::size_t count = 0;
 };
 
+// draw(bin, triangle) for every triangle of bins[0..bin_count), bin after bin and each in its
+// order, ahead.step() before each: the band loop of fill_fast_bins' portable and SSE2 kernels
+// (the AVX-512 one walks the same order with a prefetch that looks into the next bin).
+template <class Draw>
+inline void for_each_bin_triangle(const band_bin *bins, int bin_count, band_prefetch &ahead, Draw &&draw) {
+    for (int j = 0; j < bin_count; ++j)
+        for (std::size_t k = 0; k < bins[j].count; ++k) {
+            ahead.step();
+            draw(bins[j], bins[j].tris[bins[j].index[k]]);
+        }
+}
+
 // Draws rows [y0, y1) of every triangle of bins[0..bin_count) (none empty), bin after bin and
 // each in its order, with depth (the render context's band loop): fill_fast_rows for each,
 // the depth test and the kernel chosen once per band; ahead.step() after each triangle.
