@@ -64,7 +64,10 @@ using msaa_kernel = raster_simd;  // raster.h
 // The samples of a tile of rows [origin, origin + rows) of the canvas: per pixel S sample
 // depths, then S sample colours (floats, contiguous), and whether the pixel has been touched
 // (untouched pixels hold the clear values implicitly, so clearing a tile writes one byte
-// per pixel). Grows only (resize), never per frame. A tile small enough to stay in the
+// per pixel; a touched pixel's samples are in memory — the 4× block kernels, which store
+// whole lines, also mark the pixels of a line they covered no sample of: their samples hold
+// the clear values, whose mean is the clear intensity exactly, as begin_frame clamps it to
+// [0, 1]). Grows only (resize), never per frame. A tile small enough to stay in the
 // core's cache while every triangle of the frame that reaches it is drawn is what keeps
 // multisampling cheap (documentation/antialias.md).
 class sample_store {

@@ -123,9 +123,10 @@ void fill_rows_pairs(sample_store &store, const msaa_triangle &f, const sample_p
             const __m256 shades = _mm256_blendv_ps(colours, shade, pass);
             _mm256_store_ps(p, _mm256_permute2f128_ps(depths, shades, 0x20));
             _mm256_store_ps(p + 2 * S, _mm256_permute2f128_ps(depths, shades, 0x31));
-            const unsigned covered = static_cast<unsigned>(_mm256_movemask_ps(in));
-            const std::uint16_t now = static_cast<std::uint16_t>(was | ((covered & 0xFu) != 0) | ((covered & 0xF0u) != 0) << 8);
-            std::memcpy(touched, &now, sizeof now);
+            // Both pixels now hold their samples in memory, covered or not (as in the AVX-512
+            // block kernel: sample_store::touched_row).
+            constexpr std::uint16_t both_touched = 0x0101;
+            std::memcpy(touched, &both_touched, sizeof both_touched);
         }
     }
 }
