@@ -370,8 +370,9 @@ inline multisample_simd best_multisample_simd() { return best_raster_simd(); }
 // translucent queue) and a worker pool of threads − 1 threads created once. A frame:
 //   begin_frame(canvas) → draw(...)* → end_frame().
 // A draw's triangles are cut into pieces (runs of cluster chunks or of triangles) that the
-// threads take in turn and set up once each, binned by horizontal 32-row bands of the
-// canvas; then the threads take bands in turn, each band drawn by one thread piece after
+// threads share out (each mostly its own run of neighbouring pieces) and set up once each,
+// binned by horizontal 32-row bands of the canvas; then the threads claim bands (each those
+// holding most of its own triangles first), each band drawn by one thread piece after
 // piece in submission order, so the image (and the stats) are identical for any thread
 // count (documentation/raster.md, "Threads and buffers").
 // No allocation per frame once buffers have grown to the scene's size.

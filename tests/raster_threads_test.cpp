@@ -9,12 +9,18 @@
 //    for bit under every depth test, and the portable kernel the same coverage with depth
 //    and intensity within 2e-6 of them (depth test always), on random triangles of every
 //    width (narrow ones with 1–4 groups of four, wide ones, ones at the canvas' right edge);
+//  * the hand-out (render_bands.h): with 1–16 threads taking at once, every piece and every
+//    band goes to exactly one thread; a thread's first piece is the first of its home run,
+//    its run is taken front to back and the others' from the back; bands are claimed in the
+//    order of the thread's own bin entries;
 //  * the AVX-512 set-up of eight triangles at once gives setup_fast_triangle's verdicts and
 //    fast triangles bit for bit (random snapped triangles: small, large, too wide, off the
 //    clip rectangle, with horizontal edges, either orientation).
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <random>
+#include <thread>
 #include <vector>
 
 #include "harness.h"
@@ -25,6 +31,7 @@
 #include "raster.h"
 #include "raster_test_util.h"
 #include "../src/raster/raster_internal.h"
+#include "../src/raster/render_bands.h"
 #include "../src/simd_config.h"
 
 using namespace tiny3d;
@@ -141,6 +148,73 @@ TEST(every_thread_count_from_1_to_16_gives_the_one_thread_frame) {
         for (int threads = 2; threads <= 16; ++threads)
             CHECK_MSG(same(render(threads, *c, scenes[k].draws, scenes[k].samples), one),
                       "scene " + std::to_string(k) + ", " + std::to_string(threads) + " threads");
+    }
+}
+
+TEST(pieces_and_bands_are_each_handed_out_once) {
+    using detail::band_affinity;
+    using detail::phase_counters;
+    // One thread alone: its own run front to back, then the runs before it from the back.
+    {
+        phase_counters c;
+        c.reset(10, 3, 4);  // runs [0, 3), [3, 6), [6, 10)
+        std::vector<int> order;
+        for (int k; (k = c.take_piece(1, 3)) >= 0;) order.push_back(k);
+        CHECK((order == std::vector<int>{3, 4, 5, 2, 1, 0, 9, 8, 7, 6}));
+    }
+    // Bands in the order of the thread's own entries (most first, ties top first); with one
+    // thread, top to bottom.
+    {
+        band_affinity a;
+        const std::vector<std::vector<int>> bins = {{1}, {}, {1, 2, 3}, {4}, {5, 6, 7}};
+        a.count(bins, 5);
+        a.rank(5, true);
+        CHECK((std::vector<int>(a.order, a.order + 5) == std::vector<int>{2, 4, 0, 3, 1}));
+        phase_counters c;
+        c.reset(0, 2, 5);
+        CHECK(c.take_band(a, 5) == 2);
+        c.band_taken[4].store(1);  // taken by another thread
+        CHECK(c.take_band(a, 5) == 0);
+        a.rank(5, false);
+        CHECK((std::vector<int>(a.order, a.order + 5) == std::vector<int>{0, 1, 2, 3, 4}));
+        a.forget(5);
+        CHECK(a.own[2] == 0u && a.own[4] == 0u);
+    }
+    // Threads taking at once: each piece and band exactly once, whatever the interleaving.
+    std::mt19937 rng(29);
+    for (int threads = 1; threads <= 16; ++threads) {
+        for (int pieces : {0, 1, threads, 8 * threads, 8 * threads + 3}) {
+            phase_counters c;
+            const int bands = 32;
+            c.reset(pieces, threads, bands);
+            std::vector<band_affinity> mine(static_cast<std::size_t>(threads));
+            std::vector<std::vector<int>> took_pieces(threads), took_bands(threads);
+            for (band_affinity &a : mine) {
+                std::vector<std::vector<int>> bins(bands);
+                for (auto &bin : bins) bin.resize(rng() % 5);
+                a.count(bins, bands);
+                a.rank(bands, threads > 1);
+            }
+            std::vector<std::thread> workers;
+            for (int t = 0; t < threads; ++t)
+                workers.emplace_back([&, t] {
+                    for (int k; (k = c.take_piece(t, threads)) >= 0;) took_pieces[t].push_back(k);
+                    for (int b; (b = c.take_band(mine[t], bands)) < bands;) took_bands[t].push_back(b);
+                });
+            for (std::thread &w : workers) w.join();
+            std::vector<int> piece_times(pieces, 0), band_times(bands, 0);
+            for (int t = 0; t < threads; ++t) {
+                for (int k : took_pieces[t]) ++piece_times[k];
+                for (int b : took_bands[t]) ++band_times[b];
+                // A thread that took any piece took its run's first one first, if it has one.
+                const int first = pieces * t / threads, end = pieces * (t + 1) / threads;
+                if (first < end && !took_pieces[t].empty() && took_pieces[t][0] >= first && took_pieces[t][0] < end)
+                    CHECK(took_pieces[t][0] == first);
+            }
+            const std::string where = std::to_string(threads) + " threads, " + std::to_string(pieces) + " pieces";
+            CHECK_MSG(std::all_of(piece_times.begin(), piece_times.end(), [](int n) { return n == 1; }), where);
+            CHECK_MSG(std::all_of(band_times.begin(), band_times.end(), [](int n) { return n == 1; }), where);
+        }
     }
 }
 

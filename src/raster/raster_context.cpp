@@ -363,9 +363,9 @@ void render_context::impl::draw_band(int band, const draw_params &p, const draw_
 
 // What thread `thread` does in a draw's one parallel phase (render_bands.h): [without
 // clusters, on several threads: transform its range of the vertices into segment 0, and wait
-// for the others'] set up pieces handed out one at a time; then, in a 1-sample frame, wait
-// until every piece is set up and draw bands handed out one at a time (multisampled frames
-// draw at end_frame).
+// for the others'] set up pieces one at a time, its home run first; then, in a 1-sample
+// frame, wait until every piece is set up and draw bands claimed one at a time, those with
+// most of its own triangles first (multisampled frames draw at end_frame).
 void render_context::impl::set_up_and_draw(int thread, const raster_mesh &m, const draw_params &p,
                                            const vertex_job &job, std::uint32_t state, const cluster_view *view,
                                            const draw_plan &plan) {
@@ -379,16 +379,20 @@ void render_context::impl::set_up_and_draw(int thread, const raster_mesh &m, con
         counters.vertex_ranges_done.fetch_add(1, std::memory_order_release);
         phase_counters::wait_for(counters.vertex_ranges_done, n);
     }
-    counters.hand_out(counters.next_piece, plan.count, [&](int k) {
+    band_affinity &mine = affinity[thread];
+    if (!multisampled()) mine.forget(bands.count);  // (a multisampled frame counts every draw's)
+    for (int k; (k = counters.take_piece(thread, pool.size())) >= 0;) {
         set_up_piece(thread, plan.first + k, m, p, job, state, view, plan);
+        mine.count(pieces[static_cast<std::size_t>(plan.first + k)].bins, bands.count);
         counters.pieces_done.fetch_add(1, std::memory_order_release);
-    });
+    }
     if (multisampled()) return;  // drawn at end_frame
+    mine.rank(bands.count, pool.size() > 1);
     // Until the other threads' last pieces are set up: claim the next bands and clear them
     // (the frame's first draw), to draw them first once every piece is ready.
     int claimed[MAX_BANDS], claimed_count = 0;
     while (pending_clear && counters.pieces_done.load(std::memory_order_acquire) < plan.count) {
-        const int band = counters.next_band.fetch_add(1, std::memory_order_relaxed);
+        const int band = counters.take_band(mine, bands.count);
         if (band >= bands.count) break;
         clear_band(band);
         claimed[claimed_count++] = band;
@@ -397,7 +401,7 @@ void render_context::impl::set_up_and_draw(int thread, const raster_mesh &m, con
     const bool drop = counters.bad_indices.load(std::memory_order_relaxed);
     // Then the bands one ahead: a thread takes its next band before drawing the current
     // one, so that it can fetch the next one's lines meanwhile.
-    int next = counters.next_band.fetch_add(1, std::memory_order_relaxed);
+    int next = counters.take_band(mine, bands.count);
     auto draw = [&](int band, bool cleared, int ahead) {
         if (drop) {
             if (pending_clear && !cleared) clear_band(band);
@@ -408,7 +412,7 @@ void render_context::impl::set_up_and_draw(int thread, const raster_mesh &m, con
     for (int k = 0; k < claimed_count; ++k) draw(claimed[k], true, k + 1 < claimed_count ? -1 : next);
     while (next < bands.count) {
         const int band = next;
-        next = counters.next_band.fetch_add(1, std::memory_order_relaxed);
+        next = counters.take_band(mine, bands.count);
         draw(band, false, next);
     }
 }
@@ -455,7 +459,7 @@ void render_context::draw(const raster_mesh &mesh, const draw_params &params) {
     s.grow_segments(mesh.positions.size(), generic);
     if (!s.multisampled()) s.piece_count = 0;  // (a multisampled frame keeps every draw's pieces)
     const draw_plan plan = s.plan_draw(use_clusters ? clusters->clusters().size() : mesh.triangles.size(), use_clusters);
-    s.counters.reset();
+    s.counters.reset(plan.count, s.pool.size(), s.bands.count);
     auto phase = [&](int t) { s.set_up_and_draw(t, mesh, params, job, state, use_clusters ? &view : nullptr, plan); };
     s.pool.run(phase);
     s.pending_clear = false;
@@ -519,7 +523,7 @@ void render_context::end_frame() {
         s.target = nullptr;
         return;
     }
-    s.counters.reset();
+    s.counters.reset(0, s.pool.size(), s.bands.count);
     auto phase = [&](int) {
         s.counters.hand_out(s.counters.next_band, s.bands.count, [&](int band) {
             const int y0 = s.bands.y0(band), y1 = s.bands.y0(band + 1);

@@ -40,12 +40,17 @@ void render_context::impl::draw_multisampled_band(int band, sample_store &tile) 
     tile.resolve(*target, depth, clear_intensity, kernel);
 }
 
-// Bands from a shared queue: a band's pixels depend only on its own bins, so not on which
-// thread draws it; the queue keeps the threads' loads even.
+// Bands claimed by the threads, each in the order of its own affinity (render_bands.h): a
+// band's pixels depend only on its own bins, so not on which thread draws it; claiming
+// until none is left keeps the threads' loads even.
 void render_context::impl::end_multisampled_frame() {
-    counters.reset();
+    counters.reset(0, pool.size(), bands.count);
     auto phase = [&](int thread) {
-        counters.hand_out(counters.next_band, bands.count, [&](int band) { draw_multisampled_band(band, tiles[thread]); });
+        band_affinity &mine = affinity[thread];
+        mine.rank(bands.count, pool.size() > 1);
+        for (int band; (band = counters.take_band(mine, bands.count)) < bands.count;)
+            draw_multisampled_band(band, tiles[thread]);
+        mine.forget(bands.count);  // (counted again by the next frame's draws)
     };
     pool.run(phase);
     pending_clear = false;

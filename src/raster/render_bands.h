@@ -1,8 +1,9 @@
 // render_bands.h — how the render context shares a draw between threads ("sort-middle"):
 // the draw's triangles are cut into pieces (runs of consecutive cluster chunks, or of
-// triangles), handed out to the threads one at a time; a thread sets up the triangles of a
-// piece into that piece's own lists and bins them by the horizontal bands of the frame they
-// reach. Once every piece is set up, the bands are handed out; a band is drawn by one
+// triangles), dealt to the threads in runs of neighbouring pieces (phase_counters); a thread
+// sets up the triangles of a piece into that piece's own lists and bins them by the
+// horizontal bands of the frame they reach. Once every piece is set up, each thread claims
+// bands, those holding most of its own triangles first (band_affinity); a band is drawn by one
 // thread, piece after piece in piece order — the draw's submission order — so the pixels
 // depend neither on the number of threads nor on which thread set up or drew what, and a
 // piece's lists grow to the same sizes every frame whoever sets it up (no allocation in a
@@ -59,24 +60,86 @@ struct band_layout {
     int y0(int b) const { return static_cast<int>(static_cast<long long>(height) * b / count); }
 };
 
-// The shared counters of one draw's phase, each on a cache line of its own: the next piece
-// and band to hand out, and how many pieces (and vertex ranges) are done. Reset by the
-// caller before the workers start (published to them by worker_pool::run).
+// What one thread knows of the bands when it starts drawing: how many bin entries of each
+// band it set up itself (its own pieces' triangles, still in its cache), and from that the
+// order in which it claims bands — most of its own entries first — so that a band is
+// mostly drawn by the thread that set up its triangles instead of fetching them from
+// another core's cache (reading lines another core has just written takes ~3× as long as
+// reading one's own). Only speed depends on it: a band's pixels do not depend on who draws it.
+// On a cache line of its own per thread.
+struct alignas(CACHE_LINE) band_affinity {
+    std::uint32_t own[MAX_BANDS] = {};  // bin entries per band in the pieces this thread set up
+    std::uint8_t order[MAX_BANDS] = {};
+    int cursor = 0;  // order[cursor..] are still to be tried
+
+    void forget(int count) { std::fill(own, own + count, 0u); }
+    template <class Bins>
+    void count(const Bins &bins, int count) {
+        for (int b = 0; b < count; ++b) own[b] += static_cast<std::uint32_t>(bins[b].size());
+    }
+    // The claiming order: by own entries, most first (ties: top band first); with one
+    // thread, top to bottom.
+    void rank(int count, bool by_own) {
+        for (int b = 0; b < count; ++b) order[b] = static_cast<std::uint8_t>(b);
+        if (by_own)
+            std::sort(order, order + count, [&](int a, int b) { return own[a] != own[b] ? own[a] > own[b] : a < b; });
+        cursor = 0;
+    }
+};
+
+// The shared state of one draw's phase, each on a cache line of its own: the pieces dealt
+// to the threads, which bands are taken, how many pieces (and vertex ranges) are done, and
+// the next band of a phase without bins. Reset by the caller before the workers start
+// (published to them by worker_pool::run).
+//
+// Pieces: thread t's home run is pieces [t·P/n, (t+1)·P/n) — consecutive pieces are
+// neighbouring triangles of the mesh, so a thread's pieces reach few bands and the same
+// thread sets up about the same pieces every frame. It takes its run from the front; a
+// thread whose run is done takes the last pieces of the runs before its own (t − 1, t − 2,
+// …, the run that ends where its own begins first), so nobody waits while pieces are left.
+// Each run is one 64-bit atomic [next, end): the owner and the takers never get one piece twice.
 struct phase_counters {
-    alignas(CACHE_LINE) std::atomic<int> next_piece{0};
+    struct alignas(CACHE_LINE) piece_run {
+        std::atomic<std::uint64_t> range{0};  // next | end << 32
+    };
+    piece_run runs[MAX_THREADS];
     alignas(CACHE_LINE) std::atomic<int> pieces_done{0};
     alignas(CACHE_LINE) std::atomic<int> next_band{0};
     alignas(CACHE_LINE) std::atomic<int> vertex_ranges_done{0};
     std::atomic<bool> bad_indices{false};  // a piece found a vertex index out of range
+    alignas(CACHE_LINE) std::atomic<std::uint8_t> band_taken[MAX_BANDS] = {};
 
-    void reset() {
+    // A new phase of `pieces` pieces shared by `threads` threads, over `bands` bands.
+    void reset(int pieces, int threads, int bands) {
         bad_indices.store(false, std::memory_order_relaxed);
-        next_piece.store(0, std::memory_order_relaxed);
+        for (int t = 0; t < threads; ++t) {
+            const std::uint64_t first = static_cast<std::uint64_t>(pieces) * t / threads;
+            const std::uint64_t end = static_cast<std::uint64_t>(pieces) * (t + 1) / threads;
+            runs[t].range.store(first | end << 32, std::memory_order_relaxed);
+        }
         pieces_done.store(0, std::memory_order_relaxed);
         next_band.store(0, std::memory_order_relaxed);
         vertex_ranges_done.store(0, std::memory_order_relaxed);
+        for (int b = 0; b < bands; ++b) band_taken[b].store(0, std::memory_order_relaxed);
     }
-    // Calls take(k) for k = 0, 1, … up to n − 1, each k once over all threads.
+    // The next piece for `thread` of `threads`, or −1 when every piece is taken.
+    int take_piece(int thread, int threads) {
+        if (const int k = take(runs[thread].range, true); k >= 0) return k;
+        for (int i = 1; i < threads; ++i)
+            if (const int k = take(runs[(thread - i + threads) % threads].range, false); k >= 0) return k;
+        return -1;
+    }
+    // The next band in `mine`'s order that no thread has taken, or `count` when none is left.
+    int take_band(band_affinity &mine, int count) {
+        while (mine.cursor < count) {
+            const int b = mine.order[mine.cursor++];
+            if (band_taken[b].load(std::memory_order_relaxed) == 0 &&
+                band_taken[b].exchange(1, std::memory_order_relaxed) == 0)
+                return b;
+        }
+        return count;
+    }
+    // Calls take(k) for k = 0, 1, … up to n − 1, each k once over all threads (next_band).
     template <class Take>
     void hand_out(std::atomic<int> &next, int n, Take &&take) {
         for (int k; (k = next.fetch_add(1, std::memory_order_relaxed)) < n;) take(k);
@@ -85,6 +148,19 @@ struct phase_counters {
     // release of the increments, so everything written before them is visible.
     static void wait_for(const std::atomic<int> &counter, int n) {
         parallel::spin_until_yielding([&] { return counter.load(std::memory_order_acquire) >= n; });
+    }
+
+private:
+    // One piece of a run, from its front (its owner) or its back (another thread).
+    static int take(std::atomic<std::uint64_t> &range, bool front) {
+        std::uint64_t v = range.load(std::memory_order_relaxed);
+        for (;;) {
+            const std::uint32_t next = static_cast<std::uint32_t>(v), end = static_cast<std::uint32_t>(v >> 32);
+            if (next >= end) return -1;
+            const std::uint64_t taken = front ? v + 1 : v - (std::uint64_t{1} << 32);
+            if (range.compare_exchange_weak(v, taken, std::memory_order_relaxed))
+                return static_cast<int>(front ? next : end - 1);
+        }
     }
 };
 

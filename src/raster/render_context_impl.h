@@ -107,6 +107,7 @@ struct render_context::impl {
     std::vector<detail::generic_triangle> translucent;  // queued for end_frame
     detail::band_layout bands;
     detail::phase_counters counters;
+    detail::band_affinity affinity[detail::MAX_THREADS];  // per thread, for the bands it claims
 
     void clear_band(int b) {
         const int y0 = bands.y0(b), y1 = bands.y0(b + 1);
