@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <limits>
 #include <cmath>
+#include <cstring>
+#include <tuple>
 #include <random>
 #include <utility>
 #include <vector>
@@ -239,6 +241,54 @@ TEST(msaa_background_keeps_the_clear_intensity) {
     }
 }
 
+// A 4-sample tile is at rest between bands (every sample depth 1 and the clear colour in
+// memory, which the AVX-512 block kernel relies on): resize puts it there, for the clear
+// colour given, whenever the layout or the clear colour changes; and one context drawing
+// frame after frame with other clears, sample counts and canvas sizes gives each frame a
+// fresh context gives, with every kernel.
+TEST(msaa_tile_at_rest_follows_the_clear_the_mode_and_the_size) {
+    detail::sample_store store;
+    int wrong = 0;
+    for (const auto &[width, samples, clear] : {std::tuple{9, 4, 0.3f}, std::tuple{9, 4, 0.6f}, std::tuple{9, 16, 0.6f},
+                                                std::tuple{9, 4, 0.6f}, std::tuple{40, 4, 0.6f}}) {
+        store.resize(width, 3, samples, clear);
+        store.start(0, 3);
+        if (samples != 4) continue;
+        for (int y = 0; y < 3; ++y)
+            for (int x = 0; x < width; ++x)
+                for (int s = 0; s < 8; ++s) wrong += store.pixel(x, y)[s] != (s < 4 ? 1.0f : clear);
+    }
+    CHECK_EQ(wrong, 0);
+    const small_scene near_sphere = make_small_scene(make_icosphere(2), 0.3f);
+    small_scene far_sphere = make_small_scene(make_icosphere(3), 1.1f);
+    far_sphere.params.model = mat4_multiply(mat4_translate(0.4f, -0.2f, -1.0f), far_sphere.params.model);
+    struct frame {
+        const small_scene *scene;
+        int size;
+        float clear;
+        sample_count n;
+    };
+    const frame frames[] = {{&near_sphere, 48, 0.1f, sample_count::x4},  {&far_sphere, 48, 0.1f, sample_count::x4},
+                            {&near_sphere, 48, 0.7f, sample_count::x4},  {&far_sphere, 48, 0.7f, sample_count::x16},
+                            {&near_sphere, 48, 0.7f, sample_count::x4},  {&far_sphere, 64, 0.7f, sample_count::x4},
+                            {&near_sphere, 40, 0.0f, sample_count::x8},  {&far_sphere, 40, 0.0f, sample_count::x4}};
+    for (multisample_simd simd : {multisample_simd::portable, multisample_simd::sse2, multisample_simd::avx2,
+                                  multisample_simd::avx512}) {
+        render_context kept(2);
+        if (!kept.use_multisample_simd(simd)) continue;
+        for (std::size_t k = 0; k < std::size(frames); ++k) {
+            const frame &f = frames[k];
+            canvas_ptr a = make_canvas(f.size, f.size).value(), b = make_canvas(f.size, f.size).value();
+            CHECK(draw_frame(kept, *a, f.scene->mesh, f.scene->params, f.clear, f.n).ok());
+            render_context fresh(2);
+            CHECK(fresh.use_multisample_simd(simd));
+            CHECK(draw_frame(fresh, *b, f.scene->mesh, f.scene->params, f.clear, f.n).ok());
+            CHECK_MSG(std::memcmp(a->data, b->data, sizeof(float) * static_cast<std::size_t>(f.size * f.size)) == 0,
+                      "frame " + std::to_string(k));
+        }
+    }
+}
+
 // Several draws in one frame (Gouraud sphere, a textured Phong quad through it, a clipped
 // quad crossing the near plane, a translucent torus knot): every mode, 1, 2 and 3 threads.
 TEST(msaa_multi_draw_frames_do_not_depend_on_the_thread_count) {
@@ -293,7 +343,7 @@ TEST(msaa_sample_store_rows_are_padded_and_aligned) {
     detail::sample_store store;
     for (int width : {1, 2, 3, 5, 8, 41, 7, 1024})
         for (int samples : {4, 8, 16}) {
-            store.resize(width, 3, samples);
+            store.resize(width, 3, samples, 0.0f);
             store.start(10, 13);
             CHECK(store.stride() >= width);
             CHECK_EQ(store.stride() % detail::sample_store::STRIDE_PIXELS, 0);
@@ -399,7 +449,7 @@ std::vector<std::array<std::int32_t, 6>> jittered_grid(int W, int H, unsigned se
 detail::sample_store fill_all(const std::vector<std::array<std::int32_t, 6>> &tris, int W, int H, int samples,
                               bool reversed, detail::msaa_kernel kernel) {
     detail::sample_store store;
-    store.resize(W, H, samples);
+    store.resize(W, H, samples, 0.0f);
     store.start(0, H);
     const detail::sample_pattern &pat = detail::pattern_of(samples);
     for (std::size_t n = 0; n < tris.size(); ++n) {
@@ -530,7 +580,7 @@ TEST(msaa_simd_kernels_match_the_portable_kernel) {
             std::uniform_int_distribution<int> coord(-reach * grid, (40 + reach) * grid), near(-3 * grid, 3 * grid);
             std::uniform_real_distribution<float> unit(0.0f, 1.0f);
             detail::sample_store a, b;
-            for (detail::sample_store *st : {&a, &b}) st->resize(W, H, samples), st->start(0, H);
+            for (detail::sample_store *st : {&a, &b}) st->resize(W, H, samples, 0.25f), st->start(0, H);
             int narrow_boxes = 0, drawn = 0, chunked = 0;
             for (int t = 0; t < (small ? 600 : 60); ++t) {
                 std::int32_t X[3] = {coord(rng), coord(rng), coord(rng)}, Y[3] = {coord(rng), coord(rng), coord(rng)};
@@ -576,27 +626,45 @@ TEST(msaa_simd_kernels_match_the_portable_kernel) {
                 }
             CHECK(touched > (clip.x1 - clip.x0) * (clip.y1 - clip.y0) / 2);
             CHECK_EQ(differ, 0);
-            // The resolve (SSE2: four pixels at a time, W = 41 leaves a tail) against the
-            // portable loop, bit-identical, and against the plain mean and minimum.
+            // The resolve (SSE2: four pixels at a time, W = 41 leaves a tail) of `a` against the
+            // portable loop's of `b` (the same samples), bit-identical, and against the plain
+            // mean and minimum, taken before: a 4-sample resolve puts the samples back at rest.
+            std::vector<double> mean(static_cast<std::size_t>(W * H), 0.25);
+            std::vector<float> nearest(static_cast<std::size_t>(W * H), 1.0f);
+            int untouched = 0;
+            for (int y = 0; y < H; ++y)
+                for (int x = 0; x < W; ++x) {
+                    const float *px = a.pixel(x, y);
+                    const std::size_t i = static_cast<std::size_t>(y * W + x);
+                    if (!a.touched_row(y)[x]) {
+                        ++untouched;
+                        continue;
+                    }
+                    mean[i] = 0;
+                    for (int s = 0; s < samples; ++s) mean[i] += px[samples + s] / samples;
+                    nearest[i] = *std::min_element(px, px + samples);
+                }
             canvas_ptr fast = make_canvas(W, H).value(), plain = make_canvas(W, H).value();
             zbuffer fast_z, plain_z;
             CHECK(fast_z.resize(W, H).ok() && plain_z.resize(W, H).ok());
             a.resolve(*fast, fast_z, 0.25f, kernels[kernel]);
-            a.resolve(*plain, plain_z, 0.25f, kernels[0]);
-            int resolve_differ = 0, untouched = 0;
+            b.resolve(*plain, plain_z, 0.25f, kernels[0]);
+            int resolve_differ = 0, not_at_rest = 0;
             double worst = 0;
             for (int y = 0; y < H; ++y)
                 for (int x = 0; x < W; ++x) {
                     resolve_differ += fast->pixels[y][x] != plain->pixels[y][x] || fast_z.at(x, y) != plain_z.at(x, y);
-                    const float *px = a.pixel(x, y);
-                    const bool hit = a.touched_row(y)[x];
-                    untouched += !hit;
-                    double mean = 0;
-                    for (int s = 0; s < samples; ++s) mean += px[samples + s] / samples;
-                    worst = std::max(worst, std::fabs((hit ? mean : 0.25) - fast->pixels[y][x]));
-                    CHECK_EQ(fast_z.at(x, y), hit ? *std::min_element(px, px + samples) : 1.0f);
+                    const std::size_t i = static_cast<std::size_t>(y * W + x);
+                    worst = std::max(worst, std::fabs(mean[i] - fast->pixels[y][x]));
+                    CHECK_EQ(fast_z.at(x, y), nearest[i]);
+                    // At rest again (4 samples): every sample of every pixel (1, 0.25).
+                    if (samples == 4)
+                        for (const detail::sample_store *st : {&a, &b})
+                            for (int s = 0; s < 2 * samples; ++s)
+                                not_at_rest += st->pixel(x, y)[s] != (s < samples ? 1.0f : 0.25f);
                 }
             CHECK_EQ(resolve_differ, 0);
+            CHECK_EQ(not_at_rest, 0);
             CHECK(small ? untouched > 0 : true);
             CHECK(worst < 1e-6);
         }

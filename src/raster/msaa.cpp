@@ -134,8 +134,14 @@ void fill_rows_portable(sample_store &store, const msaa_triangle &f, const sampl
 #include "msaa_sse2_fill.inc"  // compare, select, fill_rows_sse2, fill_rows_sse2_dispatch
 
 // resolve() for S = 4, 8, 16, the sums in the portable loop's order (resolve_pixel).
+// A resolved pixel's samples back at rest (sample_store): depth 1, the clear colour.
+inline void restore_sse2(float *p, __m128 far, __m128 clear) {
+    _mm_store_ps(p, far);
+    _mm_store_ps(p + 4, clear);
+}
+
 template <int S>
-void resolve_row_sse2(const float *p, const std::uint8_t *touched, int width, float clear_colour, float *colour, float *z) {
+void resolve_row_sse2(float *p, const std::uint8_t *touched, int width, float clear_colour, float *colour, float *z) {
     const __m128 inv = _mm_set1_ps(1.0f / S), clear = _mm_set1_ps(clear_colour), far = _mm_set1_ps(1.0f);
     int x = 0;
     if constexpr (S == 4) {
@@ -166,6 +172,7 @@ void resolve_row_sse2(const float *p, const std::uint8_t *touched, int width, fl
                 d = select(out, far, d);
             }
             _mm_storeu_ps(colour + x, c), _mm_storeu_ps(z + x, d);
+            for (int k = 0; k < 4; ++k) restore_sse2(p + k * 2 * S, far, clear);
         }
     }
     for (; x < width; ++x, p += 2 * S) {
@@ -194,6 +201,7 @@ void resolve_row_sse2(const float *p, const std::uint8_t *touched, int width, fl
         nearest = _mm_min_ss(nearest, _mm_shuffle_ps(nearest, nearest, 1));
         colour[x] = _mm_cvtss_f32(_mm_mul_ss(sum, inv));
         z[x] = _mm_cvtss_f32(nearest);
+        if constexpr (S == 4) restore_sse2(p, far, clear);
     }
 }
 #endif
@@ -220,18 +228,29 @@ const sample_pattern &pattern_of(int samples) {
     }
 }
 
-void sample_store::resize(int width, int rows, int samples) {
+void sample_store::resize(int width, int rows, int samples, float clear_colour) {
     constexpr std::size_t ALIGN_FLOATS = 64 / sizeof(float);
     const int stride = (width + STRIDE_PIXELS - 1) / STRIDE_PIXELS * STRIDE_PIXELS;
     const std::size_t pixels = static_cast<std::size_t>(stride) * static_cast<std::size_t>(rows);
+    const float *before = base_;
     if (data_.size() < pixels * 2 * samples + ALIGN_FLOATS) data_.resize(pixels * 2 * samples + ALIGN_FLOATS);
     if (touched_.size() < pixels) touched_.resize(pixels);
     const std::size_t misalign = reinterpret_cast<std::uintptr_t>(data_.data()) % 64 / sizeof(float);
     base_ = data_.data() + (misalign ? ALIGN_FLOATS - misalign : 0);
+    const bool same = base_ == before && stride == stride_ && rows == rows_ && samples == samples_ &&
+                      std::memcmp(&clear_colour, &rest_colour_, sizeof clear_colour) == 0;
     stride_ = stride;
     width_ = width;
     rows_ = rows;
     samples_ = samples;
+    if (samples != 4) {
+        at_rest_ = false;
+        return;
+    }
+    if (at_rest_ && same) return;
+    for (std::size_t k = 0; k < pixels; ++k) initialise(base_ + k * 2 * samples, clear_colour);
+    rest_colour_ = clear_colour;
+    at_rest_ = true;
 }
 
 void sample_store::start(int y0, int y1) {
@@ -270,9 +289,10 @@ void sample_store::resolve(canvas_t &canvas, zbuffer &depth, float clear_colour,
                 z[x] = 1.0f;
                 continue;
             }
-            const float *p = pixel(x, y);
+            float *p = pixel(x, y);
             colour[x] = resolve_sum(p + S, S) * inv;
             z[x] = *std::min_element(p, p + S);
+            if (at_rest_) initialise(p, rest_colour_);
         }
     }
 }

@@ -70,9 +70,18 @@ using msaa_kernel = raster_simd;  // raster.h
 // [0, 1]). Grows only (resize), never per frame. A tile small enough to stay in the
 // core's cache while every triangle of the frame that reaches it is drawn is what keeps
 // multisampling cheap (documentation/antialias.md).
+//
+// A 4-sample tile is also kept AT REST between bands: every sample of every pixel, touched
+// or not, holds depth 1 and the clear colour in memory. resize establishes it (when the
+// layout or the clear colour changed since) and the resolve restores it (it writes the
+// clear values back into the touched pixels it has just read), so the AVX-512 4× block
+// kernel loads a block's samples without first asking whether its pixels were touched.
 class sample_store {
 public:
-    void resize(int width, int rows, int samples);
+    // Grows the tile (never shrinks it) to `rows` rows of `width` pixels at `samples` per
+    // pixel; with 4 samples, also at rest for `clear_colour` (above), which must be the
+    // clear colour every fill and resolve of the tile is then given.
+    void resize(int width, int rows, int samples, float clear_colour);
     int samples() const { return samples_; }
     int width() const { return width_; }
     // Makes the tile rows [y0, y1) (y1 − y0 ≤ rows of resize), every pixel untouched.
@@ -84,6 +93,9 @@ public:
     static constexpr int STRIDE_PIXELS = 2;
     int stride() const { return stride_; }
     float *pixel(int x, int y) { return base_ + (static_cast<std::size_t>(y - origin_) * stride_ + x) * 2 * samples_; }
+    const float *pixel(int x, int y) const {
+        return base_ + (static_cast<std::size_t>(y - origin_) * stride_ + x) * 2 * samples_;
+    }
     std::uint8_t *touched_row(int y) { return touched_.data() + static_cast<std::size_t>(y - origin_) * stride_; }
     // Rows [y0, y1) := untouched.
     void clear_rows(int y0, int y1);
@@ -91,11 +103,13 @@ public:
     void initialise(float *pixel, float clear_colour) const;
     // The tile's rows: canvas := the mean of each pixel's sample colours (clear_colour when
     // untouched), depth := the nearest sample depth (1 when untouched). The sums run in one
-    // fixed order (every kernel alike: bit-identical).
+    // fixed order (every kernel alike: bit-identical). A 4-sample tile is left at rest.
     void resolve(canvas_t &canvas, zbuffer &depth, float clear_colour, msaa_kernel kernel);
 
 private:
     int width_ = 0, stride_ = 0, rows_ = 0, samples_ = 1, origin_ = 0, end_ = 0;
+    bool at_rest_ = false;     // every sample holds (1, rest_colour_): 4-sample tiles only
+    float rest_colour_ = 0.0f;
     std::vector<float> data_;
     float *base_ = nullptr;  // data_ from its first 64-byte boundary
     std::vector<std::uint8_t> touched_;

@@ -46,8 +46,8 @@ inline __m256 passing(__m256 z, __m256 stored) {
 }
 
 template <depth_func Test>
-void fill_rows_pairs(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, bool depth_write,
-                     float clear_colour, int y0, int y1) {
+void fill_rows_pairs(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, bool depth_write, int y0,
+                     int y1) {
     constexpr int S = 4;
     // Lane 4j + s: sample s's offset from its pixel's centre (ox, oy: the pattern's four,
     // once per pixel) and from pixel 0's (bx = j + dx/16, exact). The edge offsets
@@ -74,13 +74,11 @@ void fill_rows_pairs(sample_store &store, const msaa_triangle &f, const sample_p
     const __m256i step0 = _mm256_set1_epi32(static_cast<std::int32_t>(2 * f.a[0]));
     const __m256i step1 = _mm256_set1_epi32(static_cast<std::int32_t>(2 * f.a[1]));
     const __m256i step2 = _mm256_set1_epi32(static_cast<std::int32_t>(2 * f.a[2]));
-    const __m256 ones = _mm256_set1_ps(1.0f), clear = _mm256_set1_ps(clear_colour), zero = _mm256_setzero_ps();
+    const __m256 ones = _mm256_set1_ps(1.0f), zero = _mm256_setzero_ps();
     const __m256 zdx = _mm256_set1_ps(f.zdx), idx = _mm256_set1_ps(f.idx);
     const __m256 write = depth_write ? _mm256_castsi256_ps(_mm256_set1_epi32(-1)) : zero;
     const __m256i two_columns = _mm256_set1_epi32(2), minus_one = _mm256_set1_epi32(-1);
     const __m256i past_last = _mm256_set1_epi32(columns);
-    // Touched bytes (pixel j: byte j) → each repeated in its pixel's four lanes.
-    const __m128i spread = _mm_setr_epi8(0, 0, 0, 0, 1, 1, 1, 1, -1, -1, -1, -1, -1, -1, -1, -1);
     const int odd = f.min_x & 1;  // the steps start one column left of min_x
     for (int y = y0; y < y1; ++y) {
         const int dy = y - f.min_y;
@@ -109,15 +107,12 @@ void fill_rows_pairs(sample_store &store, const msaa_triangle &f, const sample_p
             const __m256 at = _mm256_cvtepi32_ps(column);  // exactly (< 2^24)
             const __m256 z = _mm256_add_ps(_mm256_add_ps(z_row, _mm256_mul_ps(zdx, at)), dz);
             const __m256 shade = _mm256_min_ps(_mm256_max_ps(_mm256_add_ps(i_row, _mm256_mul_ps(idx, at)), zero), ones);
-            // Until its first touch this frame a pixel's samples hold depth 1 and the clear
-            // colour: what is in memory is selected away.
-            std::uint16_t was;
-            std::memcpy(&was, touched, sizeof was);
-            const __m256 held = _mm256_castsi256_ps(_mm256_cmpgt_epi32(
-                _mm256_cvtepu8_epi32(_mm_shuffle_epi8(_mm_cvtsi32_si128(was), spread)), _mm256_setzero_si256()));
+            // The 4-sample tile is at rest between bands (sample_store): an untouched pixel's
+            // samples hold depth 1 and the clear colour in memory too, so the lines are used as
+            // loaded, touched or not (as in the AVX-512 block kernel).
             const __m256 pixel0 = _mm256_load_ps(p), pixel1 = _mm256_load_ps(p + 2 * S);
-            const __m256 stored = _mm256_blendv_ps(ones, _mm256_permute2f128_ps(pixel0, pixel1, 0x20), held);
-            const __m256 colours = _mm256_blendv_ps(clear, _mm256_permute2f128_ps(pixel0, pixel1, 0x31), held);
+            const __m256 stored = _mm256_permute2f128_ps(pixel0, pixel1, 0x20);
+            const __m256 colours = _mm256_permute2f128_ps(pixel0, pixel1, 0x31);
             const __m256 pass = _mm256_and_ps(in, passing<Test>(z, stored));
             const __m256 depths = _mm256_blendv_ps(stored, z, _mm256_and_ps(pass, write));
             const __m256 shades = _mm256_blendv_ps(colours, shade, pass);
@@ -217,7 +212,7 @@ void fill_rows_pixels(sample_store &store, const msaa_triangle &f, const sample_
 void fill_rows_avx2(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
                     bool depth_write, float clear_colour, int y0, int y1) {
     with_depth_test(test, [&](auto t) {
-        if (pat.count == 4) fill_rows_pairs<t.value>(store, f, pat, depth_write, clear_colour, y0, y1);
+        if (pat.count == 4) fill_rows_pairs<t.value>(store, f, pat, depth_write, y0, y1);
         else if (pat.count == 8) fill_rows_pixels<8, t.value>(store, f, pat, depth_write, clear_colour, y0, y1);
         else fill_rows_pixels<16, t.value>(store, f, pat, depth_write, clear_colour, y0, y1);
     });

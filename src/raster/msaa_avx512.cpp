@@ -221,20 +221,11 @@ inline __m512i colour_lanes() { return _mm512_setr_epi32(4, 5, 6, 7, 12, 13, 14,
 inline __m512i row0_lanes() { return _mm512_setr_epi32(0, 1, 2, 3, 16, 17, 18, 19, 4, 5, 6, 7, 20, 21, 22, 23); }
 inline __m512i row1_lanes() { return _mm512_setr_epi32(8, 9, 10, 11, 24, 25, 26, 27, 12, 13, 14, 15, 28, 29, 30, 31); }
 
-// The touched bytes (0/1) of pixels q = 0..3 (byte q) → the four lanes of each touched
-// pixel: each byte repeated four times, tested in vector registers (shorter than a scalar
-// gather and spread on the way from the touched bytes' load to the first blend).
-inline __mmask16 lanes_of_bytes(std::uint32_t bytes) {
-    const __m128i spread = _mm_shuffle_epi8(_mm_cvtsi32_si128(static_cast<int>(bytes)),
-                                            _mm_setr_epi8(0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3));
-    return _mm_test_epi8_mask(spread, spread);
-}
-
 }  // namespace block
 
 template <depth_func Test>
-void fill_rows_blocks(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, bool depth_write,
-                      float clear_colour, int y0, int y1) {
+void fill_rows_blocks(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, bool depth_write, int y0,
+                      int y1) {
     constexpr int S = 4;
     using V = samples<16>;
     // Lane 4q + s: sample s's offset from its pixel's centre (ox, oy: the pattern's four,
@@ -260,7 +251,7 @@ void fill_rows_blocks(sample_store &store, const msaa_triangle &f, const sample_
     }
     const __m512 dz = _mm512_add_ps(_mm512_mul_ps(V::set(f.zdx), ox), _mm512_mul_ps(V::set(f.zdy), oy));
     const __m512i step0 = V::set_int(2 * f.a[0]), step1 = V::set_int(2 * f.a[1]), step2 = V::set_int(2 * f.a[2]);
-    const __m512 ones = V::set(1.0f), clear = V::set(clear_colour), zero = _mm512_setzero_ps();
+    const __m512 ones = V::set(1.0f), zero = _mm512_setzero_ps();
     const __m512 zdx = V::set(f.zdx), idx = V::set(f.idx), zdy = V::set(f.zdy), idy = V::set(f.idy);
     const __m512 z0 = V::set(f.z), i0 = V::set(f.i);
     const __m512i two_columns = _mm512_set1_epi32(2);
@@ -308,19 +299,16 @@ void fill_rows_blocks(sample_store &store, const msaa_triangle &f, const sample_
             const __m512 at = _mm512_cvtepi32_ps(column);  // exactly (< 2^24)
             const __m512 z = V::add(V::add(z_row, V::mul(zdx, at)), dz);
             const __m512 shade = _mm512_min_ps(_mm512_max_ps(V::add(i_row, V::mul(idx, at)), zero), ones);  // clamp01
-            // Until its first touch this frame a pixel's samples hold depth 1 and the clear
-            // colour: what is in memory is selected away. The block's lines are stored whole,
-            // so afterwards every pixel of the block holds its samples in memory, covered or
-            // not (sample_store::touched_row): the touched bytes become 1 without a test of
-            // the coverage (Scene S level 6 4× −5 %, frames identical).
-            std::uint16_t top, bottom = 0;
-            std::memcpy(&top, touched, sizeof top);
-            if (two) std::memcpy(&bottom, touched + stride, sizeof bottom);
-            const __mmask16 held = block::lanes_of_bytes(top | static_cast<std::uint32_t>(bottom) << 16);
+            // The 4-sample tile is at rest between bands (sample_store): an untouched pixel's
+            // samples hold depth 1 and the clear colour in memory too, so the lines are used as
+            // loaded, touched or not (no test of the touched bytes: Scene S level 6 4× −5.7 %,
+            // frames identical). The block's lines are stored whole, so afterwards every pixel
+            // of the block holds its samples in memory, covered or not: the touched bytes
+            // become 1 without a test of the coverage (−5 %).
             constexpr std::uint16_t both_touched = 0x0101;
             const __m512 line0 = _mm512_load_ps(p), line1 = two ? _mm512_load_ps(p + row_floats) : ones;
-            const __m512 stored = _mm512_mask_blend_ps(held, ones, _mm512_permutex2var_ps(line0, to_depth, line1));
-            const __m512 colours = _mm512_mask_blend_ps(held, clear, _mm512_permutex2var_ps(line0, to_colour, line1));
+            const __m512 stored = _mm512_permutex2var_ps(line0, to_depth, line1);
+            const __m512 colours = _mm512_permutex2var_ps(line0, to_colour, line1);
             const __mmask16 pass = passing<16, Test>(in, z, stored);
             const __m512 depths = depth_write ? _mm512_mask_blend_ps(pass, stored, z) : stored;
             const __m512 shades = _mm512_mask_blend_ps(pass, colours, shade);
@@ -339,7 +327,7 @@ void fill_rows_blocks(sample_store &store, const msaa_triangle &f, const sample_
 void fill_rows_avx512(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
                       bool depth_write, float clear_colour, int y0, int y1) {
     with_depth_test(test, [&](auto t) {
-        if (pat.count == 4 && f.narrow) fill_rows_blocks<t.value>(store, f, pat, depth_write, clear_colour, y0, y1);
+        if (pat.count == 4 && f.narrow) fill_rows_blocks<t.value>(store, f, pat, depth_write, y0, y1);
         else if (pat.count == 4) fill_rows_sse2<4, t.value>(store, f, pat, depth_write, clear_colour, y0, y1);
         else if (pat.count == 16) fill_rows<16, t.value>(store, f, pat, depth_write, clear_colour, y0, y1);
         else fill_rows<8, t.value>(store, f, pat, depth_write, clear_colour, y0, y1);

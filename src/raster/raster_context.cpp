@@ -505,7 +505,7 @@ status render_context::begin_frame(canvas_t &target, float clear_intensity, samp
     s.bands.plan(target.height, s.pool.size(), count > 1 ? MSAA_BAND_ROWS : BAND_ROWS);
     if (count > 1) {
         const int tile_rows = (target.height + s.bands.count - 1) / s.bands.count;
-        for (int t = 0; t < s.pool.size(); ++t) s.tiles[t].resize(target.width, tile_rows, count);
+        for (int t = 0; t < s.pool.size(); ++t) s.tiles[t].resize(target.width, tile_rows, count, s.clear_intensity);
     }
     s.guard = std::clamp(GUARD_SPAN_PIXELS / static_cast<float>(std::max(target.width, target.height)), 1.0f, MAX_GUARD);
     return {};
