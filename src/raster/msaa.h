@@ -74,8 +74,10 @@ using msaa_kernel = raster_simd;  // raster.h
 // A 4-sample tile is also kept AT REST between bands: every sample of every pixel, touched
 // or not, holds depth 1 and the clear colour in memory. resize establishes it (when the
 // layout or the clear colour changed since) and the resolve restores it (it writes the
-// clear values back into the touched pixels it has just read), so the AVX-512 4× block
-// kernel loads a block's samples without first asking whether its pixels were touched.
+// clear values back into the touched pixels it has just read), so the 4× kernels (AVX-512
+// blocks, AVX2 pairs, SSE2 pixels) use the samples as loaded without first asking whether
+// their pixels were touched. The portable kernel and the per-pixel path still ask; at rest,
+// what they would initialise is already there.
 class sample_store {
 public:
     // Grows the tile (never shrinks it) to `rows` rows of `width` pixels at `samples` per
@@ -92,10 +94,8 @@ public:
     // aligned 64-byte line (the AVX2 and AVX-512 4× kernels' unit).
     static constexpr int STRIDE_PIXELS = 2;
     int stride() const { return stride_; }
-    float *pixel(int x, int y) { return base_ + (static_cast<std::size_t>(y - origin_) * stride_ + x) * 2 * samples_; }
-    const float *pixel(int x, int y) const {
-        return base_ + (static_cast<std::size_t>(y - origin_) * stride_ + x) * 2 * samples_;
-    }
+    float *pixel(int x, int y) { return base_ + offset(x, y); }
+    const float *pixel(int x, int y) const { return base_ + offset(x, y); }
     std::uint8_t *touched_row(int y) { return touched_.data() + static_cast<std::size_t>(y - origin_) * stride_; }
     // Rows [y0, y1) := untouched.
     void clear_rows(int y0, int y1);
@@ -107,6 +107,9 @@ public:
     void resolve(canvas_t &canvas, zbuffer &depth, float clear_colour, msaa_kernel kernel);
 
 private:
+    std::size_t offset(int x, int y) const {
+        return (static_cast<std::size_t>(y - origin_) * stride_ + x) * 2 * samples_;
+    }
     int width_ = 0, stride_ = 0, rows_ = 0, samples_ = 1, origin_ = 0, end_ = 0;
     bool at_rest_ = false;     // every sample holds (1, rest_colour_): 4-sample tiles only
     float rest_colour_ = 0.0f;

@@ -524,8 +524,10 @@ void render_context::end_frame() {
         return;
     }
     s.counters.reset(0, s.pool.size(), s.bands.count);
-    auto phase = [&](int) {
-        s.counters.hand_out(s.counters.next_band, s.bands.count, [&](int band) {
+    auto phase = [&](int thread) {
+        band_affinity &mine = s.affinity[thread];
+        mine.rank(s.bands.count, false);  // (translucent triangles are not binned: top to bottom)
+        s.counters.claim_bands(mine, s.bands.count, [&](int band) {
             const int y0 = s.bands.y0(band), y1 = s.bands.y0(band + 1);
             if (s.pending_clear) s.clear_band(band);
             for (const generic_triangle &g : s.translucent)

@@ -48,8 +48,7 @@ void render_context::impl::end_multisampled_frame() {
     auto phase = [&](int thread) {
         band_affinity &mine = affinity[thread];
         mine.rank(bands.count, pool.size() > 1);
-        for (int band; (band = counters.take_band(mine, bands.count)) < bands.count;)
-            draw_multisampled_band(band, tiles[thread]);
+        counters.claim_bands(mine, bands.count, [&](int band) { draw_multisampled_band(band, tiles[thread]); });
         mine.forget(bands.count);  // (counted again by the next frame's draws)
     };
     pool.run(phase);

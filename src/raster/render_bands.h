@@ -88,9 +88,8 @@ struct alignas(CACHE_LINE) band_affinity {
 };
 
 // The shared state of one draw's phase, each on a cache line of its own: the pieces dealt
-// to the threads, which bands are taken, how many pieces (and vertex ranges) are done, and
-// the next band of a phase without bins. Reset by the caller before the workers start
-// (published to them by worker_pool::run).
+// to the threads, which bands are taken, and how many pieces (and vertex ranges) are done.
+// Reset by the caller before the workers start (published to them by worker_pool::run).
 //
 // Pieces: thread t's home run is pieces [t·P/n, (t+1)·P/n) — consecutive pieces are
 // neighbouring triangles of the mesh, so a thread's pieces reach few bands and the same
@@ -104,7 +103,6 @@ struct phase_counters {
     };
     piece_run runs[MAX_THREADS];
     alignas(CACHE_LINE) std::atomic<int> pieces_done{0};
-    alignas(CACHE_LINE) std::atomic<int> next_band{0};
     alignas(CACHE_LINE) std::atomic<int> vertex_ranges_done{0};
     std::atomic<bool> bad_indices{false};  // a piece found a vertex index out of range
     alignas(CACHE_LINE) std::atomic<std::uint8_t> band_taken[MAX_BANDS] = {};
@@ -118,7 +116,6 @@ struct phase_counters {
             runs[t].range.store(first | end << 32, std::memory_order_relaxed);
         }
         pieces_done.store(0, std::memory_order_relaxed);
-        next_band.store(0, std::memory_order_relaxed);
         vertex_ranges_done.store(0, std::memory_order_relaxed);
         for (int b = 0; b < bands; ++b) band_taken[b].store(0, std::memory_order_relaxed);
     }
@@ -139,10 +136,11 @@ struct phase_counters {
         }
         return count;
     }
-    // Calls take(k) for k = 0, 1, … up to n − 1, each k once over all threads (next_band).
-    template <class Take>
-    void hand_out(std::atomic<int> &next, int n, Take &&take) {
-        for (int k; (k = next.fetch_add(1, std::memory_order_relaxed)) < n;) take(k);
+    // Calls draw(band) for every band `mine` still claims (ranked first: band_affinity), in
+    // its order, until no band is left to claim.
+    template <class Draw>
+    void claim_bands(band_affinity &mine, int count, Draw &&draw) {
+        for (int band; (band = take_band(mine, count)) < count;) draw(band);
     }
     // Waits (spinning, then yielding) until `counter` reaches n; the acquire pairs with the
     // release of the increments, so everything written before them is visible.
