@@ -667,5 +667,14 @@ TEST(msaa_simd_kernels_match_the_portable_kernel) {
             CHECK_EQ(not_at_rest, 0);
             CHECK(small ? untouched > 0 : true);
             CHECK(worst < 1e-6);
+            // A tile no triangle touched (the SIMD resolves pass over runs of untouched pixels
+            // without reading their samples): the clear values everywhere.
+            detail::sample_store empty;
+            empty.resize(W, H, samples, 0.25f), empty.start(0, H);
+            empty.resolve(*fast, fast_z, 0.25f, kernels[kernel]);
+            int not_clear = 0;
+            for (int y = 0; y < H; ++y)
+                for (int x = 0; x < W; ++x) not_clear += fast->pixels[y][x] != 0.25f || fast_z.at(x, y) != 1.0f;
+            CHECK_EQ(not_clear, 0);
         }
 }

@@ -277,7 +277,17 @@ void sample_store::resolve(canvas_t &canvas, zbuffer &depth, float clear_colour,
         float *colour = canvas.pixels[y], *z = depth.row(y);
 #ifdef TINY3D_SSE2
         switch (kernel == msaa_kernel::portable ? 0 : S) {
-            case 4: resolve_row_sse2<4>(pixel(0, y), touched, width_, clear_colour, colour, z); continue;
+            case 4: {
+                int x = 0;
+#ifdef TINY3D_AVX512
+                if (kernel == msaa_kernel::avx512) {
+                    x = width_ / 8 * 8;
+                    resolve_row4_avx512(pixel(0, y), touched, x, clear_colour, colour, z);
+                }
+#endif
+                resolve_row_sse2<4>(pixel(x, y), touched + x, width_ - x, clear_colour, colour + x, z + x);
+                continue;
+            }
             case 8: resolve_row_sse2<8>(pixel(0, y), touched, width_, clear_colour, colour, z); continue;
             case 16: resolve_row_sse2<16>(pixel(0, y), touched, width_, clear_colour, colour, z); continue;
             default: break;

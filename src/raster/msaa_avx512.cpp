@@ -334,6 +334,48 @@ void fill_rows_avx512(sample_store &store, const msaa_triangle &f, const sample_
     });
 }
 
+// Eight pixels (four lines of two) at a time. Per 128-bit lane a line holds one quad of four
+// samples: pixel A's depths, A's colours, B's depths, B's colours. The SSE2 resolve's
+// transpose (unpacks, then the low and high halves) runs on all four quads of two pairs of
+// lines at once, with the sums and minima both taken; the colours are then the sums of
+// quads 1 and 3 and the depths the minima of quads 0 and 2 (pixels 0, 2, 4, 6 and 1, 3, 5,
+// 7), put in pixel order by one permute. An untouched pixel's samples hold (1, clear) at
+// rest, whose sum is exactly 4·clear and minimum 1: no select.
+void resolve_row4_avx512(float *p, const std::uint8_t *touched, int pixels, float clear_colour, float *colour,
+                         float *z) {
+    const __m512 rest = _mm512_setr_ps(1, 1, 1, 1, clear_colour, clear_colour, clear_colour, clear_colour, 1, 1, 1, 1,
+                                       clear_colour, clear_colour, clear_colour, clear_colour);
+    const __m256 quarter = _mm256_set1_ps(0.25f), clear = _mm256_set1_ps(clear_colour), far = _mm256_set1_ps(1.0f);
+    // Lane j of the result: pixel j from quad 0 or 1 (even j) or quad 2 or 3 (odd j).
+    const __m512i depth_order = _mm512_setr_epi32(0, 8, 1, 9, 2, 10, 3, 11, 0, 0, 0, 0, 0, 0, 0, 0);
+    const __m512i colour_order = _mm512_setr_epi32(4, 12, 5, 13, 6, 14, 7, 15, 0, 0, 0, 0, 0, 0, 0, 0);
+    for (int x = 0; x < pixels; x += 8, p += 8 * 8) {
+        std::uint64_t t8;
+        std::memcpy(&t8, touched + x, sizeof t8);
+        if (t8 == 0) {
+            _mm256_storeu_ps(colour + x, clear), _mm256_storeu_ps(z + x, far);
+            continue;
+        }
+        const __m512 l0 = _mm512_load_ps(p), l1 = _mm512_load_ps(p + 16);
+        const __m512 l2 = _mm512_load_ps(p + 32), l3 = _mm512_load_ps(p + 48);
+        // Per quad: (s0, s0', s1, s1') and (s2, s2', s3, s3') of lines 0 and 1 (2 and 3).
+        const __m512 lo01 = _mm512_unpacklo_ps(l0, l1), hi01 = _mm512_unpackhi_ps(l0, l1);
+        const __m512 lo23 = _mm512_unpacklo_ps(l2, l3), hi23 = _mm512_unpackhi_ps(l2, l3);
+        const __m512 sum01 = _mm512_add_ps(lo01, hi01), sum23 = _mm512_add_ps(lo23, hi23);
+        const __m512 min01 = _mm512_min_ps(lo01, hi01), min23 = _mm512_min_ps(lo23, hi23);
+        // Per quad, the four lines' pixels: (s0 + s2) + (s1 + s3), min(min(s0, s2), min(s1, s3)).
+        const __m512 sums = _mm512_add_ps(_mm512_shuffle_ps(sum01, sum23, _MM_SHUFFLE(1, 0, 1, 0)),
+                                          _mm512_shuffle_ps(sum01, sum23, _MM_SHUFFLE(3, 2, 3, 2)));
+        const __m512 mins = _mm512_min_ps(_mm512_shuffle_ps(min01, min23, _MM_SHUFFLE(1, 0, 1, 0)),
+                                          _mm512_shuffle_ps(min01, min23, _MM_SHUFFLE(3, 2, 3, 2)));
+        _mm256_storeu_ps(colour + x,
+                         _mm256_mul_ps(_mm512_castps512_ps256(_mm512_permutexvar_ps(colour_order, sums)), quarter));
+        _mm256_storeu_ps(z + x, _mm512_castps512_ps256(_mm512_permutexvar_ps(depth_order, mins)));
+        _mm512_store_ps(p, rest), _mm512_store_ps(p + 16, rest);
+        _mm512_store_ps(p + 32, rest), _mm512_store_ps(p + 48, rest);
+    }
+}
+
 }  // namespace tiny3d::detail
 
 #include "../avx512_region_close.inc"

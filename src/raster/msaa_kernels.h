@@ -84,6 +84,13 @@ void fill_rows_avx2(sample_store &store, const msaa_triangle &f, const sample_pa
 // tests and float operations as the portable kernel.
 void fill_rows_avx512(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
                       bool depth_write, float clear_colour, int y0, int y1);
+// The 4-sample resolve of one tile row's first `pixels` pixels (a multiple of 8), p at its
+// first pixel, the tile at rest (sample_store): colour := ((s0 + s2) + (s1 + s3)) · 1/4,
+// z := min(min(s0, s2), min(s1, s3)) — the SSE2 resolve's operations in its order, so the
+// same bits — and every pixel read put back at rest. Eight untouched pixels get the clear
+// values without reading their samples.
+void resolve_row4_avx512(float *p, const std::uint8_t *touched, int pixels, float clear_colour, float *colour,
+                         float *z);
 #endif
 
 }  // namespace tiny3d::detail
