@@ -198,6 +198,40 @@ TEST(clusters_near_the_silhouette_and_close_cameras) {
     CHECK(by_cluster > 0);
 }
 
+TEST(clusters_with_several_draws_of_one_mesh_in_a_frame) {
+    // A thread transforms each vertex of the walked chunks once per draw (a vertex shared by
+    // two chunks is not transformed again): the second draw of the same mesh, under another
+    // model matrix, must transform every vertex anew, in 1- and multisampled frames alike.
+    const raster_mesh m = smooth_raster_mesh(make_icosphere(4));
+    const raster_clusters cl = make_raster_clusters(m, 64).value();
+    canvas_ptr c = make_canvas(200, 150).value();
+    draw_params p = scene_s_params();
+    const mat4_t models[3] = {mat4_rotate_y(0.3f), mat4_multiply(mat4_translate(0.4f, 0.1f, 0.5f), mat4_rotate_xyz(1.0f, 0.2f, 0)),
+                              mat4_multiply(mat4_translate(-0.5f, -0.2f, -0.3f), mat4_scale(0.6f, 0.6f, 0.6f))};
+    auto frame = [&](render_context &ctx, sample_count samples, const raster_clusters *clusters) {
+        p.clusters = clusters;
+        CHECK(ctx.begin_frame(*c, 0.05f, samples).ok());
+        for (const mat4_t &model : models) {
+            p.model = model;
+            ctx.draw(m, p);
+        }
+        ctx.end_frame();
+        return raster_test::capture(ctx, *c);
+    };
+    for (int threads : {1, 2, 3}) {
+        render_context ctx(threads);
+        for (sample_count samples : {sample_count::x1, sample_count::x4}) {
+            const rendered plain = frame(ctx, samples, nullptr);
+            for (int repeat = 0; repeat < 2; ++repeat) {  // (the same context again: stamps of the last frame)
+                const rendered with = frame(ctx, samples, &cl);
+                CHECK_MSG(same_frame(plain, with), std::to_string(threads) + " threads, " +
+                                                       std::to_string(static_cast<int>(samples)) + " samples");
+                CHECK(with.stats.backface_by_cluster > 0);
+            }
+        }
+    }
+}
+
 TEST(clusters_of_another_mesh_are_ignored) {
     const raster_mesh m = smooth_raster_mesh(make_icosphere(4)), other = smooth_raster_mesh(make_icosphere(3));
     const raster_clusters stale = make_raster_clusters(other, 64).value();

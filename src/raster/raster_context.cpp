@@ -130,8 +130,9 @@ void render_context::impl::emit(const clip_vertex *poly, int n, const draw_param
 // `thread` into the piece's lists and bins. With clusters (`view` not null) the piece is a
 // run of chunks: each is decided first — proven back-facing: skipped and counted as culled —
 // then the walked chunks' vertices are transformed one chunk at a time when they are fewer
-// than the mesh's (a vertex shared by two walked chunks twice), else every vertex at once
-// (meshes whose chunks are rarely skipped, drawn as one piece), and their triangles set up.
+// than the mesh's (a vertex shared by walked chunks only once per draw and thread:
+// segment::not_yet_transformed), else every vertex at once (meshes whose chunks are rarely
+// skipped, drawn as one piece), and their triangles set up.
 void render_context::impl::set_up_piece(int thread, int number, const raster_mesh &m, const draw_params &p,
                                         const vertex_job &job, std::uint32_t state, const cluster_view *view,
                                         const draw_plan &plan) {
@@ -180,7 +181,7 @@ void render_context::impl::set_up_piece(int thread, int number, const raster_mes
     for (std::size_t k = first; k < last; ++k) {
         if (!seg.walk[k - first]) continue;
         const raster_cluster &c = (*chunks)[k];
-        if (per_chunk) transform(m, p, job, {chunk_vertices + c.vertex_first, c.vertex_count}, seg);
+        if (per_chunk) transform(m, p, job, seg.not_yet_transformed(chunk_vertices + c.vertex_first, c.vertex_count), seg);
         setup_range(m, p, state, job.generic, seg, c.first, c.first + c.count, out);
     }
 }
@@ -307,7 +308,8 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
 void render_context::impl::grow_segments(std::size_t vertex_count, bool generic) {
     for (int t = 0; t < pool.size(); ++t) {
         segment &seg = segments[t];
-        if (seg.vertices.size() < vertex_count) seg.vertices.resize(vertex_count), seg.clip.resize(vertex_count);
+        if (seg.vertices.size() < vertex_count)
+            seg.vertices.resize(vertex_count), seg.clip.resize(vertex_count), seg.stamp.resize(vertex_count, 0u);
         if (generic && seg.vertex_attr.size() < vertex_count * ATTR_COUNT) seg.vertex_attr.resize(vertex_count * ATTR_COUNT);
     }
 }
@@ -369,6 +371,7 @@ void render_context::impl::draw_band(int band, const draw_params &p, const draw_
 void render_context::impl::set_up_and_draw(int thread, const raster_mesh &m, const draw_params &p,
                                            const vertex_job &job, std::uint32_t state, const cluster_view *view,
                                            const draw_plan &plan) {
+    segments[thread].begin_draw();
     if (plan.shared_vertices) {
         // Ranges of whole 64-vertex blocks: no two threads write one cache line of the arrays.
         const int n = pool.size();

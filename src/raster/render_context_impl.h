@@ -89,6 +89,28 @@ struct render_context::impl {
         std::vector<vec4_t> clip;               // their clip-space positions
         std::vector<float> vertex_attr;         // ATTR_COUNT per vertex (generic path only)
         std::vector<std::uint8_t> walk;         // a piece's cluster chunks: walked or skipped
+        // Which vertices this thread has transformed in the current draw: stamp[i] ==
+        // generation (bumped once per draw and thread). A vertex shared by several walked
+        // chunks (1.41 chunk vertices per mesh vertex in Scene S) is transformed once.
+        std::vector<std::uint32_t> stamp;
+        std::uint32_t generation = 0;
+        std::vector<std::uint32_t> fresh;  // a chunk's vertices not yet transformed
+        // A new draw: no vertex transformed yet (stamps cleared when the counter wraps).
+        void begin_draw() {
+            if (++generation == 0) std::fill(stamp.begin(), stamp.end(), 0u), generation = 1;
+        }
+        // The vertices of `list` not yet transformed in this draw, marked as transformed now.
+        detail::vertex_set not_yet_transformed(const std::uint32_t *list, std::size_t count) {
+            if (fresh.size() < count) fresh.resize(count);  // (grown once: the largest chunk)
+            std::size_t n = 0;
+            for (std::size_t k = 0; k < count; ++k) {  // (branch-free: the fresh ones are mixed)
+                const std::uint32_t i = list[k];
+                fresh[n] = i;
+                n += stamp[i] != generation;
+                stamp[i] = generation;
+            }
+            return {fresh.data(), n};
+        }
     };
     // What the set-up of one piece produced (render_bands.h), on cache lines of its own.
     struct alignas(detail::CACHE_LINE) piece {
