@@ -8,7 +8,8 @@
 //  * every 1-sample kernel this CPU runs (raster_simd) gives the SSE2 kernel's pixels bit
 //    for bit under every depth test, and the portable kernel the same coverage with depth
 //    and intensity within 2e-6 of them (depth test always), on random triangles of every
-//    width (narrow ones with 1–4 groups of four, wide ones, ones at the canvas' right edge);
+//    width (narrow ones with 1–4 groups of four — the AVX-512 kernel's 8- and 16-lane rows —,
+//    wide ones, ones at the canvas' right edge);
 //  * the hand-out (render_bands.h): with 1–16 threads taking at once, every piece and every
 //    band goes to exactly one thread; a thread's first piece is the first of its home run,
 //    its run is taken front to back and the others' from the back; bands are claimed in the

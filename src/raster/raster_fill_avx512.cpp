@@ -1,9 +1,10 @@
 // raster_fill_avx512.cpp — the 1-sample fill's AVX-512 kernels (raster_simd::avx512):
-//  * a narrow triangle's row (at most NARROW_WIDTH = 16 columns) as ONE 16-lane register,
-//    the row's span a lane mask, the depth test a masked compare and the colour and depth
-//    writes masked stores (no colour read, no blend), where the SSE2 kernel needs up to four
-//    groups of four, each loaded, compared, blended and stored; four rows' spans and plane
-//    values computed at once. Every other triangle goes to the SSE2 kernels (fill_fast_rows).
+//  * a narrow triangle's row (at most NARROW_WIDTH = 16 columns) as ONE 16-lane register (8
+//    lanes, 256 bits, for a triangle at most 8 columns wide), the row's span a lane mask,
+//    the depth test a masked compare and the colour and depth writes masked stores (no
+//    colour read, no blend), where the SSE2 kernel needs up to four groups of four, each
+//    loaded, compared, blended and stored; four rows' spans and plane values computed at
+//    once. Every other triangle goes to the SSE2 kernels (fill_fast_rows).
 //  * the fast set-up of eight triangles at once (setup_fast_batch_avx512).
 //
 // The same results, bit for bit, as the SSE2 kernel and the scalar set-up: the lanes' depth
@@ -32,26 +33,61 @@
 namespace tiny3d::detail {
 namespace {
 
-template <depth_func Test>
-inline __mmask16 depth_pass(__mmask16 cover, __m512 z, __m512 stored) {
+// The narrow kernel's registers: a row of up to 16 columns as 16 lanes, or of up to 8 as 8
+// lanes (half the work where a 512-bit operation costs two 256-bit ones, as on AMD Zen 4;
+// fewer group steps everywhere). The same operations on either width, lane by lane.
+struct lanes16 {
+    using vec = __m512;
+    using mask = __mmask16;
+    static constexpr int count = 16;
+    static vec set1(float v) { return _mm512_set1_ps(v); }
+    static vec column() { return _mm512_setr_ps(0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3); }
+    static vec add(vec a, vec b) { return _mm512_add_ps(a, b); }
+    static vec mul(vec a, vec b) { return _mm512_mul_ps(a, b); }
+    static vec mask_add(vec src, mask m, vec a, vec b) { return _mm512_mask_add_ps(src, m, a, b); }
+    static vec clamp01(vec v) { return _mm512_min_ps(_mm512_max_ps(v, _mm512_setzero_ps()), _mm512_set1_ps(1.0f)); }
+    static vec load(mask m, const float *p) { return _mm512_maskz_loadu_ps(m, p); }
+    static void store(float *p, mask m, vec v) { _mm512_mask_storeu_ps(p, m, v); }
+    template <int Predicate>
+    static mask compare(mask m, vec a, vec b) { return _mm512_mask_cmp_ps_mask(m, a, b, Predicate); }
+};
+struct lanes8 {
+    using vec = __m256;
+    using mask = __mmask8;
+    static constexpr int count = 8;
+    static vec set1(float v) { return _mm256_set1_ps(v); }
+    static vec column() { return _mm256_setr_ps(0, 1, 2, 3, 0, 1, 2, 3); }
+    static vec add(vec a, vec b) { return _mm256_add_ps(a, b); }
+    static vec mul(vec a, vec b) { return _mm256_mul_ps(a, b); }
+    static vec mask_add(vec src, mask m, vec a, vec b) { return _mm256_mask_add_ps(src, m, a, b); }
+    static vec clamp01(vec v) { return _mm256_min_ps(_mm256_max_ps(v, _mm256_setzero_ps()), _mm256_set1_ps(1.0f)); }
+    static vec load(mask m, const float *p) { return _mm256_maskz_loadu_ps(m, p); }
+    static void store(float *p, mask m, vec v) { _mm256_mask_storeu_ps(p, m, v); }
+    template <int Predicate>
+    static mask compare(mask m, vec a, vec b) { return _mm256_mask_cmp_ps_mask(m, a, b, Predicate); }
+};
+
+template <depth_func Test, class L>
+inline typename L::mask depth_pass(typename L::mask cover, typename L::vec z, typename L::vec stored) {
     // The SSE2 kernel's compares (cmpltps … cmpneqps): ordered and signalling but for
     // not_equal, which is true on NaN.
-    if constexpr (Test == depth_func::less) return _mm512_mask_cmp_ps_mask(cover, z, stored, _CMP_LT_OS);
-    else if constexpr (Test == depth_func::less_equal) return _mm512_mask_cmp_ps_mask(cover, z, stored, _CMP_LE_OS);
-    else if constexpr (Test == depth_func::equal) return _mm512_mask_cmp_ps_mask(cover, z, stored, _CMP_EQ_OQ);
-    else if constexpr (Test == depth_func::greater) return _mm512_mask_cmp_ps_mask(cover, z, stored, _CMP_GT_OS);
-    else if constexpr (Test == depth_func::greater_equal) return _mm512_mask_cmp_ps_mask(cover, z, stored, _CMP_GE_OS);
-    else if constexpr (Test == depth_func::not_equal) return _mm512_mask_cmp_ps_mask(cover, z, stored, _CMP_NEQ_UQ);
+    if constexpr (Test == depth_func::less) return L::template compare<_CMP_LT_OS>(cover, z, stored);
+    else if constexpr (Test == depth_func::less_equal) return L::template compare<_CMP_LE_OS>(cover, z, stored);
+    else if constexpr (Test == depth_func::equal) return L::template compare<_CMP_EQ_OQ>(cover, z, stored);
+    else if constexpr (Test == depth_func::greater) return L::template compare<_CMP_GT_OS>(cover, z, stored);
+    else if constexpr (Test == depth_func::greater_equal) return L::template compare<_CMP_GE_OS>(cover, z, stored);
+    else if constexpr (Test == depth_func::not_equal) return L::template compare<_CMP_NEQ_UQ>(cover, z, stored);
     else return cover;  // always
 }
 
 // The lanes' offsets from the row's value, as the SSE2 kernel forms them: lane l of group
 // g = l / 4 is (row + step·(l mod 4)) + 4·step, the group step added g times.
-inline __m512 lanes_from(float row, __m512 within_group, __m512 group_step) {
-    __m512 v = _mm512_add_ps(_mm512_set1_ps(row), within_group);
-    v = _mm512_mask_add_ps(v, 0xFFF0, v, group_step);
-    v = _mm512_mask_add_ps(v, 0xFF00, v, group_step);
-    return _mm512_mask_add_ps(v, 0xF000, v, group_step);
+template <class L>
+inline typename L::vec lanes_from(float row, typename L::vec within_group, typename L::vec group_step) {
+    typename L::vec v = L::add(L::set1(row), within_group);
+    for (int g = 1; g < L::count / 4; ++g)  // (unrolled: the lanes of group g and after)
+        v = L::mask_add(v, static_cast<typename L::mask>((0xFFFFu << (4 * g)) & 0xFFFFu), v, group_step);
+    return v;
 }
 
 // The covered columns of four rows dy .. dy + 3 as four 16-bit lane masks (bit x: column
@@ -84,13 +120,15 @@ struct span_batch {
     }
 };
 
-template <depth_func Test, bool HasDepth>
-[[gnu::always_inline]] inline void narrow_rows(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bool depth_write, int y0, int y1) {
-    const __m512 column = _mm512_setr_ps(0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3);
-    const __m512 zoff = _mm512_mul_ps(_mm512_set1_ps(f.zdx), column);
-    const __m512 ioff = _mm512_mul_ps(_mm512_set1_ps(f.idx), column);
-    const __m512 zstep = _mm512_set1_ps(4.0f * f.zdx), istep = _mm512_set1_ps(4.0f * f.idx);
-    const __m512 zero = _mm512_setzero_ps(), one = _mm512_set1_ps(1.0f);
+// A triangle that narrow_fits, rows [y0, y1) within f's, with L's lanes (L::count columns
+// from min_x: the triangle is at most that wide).
+template <depth_func Test, bool HasDepth, class L>
+[[gnu::always_inline]] inline void narrow_rows_with(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bool depth_write, int y0, int y1) {
+    using vec = typename L::vec;
+    using mask = typename L::mask;
+    const vec column = L::column();
+    const vec zoff = L::mul(L::set1(f.zdx), column), ioff = L::mul(L::set1(f.idx), column);
+    const vec zstep = L::set1(4.0f * f.zdx), istep = L::set1(4.0f * f.idx);
     const span_batch spans(f);
     const float z0 = f.z, zdy = f.zdy, i0 = f.i, idy = f.idy;  // locals: the stores could alias f
     const int min_x = f.min_x, min_y = f.min_y;
@@ -106,16 +144,23 @@ template <depth_func Test, bool HasDepth>
             _mm_store_ps(zrow_at, _mm_add_ps(z0v, _mm_mul_ps(zdyv, dy_f)));
             _mm_store_ps(irow_at, _mm_add_ps(i0v, _mm_mul_ps(idyv, dy_f)));
         }
-        const __m512 z = lanes_from(zrow_at[r], zoff, zstep);
-        const __m512 in = lanes_from(irow_at[r], ioff, istep);
-        __mmask16 pass = _cvtu32_mask16(static_cast<unsigned>(cover[r]));
+        const vec z = lanes_from<L>(zrow_at[r], zoff, zstep);
+        const vec in = lanes_from<L>(irow_at[r], ioff, istep);
+        mask pass = static_cast<mask>(cover[r]);  // (the bits beyond L::count are 0: the span is narrower)
         if constexpr (HasDepth) {
             float *zrow = depth->row(y) + min_x;
-            pass = depth_pass<Test>(pass, z, _mm512_maskz_loadu_ps(pass, zrow));
-            if (depth_write) _mm512_mask_storeu_ps(zrow, pass, z);
+            pass = depth_pass<Test, L>(pass, z, L::load(pass, zrow));
+            if (depth_write) L::store(zrow, pass, z);
         }
-        _mm512_mask_storeu_ps(canvas.pixels[y] + min_x, pass, _mm512_min_ps(_mm512_max_ps(in, zero), one));
+        L::store(canvas.pixels[y] + min_x, pass, L::clamp01(in));
     }
+}
+
+// narrow_rows_with eight lanes when the triangle is at most eight columns wide, else sixteen.
+template <depth_func Test, bool HasDepth>
+[[gnu::always_inline]] inline void narrow_rows(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bool depth_write, int y0, int y1) {
+    if (f.max_x - f.min_x < lanes8::count) narrow_rows_with<Test, HasDepth, lanes8>(canvas, depth, f, depth_write, y0, y1);
+    else narrow_rows_with<Test, HasDepth, lanes16>(canvas, depth, f, depth_write, y0, y1);
 }
 
 }  // namespace
