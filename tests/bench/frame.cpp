@@ -4,16 +4,19 @@
 // colour and depth cleared every frame, mesh turned 1° about +y per frame; 5 warm-up and 50
 // timed frames (median, min, max ms); one and two threads, with cluster culling
 // (make_raster_clusters, built once before timing) and, for comparison, without, and with
-// the SSE2 fill forced on a CPU that has a faster one (what CPUs without AVX-512 get); frame
-// time against triangle count for levels 3–7. Only what this program measures is printed; other
+// the SSE2 fill forced on a CPU that has a faster one (what CPUs without AVX-512 get); level 6
+// on one thread while another context renders on the other core (the machine's penalty on
+// two busy cores); frame time against triangle count for levels 3–7. Only what this program measures is printed; other
 // renderers' figures are in documentation/other_renderers.md, with their source and date.
 // Error column: fraction of pixels where the two-thread frame differs from the one-thread
 // frame, or the frame without clusters from the frame with them (must be 0).
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <map>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "common/bench.h"
@@ -71,6 +74,32 @@ bench::timing time_frames(scene &s, int threads, canvas_t &canvas, int frames, b
     for (int k = 0; k < WARMUP_FRAMES - 1; ++k) render();  // measure_ns adds one more
     const bench::timing t = bench::measure_ns(frames, NS_PER_MS, render);
     bench::keep(canvas.data[SIDE * SIDE / 2]);
+    return t;
+}
+
+// Times one-thread frames as time_frames does while a second one-thread context renders the
+// same scene on another thread without pause: what a core's frame costs when the other core
+// works too (they share the last-level cache, the memory bus and, on many machines, the
+// clock). Its ratio to the one-thread frame is the machine's penalty on two busy cores,
+// which two threads sharing one frame pay as well: it is why their frame is not half.
+bench::timing time_frames_beside_another(scene &s, canvas_t &canvas, int frames) {
+    std::atomic<bool> done{false};
+    tiny3d::draw_params params = s.params;  // (copied here: time_frames changes s.params)
+    params.clusters = &s.clusters;
+    std::thread other([&done, &s, params] {
+        tiny3d::canvas_ptr own = tiny3d::make_canvas(SIDE, SIDE).value();
+        tiny3d::render_context ctx(1);
+        tiny3d::draw_params p = params;
+        for (int frame = 0; !done.load(std::memory_order_relaxed); ++frame) {
+            p.model = tiny3d::mat4_rotate_y(static_cast<float>(frame * M_PI / 180));
+            if (!ctx.begin_frame(*own).ok()) return;
+            ctx.draw(s.mesh, p);
+            ctx.end_frame();
+        }
+    });
+    const bench::timing t = time_frames(s, 1, canvas, frames);
+    done.store(true, std::memory_order_relaxed);
+    other.join();
     return t;
 }
 
@@ -132,6 +161,14 @@ int main(int argc, char **argv) {
                         "libtiny3d 1 thread", tag});
         rows.push_back({"frame", w.name + " libtiny3d 2 threads", "fast", "ms/frame", t2, diff, diff, "px fraction",
                         "error = pixels differing from 1 thread", "libtiny3d 2 threads", tag});
+        if (tag == "L6") {  // the machine's penalty on two busy cores
+            const bench::timing beside = time_frames_beside_another(s, *plain, frames);
+            const double diff_beside = differing_fraction(*one, *plain);
+            rows.push_back({"frame", w.name + " libtiny3d 1 thread, another on the other core", "other", "ms/frame",
+                            beside, diff_beside, diff_beside, "px fraction",
+                            "the slowdown of a core while the other works; error = pixels differing from 1 thread",
+                            "libtiny3d 1 thread beside another", tag});
+        }
         rows.push_back({"frame", w.name + " libtiny3d 1 thread, no clusters", "other", "ms/frame", t1_plain, diff1_plain,
                         diff1_plain, "px fraction", "error = pixels differing from the frame with clusters",
                         "libtiny3d 1 thread, no clusters", tag});
