@@ -219,6 +219,11 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
         fast_triangle set_up[SETUP_BATCH];
         setup_fast_batch_avx512(batch, full, verdict, set_up);
         for (int l = 0; l < batch.count; ++l) {
+            if (verdict[l] == fast_setup::ready) {  // (the common case: no lane gathered)
+                out.stats.rasterized += 1;
+                bin_fast(set_up[l], out);
+                continue;
+            }
             const std::int32_t X[3] = {batch.X[0][l], batch.X[1][l], batch.X[2][l]};
             const std::int32_t Y[3] = {batch.Y[0][l], batch.Y[1][l], batch.Y[2][l]};
             const float depth[3] = {batch.depth[0][l], batch.depth[1][l], batch.depth[2][l]};
