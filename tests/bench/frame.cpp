@@ -82,7 +82,7 @@ bench::timing time_frames(scene &s, int threads, canvas_t &canvas, int frames, b
 // same scene on another thread without pause: what a core's frame costs when the other core
 // works too (they share the last-level cache, the memory bus and, on many machines, the
 // clock). Its ratio to the one-thread frame is the machine's penalty on two busy cores,
-// which two threads sharing one frame pay as well: it is why their frame is not half.
+// which two threads sharing one frame pay as well: part of why their frame is not half.
 bench::timing time_frames_beside_another(scene &s, canvas_t &canvas, int frames) {
     std::atomic<bool> done{false};
     tiny3d::draw_params params = s.params;  // (copied here: time_frames changes s.params)
