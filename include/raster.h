@@ -347,15 +347,16 @@ result<sample_count> parse_sample_count(const std::string &text);
 // The instruction sets a render context's triangle fills can use.
 //  Multisampled frames (x4, x8, x16): every one gives the same samples and images, bit for
 //    bit (tests/antialias_test.cpp compares each this CPU runs with the portable one).
-//  1-sample frames: sse2 and avx2 run the SSE2 kernels (there is no AVX2 one), avx512 the
-//    AVX-512 kernel for triangles at most 16 px wide and SSE2's for the others; these give
-//    the same pixels, bit for bit (tests/raster_threads_test.cpp). The portable kernel decides
+//  1-sample frames: sse2 runs the SSE2 kernels; avx2 and avx512 their own kernels for
+//    triangles at most 16 px wide and SSE2's for the others; these give the same pixels,
+//    bit for bit (tests/raster_threads_test.cpp). The portable kernel decides
 //    the same coverage but may differ from them in the last bits of depth and intensity.
 // They differ in speed (documentation/antialias.md, documentation/raster.md).
 enum class raster_simd {
     portable,  // plain C++, 64-bit edge values, one sample at a time
     sse2,      // four samples per register (every x86-64 CPU)
-    avx2,      // 4×: two pixels per register, 8×/16×: a pixel per one or two (AVX2); 1×: as sse2
+    avx2,      // 4×: two pixels per register, 8×/16×: a pixel per one or two, 1×: two groups of four
+               // columns of a narrow triangle's row per register (AVX2)
     avx512     // 4×: a 2 × 2 block per register, 8×/16×: a pixel per register, 1×: a row of a narrow
                // triangle per register (AVX-512 F/VL/DQ/BW)
 };

@@ -498,6 +498,9 @@ void fill_fast_bins(canvas_t &canvas, zbuffer &depth, const band_bin *bins, int 
 #ifdef TINY3D_AVX512
     if (kernel == fill_kernel::avx512) return fill_fast_bins_avx512(canvas, depth, bins, bin_count, test, y0, y1, ahead);
 #endif
+#ifdef TINY3D_AVX2
+    if (kernel == fill_kernel::avx2) return fill_fast_bins_avx2(canvas, depth, bins, bin_count, test, y0, y1, ahead);
+#endif
 #ifdef TINY3D_SSE2
     if (kernel != fill_kernel::portable) {
         with_depth_test(test, [&](auto t) {

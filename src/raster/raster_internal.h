@@ -184,9 +184,9 @@ fast_setup setup_fast_triangle(const std::int32_t X[3], const std::int32_t Y[3],
                                const float depth[3], const float intensity[3], fast_triangle &out);
 
 // The 1-sample fill's kernels, by the instruction set a render context is told to use
-// (raster.h): portable (plain C++), SSE2 (every x86-64 CPU; also what avx2 runs: there is no
-// AVX2 1-sample kernel) and AVX-512 for narrow triangles. Every one gives the same pixels
-// as SSE2's; the portable one differs from them in the last bits of depth and intensity.
+// (raster.h): portable (plain C++), SSE2 (every x86-64 CPU), AVX2 and AVX-512 for narrow
+// triangles (SSE2's for the others). Every one gives the same pixels as SSE2's; the
+// portable one differs from them in the last bits of depth and intensity.
 using fill_kernel = raster_simd;
 // Whether this build runs kernel k on this CPU, and the fastest it does (as for the
 // multisample kernels, msaa.h).
@@ -277,6 +277,13 @@ inline constexpr int NARROW_WIDTH = 16;
 inline bool narrow_fits(const fast_triangle &f, int width) {
     return f.max_x - f.min_x < NARROW_WIDTH && f.min_x + 4 * ((f.max_x - f.min_x + 4) / 4) <= width;
 }
+
+#ifdef TINY3D_AVX2
+// fill_fast_bins with the AVX2 kernel for the narrow triangles (raster_fill_avx2.cpp: two
+// groups of four per register; SSE2's for the others).
+void fill_fast_bins_avx2(canvas_t &canvas, zbuffer &depth, const band_bin *bins, int bin_count, depth_func test,
+                         int y0, int y1, band_prefetch &ahead);
+#endif
 
 #ifdef TINY3D_AVX512
 // The AVX-512 kernel (raster_fill_avx512.cpp) for a triangle that narrow_fits, rows
