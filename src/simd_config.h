@@ -3,8 +3,8 @@
 // kernel with its portable reference) is guarded by these macros, never by the compiler's
 // own (__SSE2__, __AVX512F__ …):
 //   TINY3D_SSE2    SSE2 kernels: the compiler targets SSE2 (every x86-64 build does).
-//   TINY3D_AVX2    AVX2 kernels (the multisample fill, the 1-sample narrow fill), compiled and checked at run time
-//                  as TINY3D_AVX512's are, for CPUs without AVX-512.
+//   TINY3D_AVX2    AVX2 kernels (the multisample fill, the 1-sample narrow fill), compiled
+//                  and checked at run time as TINY3D_AVX512's are, for CPUs without AVX-512.
 //   TINY3D_AVX512  AVX-512 kernels: x86-64 with GCC or clang, compiled in their own files
 //                  inside a target region (the rest of the build stays baseline) and run
 //                  only where the CPU check at run time finds AVX-512 F/VL/DQ/BW.
