@@ -356,26 +356,22 @@ void fill_rows_sse2(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bo
 template <depth_func Test, bool HasDepth, int Groups>
 void fill_rows_narrow(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bool depth_write, int y0, int y1) {
     const __m128i lane = _mm_set_epi32(3, 2, 1, 0), four = _mm_set1_epi32(4);
-    const __m128 lane_f = _mm_set_ps(3.0f, 2.0f, 1.0f, 0.0f);
-    const __m128 zoff = _mm_mul_ps(_mm_set1_ps(f.zdx), lane_f), ioff = _mm_mul_ps(_mm_set1_ps(f.idx), lane_f);
-    const __m128 zstep = _mm_set1_ps(4.0f * f.zdx), istep = _mm_set1_ps(4.0f * f.idx);
     const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f);
     const row_spans spans(f);
-    const float z0 = f.z, zdy = f.zdy, i0 = f.i, idy = f.idy;  // locals: the stores could alias f
+    const group_planes planes(f);
     const int min_x = f.min_x, min_y = f.min_y;
     for (int y = y0; y < y1; ++y) {
         const int dy = y - min_y;
         int lo, hi;
         spans.at(dy, lo, hi);
         const __m128i before = _mm_set1_epi32(lo - 1), after = _mm_set1_epi32(hi + 1);
-        const float dy_f = static_cast<float>(dy);
-        __m128 z = _mm_add_ps(_mm_set1_ps(z0 + zdy * dy_f), zoff);
-        __m128 in = _mm_add_ps(_mm_set1_ps(i0 + idy * dy_f), ioff);
+        __m128 z, in;
+        planes.first_group(dy, z, in);
         float *color = canvas.pixels[y] + min_x;
         float *zrow = HasDepth ? depth->row(y) + min_x : nullptr;
         __m128i column = lane;
-        for (int g = 0; g < Groups; ++g, column = _mm_add_epi32(column, four), z = _mm_add_ps(z, zstep),
-                 in = _mm_add_ps(in, istep)) {
+        for (int g = 0; g < Groups; ++g, column = _mm_add_epi32(column, four), z = _mm_add_ps(z, planes.zstep),
+                 in = _mm_add_ps(in, planes.istep)) {
             __m128 mask = _mm_castsi128_ps(_mm_and_si128(_mm_cmpgt_epi32(column, before), _mm_cmplt_epi32(column, after)));
             if constexpr (HasDepth) {
                 const __m128 stored = _mm_loadu_ps(zrow + 4 * g);

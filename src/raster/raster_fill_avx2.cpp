@@ -75,22 +75,17 @@ inline void draw_single(float *color, float *zrow, int at, __m256i before, __m25
 // the same `Groups` groups of four from min_x (fill_rows_narrow's scheme), paired.
 template <depth_func Test, int Groups>
 void narrow_rows(canvas_t &canvas, zbuffer &depth, const fast_triangle &f, int y0, int y1) {
-    const __m128 lane_f = _mm_set_ps(3.0f, 2.0f, 1.0f, 0.0f);
-    const __m128 zoff = _mm_mul_ps(_mm_set1_ps(f.zdx), lane_f), ioff = _mm_mul_ps(_mm_set1_ps(f.idx), lane_f);
-    const __m128 zstep = _mm_set1_ps(4.0f * f.zdx), istep = _mm_set1_ps(4.0f * f.idx);
     const row_spans spans(f);
-    const float z0 = f.z, zdy = f.zdy, i0 = f.i, idy = f.idy;  // locals: the stores could alias f
+    const group_planes planes(f);
     const int min_x = f.min_x, min_y = f.min_y;
     for (int y = y0; y < y1; ++y) {
         const int dy = y - min_y;
         int lo, hi;
         spans.at(dy, lo, hi);
         const __m256i before = _mm256_set1_epi32(lo - 1), after = _mm256_set1_epi32(hi + 1);
-        const float dy_f = static_cast<float>(dy);
         __m128 z[Groups], in[Groups];
-        z[0] = _mm_add_ps(_mm_set1_ps(z0 + zdy * dy_f), zoff);
-        in[0] = _mm_add_ps(_mm_set1_ps(i0 + idy * dy_f), ioff);
-        for (int g = 1; g < Groups; ++g) z[g] = _mm_add_ps(z[g - 1], zstep), in[g] = _mm_add_ps(in[g - 1], istep);
+        planes.first_group(dy, z[0], in[0]);
+        for (int g = 1; g < Groups; ++g) z[g] = _mm_add_ps(z[g - 1], planes.zstep), in[g] = _mm_add_ps(in[g - 1], planes.istep);
         float *color = canvas.pixels[y] + min_x;
         float *zrow = depth.row(y) + min_x;
         int g = 0;

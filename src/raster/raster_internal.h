@@ -163,6 +163,26 @@ private:
     static constexpr double K = 1 << 20;
 };
 
+#ifdef TINY3D_SSE2
+// A narrow triangle's depth and intensity in groups of four columns from min_x, as the SSE2
+// narrow kernel forms them and every kernel that draws the same pixels repeats: row dy's
+// first group is the row's plane value plus the lane offsets (first_group), each further
+// group the previous one plus the group step (zstep, istep).
+struct group_planes {
+    __m128 zoff, ioff, zstep, istep;
+    float z0, zdy, i0, idy;  // copies: the kernels' stores could alias the triangle
+    explicit group_planes(const fast_triangle &f)
+        : zoff(_mm_mul_ps(_mm_set1_ps(f.zdx), _mm_set_ps(3.0f, 2.0f, 1.0f, 0.0f))),
+          ioff(_mm_mul_ps(_mm_set1_ps(f.idx), _mm_set_ps(3.0f, 2.0f, 1.0f, 0.0f))), zstep(_mm_set1_ps(4.0f * f.zdx)),
+          istep(_mm_set1_ps(4.0f * f.idx)), z0(f.z), zdy(f.zdy), i0(f.i), idy(f.idy) {}
+    void first_group(int dy, __m128 &z, __m128 &in) const {
+        const float dy_f = static_cast<float>(dy);
+        z = _mm_add_ps(_mm_set1_ps(z0 + zdy * dy_f), zoff);
+        in = _mm_add_ps(_mm_set1_ps(i0 + idy * dy_f), ioff);
+    }
+};
+#endif
+
 // Builds a fast_triangle from already computed edges (t.valid) and per-vertex window depth and
 // intensity. Returns false when the bounds are empty. When the triangle is too large for
 // 32-bit edges, sets `wide` to wide_index (the caller keeps `t` at that index).
