@@ -196,11 +196,14 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
     const pixel_rect full{0, 0, target->width, target->height};
     const std::int64_t last_row = target->height - 1;
     // A fast triangle's set-up verdict, acted on: binned, or too wide for the fast path.
+    auto bin_ready = [&](const fast_triangle &f) {
+        out.stats.rasterized += 1;
+        bin_fast(f, out);
+    };
     auto finish = [&](fast_setup verdict, const fast_triangle &f, const std::int32_t X[3], const std::int32_t Y[3],
                       const float depth[3], const float shade[3]) {
         if (verdict == fast_setup::ready) {
-            out.stats.rasterized += 1;
-            bin_fast(f, out);
+            bin_ready(f);
         } else if (verdict == fast_setup::wide) {
             const triangle_edges t = detail::triangle_setup_snapped(X, Y, full, p.cull);
             if (!t.valid) return;
@@ -220,8 +223,7 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
         setup_fast_batch_avx512(batch, full, verdict, set_up);
         for (int l = 0; l < batch.count; ++l) {
             if (verdict[l] == fast_setup::ready) {  // (the common case: no lane gathered)
-                out.stats.rasterized += 1;
-                bin_fast(set_up[l], out);
+                bin_ready(set_up[l]);
                 continue;
             }
             const std::int32_t X[3] = {batch.X[0][l], batch.X[1][l], batch.X[2][l]};

@@ -185,6 +185,7 @@ int main(int argc, char **argv) {
                       {tiny3d::raster_simd::sse2, ", SSE2 kernel (CPUs without AVX2)", ", SSE2 kernel"}};
         for (const auto &k : slower) {
             tiny3d::render_context probe(1);
+            // (raster_simd lists the kernels slowest first: only those slower than the best)
             if (k.simd >= tiny3d::best_raster_simd() || !probe.use_simd(k.simd)) continue;
             for (int threads : {1, 2}) {
                 const bench::timing t = time_frames(s, threads, *plain, frames, true, k.simd);
