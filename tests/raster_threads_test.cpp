@@ -31,6 +31,7 @@
 #include "mesh.h"
 #include "raster.h"
 #include "raster_test_util.h"
+#include "../src/raster/msaa.h"
 #include "../src/raster/raster_internal.h"
 #include "../src/raster/render_bands.h"
 #include "../src/simd_config.h"
@@ -261,6 +262,33 @@ TEST(one_sample_kernels_give_the_sse2_pixels_and_the_portable_coverage) {
     CHECK(compared >= (best_raster_simd() == raster_simd::avx512 ? 56 : 0));
 }
 
+#ifdef TINY3D_AVX512
+// A batch of 1..8 random triangles: vertices on the 1/16 px grid around a point of a 250 ×
+// 200 px rectangle, spans of 2 px to ~2,100 px (past the fast path's limit), some rows or
+// columns shared.
+detail::setup_batch random_setup_batch(std::mt19937 &rng) {
+    detail::setup_batch batch;
+    std::uniform_int_distribution<int> count_of(1, detail::SETUP_BATCH), coin(0, 7);
+    const int count = count_of(rng);
+    for (int l = 0; l < count; ++l) {
+        const int reach = coin(rng) == 0 ? 34000 : (coin(rng) < 4 ? 200 : 2000);
+        std::uniform_int_distribution<int> centre(-400, 4400), offset(-reach, reach);
+        const int cx = centre(rng), cy = centre(rng);
+        std::int32_t X[3], Y[3];
+        for (int k = 0; k < 3; ++k) X[k] = cx + offset(rng), Y[k] = cy + offset(rng);
+        if (coin(rng) == 0) Y[1] = Y[0];  // a horizontal edge
+        if (coin(rng) == 0) X[2] = X[1];  // a vertical one
+        std::int64_t area2 = detail::snapped_area2(X, Y);
+        if (area2 == 0) X[2] += 16, area2 = detail::snapped_area2(X, Y);
+        if (area2 == 0) continue;
+        std::uniform_real_distribution<float> value(0.0f, 1.0f);
+        const float depth[3] = {value(rng), value(rng), value(rng)}, shade[3] = {value(rng), value(rng), value(rng)};
+        batch.add(X, Y, area2, depth, shade);
+    }
+    return batch;
+}
+#endif
+
 TEST(batched_setup_gives_the_scalar_setup_bit_for_bit) {
 #ifdef TINY3D_AVX512
     if (!detail::fill_kernel_runs(raster_simd::avx512)) return;
@@ -268,27 +296,8 @@ TEST(batched_setup_gives_the_scalar_setup_bit_for_bit) {
     const pixel_rect clip{3, 5, 250, 200};
     int compared = 0, scalar = 0, ready = 0;
     for (int round = 0; round < 4000; ++round) {
-        detail::setup_batch batch;
-        std::uniform_int_distribution<int> count_of(1, detail::SETUP_BATCH), coin(0, 7);
-        const int count = count_of(rng);
-        for (int l = 0; l < count; ++l) {
-            // Vertices on the 1/16 px grid around a point of the clip rectangle, spans of
-            // 2 px to ~2,100 px (past the fast path's limit), some rows or columns shared.
-            const int reach = coin(rng) == 0 ? 34000 : (coin(rng) < 4 ? 200 : 2000);
-            std::uniform_int_distribution<int> centre(-400, 4400), offset(-reach, reach);
-            const int cx = centre(rng), cy = centre(rng);
-            std::int32_t X[3], Y[3];
-            for (int k = 0; k < 3; ++k) X[k] = cx + offset(rng), Y[k] = cy + offset(rng);
-            if (coin(rng) == 0) Y[1] = Y[0];  // a horizontal edge
-            if (coin(rng) == 0) X[2] = X[1];  // a vertical one
-            std::int64_t area2 = detail::snapped_area2(X, Y);
-            if (area2 == 0) X[2] += 16, area2 = detail::snapped_area2(X, Y);
-            if (area2 == 0) continue;
-            std::uniform_real_distribution<float> value(0.0f, 1.0f);
-            const float depth[3] = {value(rng), value(rng), value(rng)}, shade[3] = {value(rng), value(rng), value(rng)};
-            batch.add(X, Y, area2, depth, shade);
-        }
-        detail::fast_setup verdict[detail::SETUP_BATCH];
+        const detail::setup_batch batch = random_setup_batch(rng);
+    detail::fast_setup verdict[detail::SETUP_BATCH];
         detail::fast_triangle batched[detail::SETUP_BATCH];
         detail::setup_fast_batch_avx512(batch, clip, verdict, batched);
         for (int l = 0; l < batch.count; ++l) {
@@ -320,5 +329,56 @@ TEST(batched_setup_gives_the_scalar_setup_bit_for_bit) {
     CHECK(ready > 2000);
     CHECK(scalar > 100);
     CHECK(compared > 10000);
+#endif
+}
+
+// The multisampled frames' batched set-up (4 and 8 samples) against make_msaa_triangle.
+TEST(batched_multisample_setup_gives_the_scalar_setup_bit_for_bit) {
+#ifdef TINY3D_AVX512
+    if (!detail::fill_kernel_runs(raster_simd::avx512)) return;
+    std::mt19937 rng(20261204);
+    const pixel_rect clip{3, 5, 250, 200};
+    int ready = 0, empty = 0, scalar = 0;
+    for (const int samples : {4, 8}) {
+        const detail::sample_pattern &pat = detail::pattern_of(samples);
+        for (int round = 0; round < 3000; ++round) {
+            const detail::setup_batch batch = random_setup_batch(rng);
+            detail::fast_setup verdict[detail::SETUP_BATCH];
+            detail::msaa_triangle batched[detail::SETUP_BATCH];
+            detail::setup_msaa_batch_avx512(batch, pat, clip, verdict, batched);
+            for (int l = 0; l < batch.count; ++l) {
+                const std::int32_t X[3] = {batch.X[0][l], batch.X[1][l], batch.X[2][l]};
+                const std::int32_t Y[3] = {batch.Y[0][l], batch.Y[1][l], batch.Y[2][l]};
+                const float depth[3] = {batch.depth[0][l], batch.depth[1][l], batch.depth[2][l]};
+                const float shade[3] = {batch.shade[0][l], batch.shade[1][l], batch.shade[2][l]};
+                detail::msaa_triangle one;
+                const bool made = detail::make_msaa_triangle(X, Y, batch.area2[l], pat, clip, depth, shade, one);
+                if (verdict[l] == detail::fast_setup::scalar) {  // allowed only for a box past the fast span
+                    CHECK(std::max({X[0], X[1], X[2]}) - std::min({X[0], X[1], X[2]}) >= detail::FAST_SPAN_LIMIT ||
+                          std::max({Y[0], Y[1], Y[2]}) - std::min({Y[0], Y[1], Y[2]}) >= detail::FAST_SPAN_LIMIT);
+                    ++scalar;
+                    continue;
+                }
+                CHECK_EQ(verdict[l] == detail::fast_setup::ready, made);
+                if (!made) {
+                    ++empty;
+                    continue;
+                }
+                ++ready;
+                const detail::msaa_triangle &b = batched[l];
+                CHECK(b.min_x == one.min_x && b.max_x == one.max_x && b.min_y == one.min_y && b.max_y == one.max_y);
+                CHECK(std::memcmp(b.e, one.e, sizeof one.e) == 0);
+                CHECK(std::memcmp(b.a, one.a, sizeof one.a) == 0);
+                CHECK(std::memcmp(b.b, one.b, sizeof one.b) == 0);
+                const float planes_b[6] = {b.z, b.zdx, b.zdy, b.i, b.idx, b.idy};
+                const float planes_one[6] = {one.z, one.zdx, one.zdy, one.i, one.idx, one.idy};
+                CHECK(std::memcmp(planes_b, planes_one, sizeof planes_b) == 0);
+                CHECK(b.narrow == one.narrow && b.chunkable == one.chunkable);
+            }
+        }
+    }
+    CHECK(ready > 2000);
+    CHECK(empty > 1000);
+    CHECK(scalar > 100);
 #endif
 }

@@ -212,13 +212,35 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
         }
     };
     // With the AVX-512 kernels, fast triangles are set up eight at a time (in submission
-    // order: the batch is finished before a clipped triangle and at the end).
+    // order: the batch is finished before a clipped triangle and at the end), and so are
+    // the multisampled ones on the 1/16 px grid (4 and 8 samples).
     setup_batch batch;
-    [[maybe_unused]] const bool batched = kernel == fill_kernel::avx512 && !msaa;
+    [[maybe_unused]] const bool batched = kernel == fill_kernel::avx512 && (!msaa || pattern->bits == RASTER_SUBPIXEL_BITS);
     auto finish_batch = [&] {
 #ifdef TINY3D_AVX512
         if (batch.count == 0) return;
         fast_setup verdict[SETUP_BATCH];
+        auto lane = [&](int l, auto &&set_up_alone) {  // a lane the batch left to the scalar set-up
+            const std::int32_t X[3] = {batch.X[0][l], batch.X[1][l], batch.X[2][l]};
+            const std::int32_t Y[3] = {batch.Y[0][l], batch.Y[1][l], batch.Y[2][l]};
+            const float depth[3] = {batch.depth[0][l], batch.depth[1][l], batch.depth[2][l]};
+            const float shade[3] = {batch.shade[0][l], batch.shade[1][l], batch.shade[2][l]};
+            set_up_alone(X, Y, depth, shade);
+        };
+        if (msaa) {
+            msaa_triangle set_up[SETUP_BATCH];
+            setup_msaa_batch_avx512(batch, *pattern, full, verdict, set_up);
+            for (int l = 0; l < batch.count; ++l) {
+                if (verdict[l] == fast_setup::ready) add_msaa(set_up[l], state, out);
+                if (verdict[l] != fast_setup::scalar) continue;
+                lane(l, [&](const std::int32_t X[3], const std::int32_t Y[3], const float depth[3], const float shade[3]) {
+                    if (make_msaa_triangle(X, Y, batch.area2[l], *pattern, full, depth, shade, set_up[l]))
+                        add_msaa(set_up[l], state, out);
+                });
+            }
+            batch.count = 0;
+            return;
+        }
         fast_triangle set_up[SETUP_BATCH];
         setup_fast_batch_avx512(batch, full, verdict, set_up);
         for (int l = 0; l < batch.count; ++l) {
@@ -226,13 +248,11 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
                 bin_ready(set_up[l]);
                 continue;
             }
-            const std::int32_t X[3] = {batch.X[0][l], batch.X[1][l], batch.X[2][l]};
-            const std::int32_t Y[3] = {batch.Y[0][l], batch.Y[1][l], batch.Y[2][l]};
-            const float depth[3] = {batch.depth[0][l], batch.depth[1][l], batch.depth[2][l]};
-            const float shade[3] = {batch.shade[0][l], batch.shade[1][l], batch.shade[2][l]};
-            if (verdict[l] == fast_setup::scalar)
-                verdict[l] = detail::setup_fast_triangle(X, Y, batch.area2[l], full, depth, shade, set_up[l]);
-            finish(verdict[l], set_up[l], X, Y, depth, shade);
+            lane(l, [&](const std::int32_t X[3], const std::int32_t Y[3], const float depth[3], const float shade[3]) {
+                if (verdict[l] == fast_setup::scalar)
+                    verdict[l] = detail::setup_fast_triangle(X, Y, batch.area2[l], full, depth, shade, set_up[l]);
+                finish(verdict[l], set_up[l], X, Y, depth, shade);
+            });
         }
         batch.count = 0;
 #endif
@@ -267,6 +287,11 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
                                     static_cast<int>(last_row), row0, row1);
                 if (row0 > row1) continue;
                 out.stats.rasterized += 1;
+                if (batched) {
+                    batch.add(X, Y, area2, depth, shade);
+                    if (batch.count == SETUP_BATCH) finish_batch();
+                    continue;
+                }
                 detail::msaa_triangle f;
                 if (make_msaa_triangle(X, Y, area2, *pattern, full, depth, shade, f)) add_msaa(f, state, out);
                 continue;

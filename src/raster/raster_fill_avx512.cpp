@@ -5,7 +5,9 @@
 //    colour read, no blend), where the SSE2 kernel needs up to four groups of four, each
 //    loaded, compared, blended and stored; four rows' spans and plane values computed at
 //    once. Every other triangle goes to the SSE2 kernels (fill_fast_rows).
-//  * the fast set-up of eight triangles at once (setup_fast_batch_avx512).
+//  * the fast set-up of eight triangles at once (setup_fast_batch_avx512), and the
+//    multisampled frames' set-up of eight at once on the 1/16 px grid
+//    (setup_msaa_batch_avx512): the same lane edges and planes.
 //
 // The same results, bit for bit, as the SSE2 kernel and the scalar set-up: the lanes' depth
 // and intensity are formed in the SSE2 kernel's operation order (the row's value plus the
@@ -22,6 +24,7 @@
 #include <cstdint>
 #include <span>
 
+#include "msaa.h"
 #include "raster_internal.h"
 #include "../simd_config.h"
 
@@ -260,51 +263,105 @@ inline void plane_of(const float *f0, const float *f1, const float *f2, __m512d 
     gy_f = _mm512_cvtpd_ps(gy);
 }
 
-}  // namespace
+// The lanes' snapped vertices (sub-pixel units) and their box.
+struct lane_vertices {
+    __m256i X[3], Y[3], min_X, max_X, min_Y, max_Y;
+    explicit lane_vertices(const setup_batch &in) {
+        for (int k = 0; k < 3; ++k) {
+            X[k] = _mm256_load_si256(reinterpret_cast<const __m256i *>(in.X[k]));
+            Y[k] = _mm256_load_si256(reinterpret_cast<const __m256i *>(in.Y[k]));
+        }
+        min_X = _mm256_min_epi32(_mm256_min_epi32(X[0], X[1]), X[2]), max_X = _mm256_max_epi32(_mm256_max_epi32(X[0], X[1]), X[2]);
+        min_Y = _mm256_min_epi32(_mm256_min_epi32(Y[0], Y[1]), Y[2]), max_Y = _mm256_max_epi32(_mm256_max_epi32(Y[0], Y[1]), Y[2]);
+    }
+    // Lanes whose box spans FAST_SPAN_LIMIT or more on an axis (32-bit edge steps no longer suffice).
+    __mmask8 wide() const {
+        const __m256i limit = _mm256_set1_epi32(static_cast<int>(FAST_SPAN_LIMIT));
+        return static_cast<__mmask8>(_mm256_cmpge_epi32_mask(_mm256_sub_epi32(max_X, min_X), limit) |
+                                     _mm256_cmpge_epi32_mask(_mm256_sub_epi32(max_Y, min_Y), limit));
+    }
+};
 
-void setup_fast_batch_avx512(const setup_batch &in, pixel_rect clip, fast_setup verdict[SETUP_BATCH],
-                             fast_triangle out[SETUP_BATCH]) {
-    const __m256i X0 = _mm256_load_si256(reinterpret_cast<const __m256i *>(in.X[0]));
-    const __m256i X1 = _mm256_load_si256(reinterpret_cast<const __m256i *>(in.X[1]));
-    const __m256i X2 = _mm256_load_si256(reinterpret_cast<const __m256i *>(in.X[2]));
-    const __m256i Y0 = _mm256_load_si256(reinterpret_cast<const __m256i *>(in.Y[0]));
-    const __m256i Y1 = _mm256_load_si256(reinterpret_cast<const __m256i *>(in.Y[1]));
-    const __m256i Y2 = _mm256_load_si256(reinterpret_cast<const __m256i *>(in.Y[2]));
-    const __m256i min_X = _mm256_min_epi32(_mm256_min_epi32(X0, X1), X2), max_X = _mm256_max_epi32(_mm256_max_epi32(X0, X1), X2);
-    const __m256i min_Y = _mm256_min_epi32(_mm256_min_epi32(Y0, Y1), Y2), max_Y = _mm256_max_epi32(_mm256_max_epi32(Y0, Y1), Y2);
-    const __m256i limit = _mm256_set1_epi32(static_cast<int>(FAST_SPAN_LIMIT));
-    const __mmask8 wide = static_cast<__mmask8>(_mm256_cmpge_epi32_mask(_mm256_sub_epi32(max_X, min_X), limit) |
-                                                _mm256_cmpge_epi32_mask(_mm256_sub_epi32(max_Y, min_Y), limit));
-    // pixel_bounds: the pixels whose centre 16·p + 8 lies in [lo, hi], within the clip.
-    const __m256i half = _mm256_set1_epi32(RASTER_SUBPIXEL_ONE / 2), zero = _mm256_setzero_si256();
-    auto first_pixel = [&](__m256i lo, int clip0) {
-        return _mm256_max_epi32(_mm256_sub_epi32(zero, _mm256_srai_epi32(_mm256_sub_epi32(half, lo), RASTER_SUBPIXEL_BITS)),
-                                _mm256_set1_epi32(clip0));
-    };
-    auto last_pixel = [&](__m256i hi, int clip1) {
-        return _mm256_min_epi32(_mm256_srai_epi32(_mm256_sub_epi32(hi, half), RASTER_SUBPIXEL_BITS), _mm256_set1_epi32(clip1 - 1));
-    };
-    const __m256i min_x = first_pixel(min_X, clip.x0), max_x = last_pixel(max_X, clip.x1);
-    const __m256i min_y = first_pixel(min_Y, clip.y0), max_y = last_pixel(max_Y, clip.y1);
-    const __mmask8 empty = static_cast<__mmask8>(_mm256_cmpgt_epi32_mask(min_x, max_x) | _mm256_cmpgt_epi32_mask(min_y, max_y));
-    // Oriented by s = sign(area2), at the centre of pixel (min_x, min_y).
+// The pixels p of one axis whose centre 16·p + 8 plus an offset in [lo_off, hi_off] (sample
+// offsets; 0 for pixel centres) lies in [lo, hi], within [clip0, clip1): pixel_bounds and
+// msaa.cpp's axis_bounds, on the 1/16 px grid.
+inline void lane_axis_bounds(__m256i lo, __m256i hi, int lo_off, int hi_off, int clip0, int clip1, __m256i &first,
+                             __m256i &last) {
+    const __m256i half = _mm256_set1_epi32(RASTER_SUBPIXEL_ONE / 2);
+    first = _mm256_max_epi32(
+        _mm256_sub_epi32(_mm256_setzero_si256(),
+                         _mm256_srai_epi32(_mm256_sub_epi32(_mm256_add_epi32(half, _mm256_set1_epi32(hi_off)), lo), RASTER_SUBPIXEL_BITS)),
+        _mm256_set1_epi32(clip0));
+    last = _mm256_min_epi32(
+        _mm256_srai_epi32(_mm256_sub_epi32(_mm256_sub_epi32(hi, half), _mm256_set1_epi32(lo_off)), RASTER_SUBPIXEL_BITS),
+        _mm256_set1_epi32(clip1 - 1));
+}
+
+// The three edges (snapped_edge_at, oriented by s = sign(area2)) at the centre of pixel
+// (min_x, min_y): edge k from vertex k + 1 to vertex k − 1.
+inline void lane_edges_at(const setup_batch &in, const lane_vertices &v, __m256i min_x, __m256i min_y, lane_edges g[3]) {
+    const __m256i half = _mm256_set1_epi32(RASTER_SUBPIXEL_ONE / 2);
     const __mmask8 positive = _mm512_cmpgt_epi64_mask(_mm512_load_si512(in.area2), _mm512_setzero_si512());
     const __m256i s = _mm256_mask_blend_epi32(positive, _mm256_set1_epi32(-1), _mm256_set1_epi32(1));
     const __m256i cx = _mm256_add_epi32(_mm256_slli_epi32(min_x, RASTER_SUBPIXEL_BITS), half);
     const __m256i cy = _mm256_add_epi32(_mm256_slli_epi32(min_y, RASTER_SUBPIXEL_BITS), half);
-    const lane_edges g0 = edge_at(s, X1, Y1, X2, Y2, cx, cy);  // edge k from vertex k + 1 to k − 1
-    const lane_edges g1 = edge_at(s, X2, Y2, X0, Y0, cx, cy);
-    const lane_edges g2 = edge_at(s, X0, Y0, X1, Y1, cx, cy);
+    g[0] = edge_at(s, v.X[1], v.Y[1], v.X[2], v.Y[2], cx, cy);
+    g[1] = edge_at(s, v.X[2], v.Y[2], v.X[0], v.Y[0], cx, cy);
+    g[2] = edge_at(s, v.X[0], v.Y[0], v.X[1], v.Y[1], cx, cy);
+}
+
+// The depth and intensity planes through the snapped vertices (px) at the centre of pixel
+// (min_x, min_y), per lane: attribute_planes_at's doubles in its order. planes[0..5] =
+// depth, its x and y steps, intensity, its x and y steps.
+inline void lane_planes(const setup_batch &in, const lane_vertices &v, __m256i min_x, __m256i min_y,
+                        float planes[6][SETUP_BATCH]) {
+    const __m512d step = _mm512_set1_pd(1.0 / RASTER_SUBPIXEL_ONE);
+    const __m512d x0 = _mm512_mul_pd(to_double(v.X[0]), step), x1 = _mm512_mul_pd(to_double(v.X[1]), step);
+    const __m512d x2 = _mm512_mul_pd(to_double(v.X[2]), step), y0 = _mm512_mul_pd(to_double(v.Y[0]), step);
+    const __m512d y1 = _mm512_mul_pd(to_double(v.Y[1]), step), y2 = _mm512_mul_pd(to_double(v.Y[2]), step);
+    const __m512d d1x = _mm512_sub_pd(x1, x0), d1y = _mm512_sub_pd(y1, y0);
+    const __m512d d2x = _mm512_sub_pd(x2, x0), d2y = _mm512_sub_pd(y2, y0);
+    const __m512d inv_det = _mm512_div_pd(_mm512_set1_pd(1.0), _mm512_sub_pd(_mm512_mul_pd(d1x, d2y), _mm512_mul_pd(d2x, d1y)));
+    const __m512d ref_dx = _mm512_sub_pd(_mm512_add_pd(to_double(min_x), _mm512_set1_pd(0.5)), x0);
+    const __m512d ref_dy = _mm512_sub_pd(_mm512_add_pd(to_double(min_y), _mm512_set1_pd(0.5)), y0);
+    __m256 at, gx, gy;
+    plane_of(in.depth[0], in.depth[1], in.depth[2], d1x, d1y, d2x, d2y, inv_det, ref_dx, ref_dy, at, gx, gy);
+    _mm256_storeu_ps(planes[0], at), _mm256_storeu_ps(planes[1], gx), _mm256_storeu_ps(planes[2], gy);
+    plane_of(in.shade[0], in.shade[1], in.shade[2], d1x, d1y, d2x, d2y, inv_det, ref_dx, ref_dy, at, gx, gy);
+    _mm256_storeu_ps(planes[3], at), _mm256_storeu_ps(planes[4], gx), _mm256_storeu_ps(planes[5], gy);
+}
+
+// Lane bounds as four arrays: min_x, max_x, min_y, max_y.
+inline void store_bounds(__m256i min_x, __m256i max_x, __m256i min_y, __m256i max_y, std::int32_t bounds[4][SETUP_BATCH]) {
+    _mm256_storeu_si256(reinterpret_cast<__m256i *>(bounds[0]), min_x);
+    _mm256_storeu_si256(reinterpret_cast<__m256i *>(bounds[1]), max_x);
+    _mm256_storeu_si256(reinterpret_cast<__m256i *>(bounds[2]), min_y);
+    _mm256_storeu_si256(reinterpret_cast<__m256i *>(bounds[3]), max_y);
+}
+
+}  // namespace
+
+void setup_fast_batch_avx512(const setup_batch &in, pixel_rect clip, fast_setup verdict[SETUP_BATCH],
+                             fast_triangle out[SETUP_BATCH]) {
+    const lane_vertices v(in);
+    const __mmask8 wide = v.wide();
+    __m256i min_x, max_x, min_y, max_y;
+    lane_axis_bounds(v.min_X, v.max_X, 0, 0, clip.x0, clip.x1, min_x, max_x);
+    lane_axis_bounds(v.min_Y, v.max_Y, 0, 0, clip.y0, clip.y1, min_y, max_y);
+    const __mmask8 empty = static_cast<__mmask8>(_mm256_cmpgt_epi32_mask(min_x, max_x) | _mm256_cmpgt_epi32_mask(min_y, max_y));
+    lane_edges g[3];
+    lane_edges_at(in, v, min_x, min_y, g);
+    const __m256i zero = _mm256_setzero_si256();
     const __mmask8 horizontal = static_cast<__mmask8>(
-        _mm256_cmpeq_epi32_mask(g0.dy, zero) | _mm256_cmpeq_epi32_mask(g1.dy, zero) | _mm256_cmpeq_epi32_mask(g2.dy, zero));
+        _mm256_cmpeq_epi32_mask(g[0].dy, zero) | _mm256_cmpeq_epi32_mask(g[1].dy, zero) | _mm256_cmpeq_epi32_mask(g[2].dy, zero));
     // The crossings, in set_crossing's slots: left edges (dy < 0) to 0 then 2, right ones to
     // 1 then 3, in edge order; the slot no edge takes holds NO_EDGE (clear_crossings).
     __m512d c0, s0, c1, s1, c2, s2;
-    crossing_of(g0, c0, s0);
-    crossing_of(g1, c1, s1);
-    crossing_of(g2, c2, s2);
-    const __mmask8 L0 = _mm256_cmplt_epi32_mask(g0.dy, zero), L1 = _mm256_cmplt_epi32_mask(g1.dy, zero);
-    const __mmask8 L2 = _mm256_cmplt_epi32_mask(g2.dy, zero);
+    crossing_of(g[0], c0, s0);
+    crossing_of(g[1], c1, s1);
+    crossing_of(g[2], c2, s2);
+    const __mmask8 L0 = _mm256_cmplt_epi32_mask(g[0].dy, zero), L1 = _mm256_cmplt_epi32_mask(g[1].dy, zero);
+    const __mmask8 L2 = _mm256_cmplt_epi32_mask(g[2].dy, zero);
     const __mmask8 slot_of[4][3] = {
         {L0, static_cast<__mmask8>(L1 & ~L0), static_cast<__mmask8>(L2 & ~L0 & ~L1)},
         {static_cast<__mmask8>(~L0), static_cast<__mmask8>(~L1 & L0), static_cast<__mmask8>(~L2 & L0 & L1)},
@@ -321,27 +378,10 @@ void setup_fast_batch_avx512(const setup_batch &in, pixel_rect clip, fast_setup 
         _mm512_store_pd(cross[j], c);
         _mm512_store_pd(cross_step[j], st);
     }
-    // The planes through the snapped vertices (px), at the centre of pixel (min_x, min_y).
-    const __m512d step = _mm512_set1_pd(1.0 / RASTER_SUBPIXEL_ONE);
-    const __m512d x0 = _mm512_mul_pd(to_double(X0), step), x1 = _mm512_mul_pd(to_double(X1), step);
-    const __m512d x2 = _mm512_mul_pd(to_double(X2), step), y0 = _mm512_mul_pd(to_double(Y0), step);
-    const __m512d y1 = _mm512_mul_pd(to_double(Y1), step), y2 = _mm512_mul_pd(to_double(Y2), step);
-    const __m512d d1x = _mm512_sub_pd(x1, x0), d1y = _mm512_sub_pd(y1, y0);
-    const __m512d d2x = _mm512_sub_pd(x2, x0), d2y = _mm512_sub_pd(y2, y0);
-    const __m512d inv_det = _mm512_div_pd(_mm512_set1_pd(1.0), _mm512_sub_pd(_mm512_mul_pd(d1x, d2y), _mm512_mul_pd(d2x, d1y)));
-    const __m512d ref_dx = _mm512_sub_pd(_mm512_add_pd(to_double(min_x), _mm512_set1_pd(0.5)), x0);
-    const __m512d ref_dy = _mm512_sub_pd(_mm512_add_pd(to_double(min_y), _mm512_set1_pd(0.5)), y0);
-    alignas(32) float z[SETUP_BATCH], zdx[SETUP_BATCH], zdy[SETUP_BATCH], i[SETUP_BATCH], idx[SETUP_BATCH], idy[SETUP_BATCH];
-    __m256 at, gx, gy;
-    plane_of(in.depth[0], in.depth[1], in.depth[2], d1x, d1y, d2x, d2y, inv_det, ref_dx, ref_dy, at, gx, gy);
-    _mm256_store_ps(z, at), _mm256_store_ps(zdx, gx), _mm256_store_ps(zdy, gy);
-    plane_of(in.shade[0], in.shade[1], in.shade[2], d1x, d1y, d2x, d2y, inv_det, ref_dx, ref_dy, at, gx, gy);
-    _mm256_store_ps(i, at), _mm256_store_ps(idx, gx), _mm256_store_ps(idy, gy);
+    alignas(32) float planes[6][SETUP_BATCH];
+    lane_planes(in, v, min_x, min_y, planes);
     alignas(32) std::int32_t bounds[4][SETUP_BATCH];
-    _mm256_store_si256(reinterpret_cast<__m256i *>(bounds[0]), min_x);
-    _mm256_store_si256(reinterpret_cast<__m256i *>(bounds[1]), max_x);
-    _mm256_store_si256(reinterpret_cast<__m256i *>(bounds[2]), min_y);
-    _mm256_store_si256(reinterpret_cast<__m256i *>(bounds[3]), max_y);
+    store_bounds(min_x, max_x, min_y, max_y, bounds);
     for (int l = 0; l < in.count; ++l) {
         const unsigned bit = 1u << l;
         if (wide & bit) verdict[l] = fast_setup::wide;
@@ -352,8 +392,46 @@ void setup_fast_batch_avx512(const setup_batch &in, pixel_rect clip, fast_setup 
             fast_triangle &f = out[l];
             f.min_x = bounds[0][l], f.max_x = bounds[1][l], f.min_y = bounds[2][l], f.max_y = bounds[3][l];
             for (int j = 0; j < 4; ++j) f.cross[j] = cross[j][l], f.cross_step[j] = cross_step[j][l];
-            f.z = z[l], f.zdx = zdx[l], f.zdy = zdy[l], f.i = i[l], f.idx = idx[l], f.idy = idy[l];
+            f.z = planes[0][l], f.zdx = planes[1][l], f.zdy = planes[2][l];
+            f.i = planes[3][l], f.idx = planes[4][l], f.idy = planes[5][l];
             f.wide = -1;
+        }
+    }
+}
+
+void setup_msaa_batch_avx512(const setup_batch &in, const sample_pattern &pat, pixel_rect clip,
+                             fast_setup verdict[SETUP_BATCH], msaa_triangle out[SETUP_BATCH]) {
+    const lane_vertices v(in);
+    const __mmask8 wide = v.wide();
+    __m256i min_x, max_x, min_y, max_y;
+    lane_axis_bounds(v.min_X, v.max_X, pat.min_dx, pat.max_dx, clip.x0, clip.x1, min_x, max_x);
+    lane_axis_bounds(v.min_Y, v.max_Y, pat.min_dy, pat.max_dy, clip.y0, clip.y1, min_y, max_y);
+    const __mmask8 empty = static_cast<__mmask8>(_mm256_cmpgt_epi32_mask(min_x, max_x) | _mm256_cmpgt_epi32_mask(min_y, max_y));
+    lane_edges g[3];
+    lane_edges_at(in, v, min_x, min_y, g);
+    // a = −dy·16, b = dx·16 (64 bits, as msaa_triangle holds them; |·| < 2^19 here).
+    alignas(64) std::int64_t e[3][SETUP_BATCH], a[3][SETUP_BATCH], b[3][SETUP_BATCH];
+    for (int k = 0; k < 3; ++k) {
+        _mm512_store_si512(e[k], g[k].e);
+        _mm512_store_si512(a[k], widen(_mm256_mullo_epi32(g[k].dy, _mm256_set1_epi32(-RASTER_SUBPIXEL_ONE))));
+        _mm512_store_si512(b[k], widen(_mm256_mullo_epi32(g[k].dx, _mm256_set1_epi32(RASTER_SUBPIXEL_ONE))));
+    }
+    alignas(32) float planes[6][SETUP_BATCH];
+    lane_planes(in, v, min_x, min_y, planes);
+    alignas(32) std::int32_t bounds[4][SETUP_BATCH];
+    store_bounds(min_x, max_x, min_y, max_y, bounds);
+    for (int l = 0; l < in.count; ++l) {
+        const unsigned bit = 1u << l;
+        if (wide & bit) verdict[l] = fast_setup::scalar;
+        else if (empty & bit) verdict[l] = fast_setup::empty;
+        else {
+            verdict[l] = fast_setup::ready;
+            msaa_triangle &f = out[l];
+            f.min_x = bounds[0][l], f.max_x = bounds[1][l], f.min_y = bounds[2][l], f.max_y = bounds[3][l];
+            for (int k = 0; k < 3; ++k) f.e[k] = e[k][l], f.a[k] = a[k][l], f.b[k] = b[k][l];
+            f.z = planes[0][l], f.zdx = planes[1][l], f.zdy = planes[2][l];
+            f.i = planes[3][l], f.idx = planes[4][l], f.idy = planes[5][l];
+            f.narrow = true, f.chunkable = true;  // (the box spans < span_limit: narrow implies chunkable)
         }
     }
 }
