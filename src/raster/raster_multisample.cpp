@@ -18,14 +18,39 @@ void render_context::impl::add_msaa(msaa_triangle &f, std::uint32_t state, piece
 
 // Every triangle of the frame that reaches the band, in submission order (piece after piece
 // of every draw: the opaque fast and per-pixel-path ones in its bins), then the translucent
-// queue (sorted), into the tile; then the resolve.
+// queue (sorted), into the tile; then the resolve. The set-up triangle TRIANGLES_AHEAD bin
+// entries on is fetched meanwhile (the frame's list outgrows the caches, and a bin skips
+// through it where the hardware prefetcher does not follow: Scene S level 6 4×, one thread,
+// 3–4 % faster with the AVX-512 kernel, 9–14 % with AVX2's).
 void render_context::impl::draw_multisampled_band(int band, sample_store &tile) {
     const int y0 = bands.y0(band), y1 = bands.y0(band + 1);
     if (y0 >= y1) return;
     tile.start(y0, y1);
+    constexpr int TRIANGLES_AHEAD = 6;
+    struct cursor {  // an entry of the band's bins, in drawing order
+        int number = 0;
+        std::size_t k = 0;
+    } later;
+    auto bin_of = [&](int number) -> const std::vector<std::uint32_t> & {
+        return pieces[static_cast<std::size_t>(number)].bins[band];
+    };
+    auto advance = [&](cursor &c) {
+        for (++c.k; c.number < piece_count && c.k >= bin_of(c.number).size(); c.k = 0) ++c.number;
+    };
+    later.k = static_cast<std::size_t>(-1);  // (the first entry, then TRIANGLES_AHEAD on)
+    for (int n = 0; n <= TRIANGLES_AHEAD; ++n) advance(later);
     for (int number = 0; number < piece_count; ++number) {
         const piece &from = pieces[static_cast<std::size_t>(number)];
         for (std::uint32_t index : from.bins[band]) {
+            if (later.number < piece_count) {
+                const std::uint32_t on = bin_of(later.number)[later.k];
+                if (!(on & GENERIC_BIN)) {
+                    const char *line = reinterpret_cast<const char *>(&pieces[static_cast<std::size_t>(later.number)].msaa[on]);
+                    __builtin_prefetch(line);
+                    __builtin_prefetch(line + sizeof(msaa_triangle) - 1);
+                }
+                advance(later);
+            }
             if (index & GENERIC_BIN) {
                 const generic_triangle &g = from.generic[index & ~GENERIC_BIN];
                 draw_generic_samples(tile, *pattern, clear_intensity, states[g.state], g, y0, y1);
