@@ -537,7 +537,7 @@ status render_context::begin_frame(canvas_t &target, float clear_intensity, samp
     s.stats = {};
     s.states.clear();
     s.translucent.clear();
-    s.bands.plan(target.height, s.pool.size(), count > 1 ? MSAA_BAND_ROWS : BAND_ROWS);
+    s.bands.plan(target.height, s.pool.size(), band_rows(count));
     if (count > 1) {
         const int tile_rows = (target.height + s.bands.count - 1) / s.bands.count;
         for (int t = 0; t < s.pool.size(); ++t) s.tiles[t].resize(target.width, tile_rows, count, s.clear_intensity);
