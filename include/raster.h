@@ -356,9 +356,11 @@ enum class raster_simd {
     portable,  // plain C++, 64-bit edge values, one sample at a time
     sse2,      // four samples per register (every x86-64 CPU)
     avx2,      // 4×: two pixels per register, 8×/16×: a pixel per one or two, 1×: two groups of four
-               // columns of a narrow triangle's row per register (AVX2)
+               // columns of a narrow triangle's row per register; 1×, 4×, 8×: triangles set up
+               // eight at a time (AVX2)
     avx512     // 4×: a 2 × 2 block per register, 8×/16×: a pixel per register, 1×: a row of a narrow
-               // triangle per register (AVX-512 F/VL/DQ/BW)
+               // triangle per register; 1×, 4×, 8×: triangles set up eight at a time
+               // (AVX-512 F/VL/DQ/BW)
 };
 // The best of them this CPU runs (CPUID, read by the compiler's runtime); what a render
 // context starts with.

@@ -262,7 +262,7 @@ TEST(one_sample_kernels_give_the_sse2_pixels_and_the_portable_coverage) {
     CHECK(compared >= (best_raster_simd() == raster_simd::avx512 ? 56 : 0));
 }
 
-#ifdef TINY3D_AVX512
+#if defined(TINY3D_AVX512) || defined(TINY3D_AVX2)
 // A batch of 1..8 random triangles: vertices on the 1/16 px grid around a point of a 250 ×
 // 200 px rectangle, spans of 2 px to ~2,100 px (past the fast path's limit), some rows or
 // columns shared.
@@ -289,9 +289,11 @@ detail::setup_batch random_setup_batch(std::mt19937 &rng) {
 }
 #endif
 
+// The batched set-up of every kernel that has one (AVX-512, AVX2) against setup_fast_triangle.
 TEST(batched_setup_gives_the_scalar_setup_bit_for_bit) {
-#ifdef TINY3D_AVX512
-    if (!detail::fill_kernel_runs(raster_simd::avx512)) return;
+#if defined(TINY3D_AVX512) || defined(TINY3D_AVX2)
+  for (const raster_simd kernel : {raster_simd::avx512, raster_simd::avx2}) {
+    if (!detail::fill_kernel_runs(kernel) || !detail::batched_setup(kernel)) continue;
     std::mt19937 rng(20261203);
     const pixel_rect clip{3, 5, 250, 200};
     int compared = 0, scalar = 0, ready = 0;
@@ -299,7 +301,7 @@ TEST(batched_setup_gives_the_scalar_setup_bit_for_bit) {
         const detail::setup_batch batch = random_setup_batch(rng);
     detail::fast_setup verdict[detail::SETUP_BATCH];
         detail::fast_triangle batched[detail::SETUP_BATCH];
-        detail::setup_fast_batch_avx512(batch, clip, verdict, batched);
+        detail::setup_fast_batch(kernel, batch, clip, verdict, batched);
         for (int l = 0; l < batch.count; ++l) {
             const std::int32_t X[3] = {batch.X[0][l], batch.X[1][l], batch.X[2][l]};
             const std::int32_t Y[3] = {batch.Y[0][l], batch.Y[1][l], batch.Y[2][l]};
@@ -329,13 +331,15 @@ TEST(batched_setup_gives_the_scalar_setup_bit_for_bit) {
     CHECK(ready > 2000);
     CHECK(scalar > 100);
     CHECK(compared > 10000);
+  }
 #endif
 }
 
 // The multisampled frames' batched set-up (4 and 8 samples) against make_msaa_triangle.
 TEST(batched_multisample_setup_gives_the_scalar_setup_bit_for_bit) {
-#ifdef TINY3D_AVX512
-    if (!detail::fill_kernel_runs(raster_simd::avx512)) return;
+#if defined(TINY3D_AVX512) || defined(TINY3D_AVX2)
+  for (const raster_simd kernel : {raster_simd::avx512, raster_simd::avx2}) {
+    if (!detail::fill_kernel_runs(kernel) || !detail::batched_setup(kernel)) continue;
     std::mt19937 rng(20261204);
     const pixel_rect clip{3, 5, 250, 200};
     int ready = 0, empty = 0, scalar = 0;
@@ -345,7 +349,7 @@ TEST(batched_multisample_setup_gives_the_scalar_setup_bit_for_bit) {
             const detail::setup_batch batch = random_setup_batch(rng);
             detail::fast_setup verdict[detail::SETUP_BATCH];
             detail::msaa_triangle batched[detail::SETUP_BATCH];
-            detail::setup_msaa_batch_avx512(batch, pat, clip, verdict, batched);
+            detail::setup_msaa_batch(kernel, batch, pat, clip, verdict, batched);
             for (int l = 0; l < batch.count; ++l) {
                 const std::int32_t X[3] = {batch.X[0][l], batch.X[1][l], batch.X[2][l]};
                 const std::int32_t Y[3] = {batch.Y[0][l], batch.Y[1][l], batch.Y[2][l]};
@@ -380,5 +384,6 @@ TEST(batched_multisample_setup_gives_the_scalar_setup_bit_for_bit) {
     CHECK(ready > 2000);
     CHECK(empty > 1000);
     CHECK(scalar > 100);
+  }
 #endif
 }

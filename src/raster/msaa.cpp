@@ -370,6 +370,18 @@ bool make_msaa_triangle(const triangle_edges &t, const sample_pattern &pat, pixe
     return make_msaa_triangle(X, Y, snapped_area2(X, Y), pat, clip, depth, intensity, out);
 }
 
+void setup_msaa_batch([[maybe_unused]] fill_kernel kernel, const setup_batch &in, const sample_pattern &pat,
+                      pixel_rect clip, fast_setup verdict[SETUP_BATCH], msaa_triangle out[SETUP_BATCH]) {
+#ifdef TINY3D_AVX512
+    if (kernel == fill_kernel::avx512) return setup_msaa_batch_avx512(in, pat, clip, verdict, out);
+#endif
+#ifdef TINY3D_AVX2
+    if (kernel == fill_kernel::avx2) return setup_msaa_batch_avx2(in, pat, clip, verdict, out);
+#endif
+    std::fill(verdict, verdict + in.count, fast_setup::scalar);
+    (void)pat, (void)clip, (void)out;
+}
+
 void fill_msaa_rows(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
                     bool depth_write, float clear_colour, int y0, int y1, [[maybe_unused]] msaa_kernel kernel) {
     y0 = std::max(y0, f.min_y);

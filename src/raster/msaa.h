@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "raster_internal.h"
+#include "../simd_config.h"
 
 namespace tiny3d::detail {
 
@@ -148,15 +149,23 @@ bool make_msaa_triangle(const triangle_edges &t, const sample_pattern &pat, pixe
 bool make_msaa_triangle(const std::int32_t X[3], const std::int32_t Y[3], std::int64_t area2, const sample_pattern &pat,
                         pixel_rect clip, const float depth[3], const float intensity[3], msaa_triangle &out);
 
-#ifdef TINY3D_AVX512
-// make_msaa_triangle for the first in.count lanes of `in` at once (AVX-512: the same integer
-// edges and the same plane doubles in the same order, so the same msaa_triangle bit for bit;
+// make_msaa_triangle for the first in.count lanes of `in` at once with `kernel`'s
+// instructions where it has a batch (batched_setup: AVX-512, AVX2; the same integer edges
+// and the same plane doubles in the same order, so the same msaa_triangle bit for bit;
 // state is left alone), for a pattern on the 1/16 px grid (pat.bits = RASTER_SUBPIXEL_BITS:
 // 4 and 8 samples). Verdict per lane: ready (out[l] set), empty (make_msaa_triangle returns
-// false), or scalar: a box spanning FAST_SPAN_LIMIT or more on an axis, which
-// make_msaa_triangle sets up. Lanes at and after in.count are left alone.
+// false), or scalar: a box spanning FAST_SPAN_LIMIT or more on an axis, or every lane with
+// another kernel, which make_msaa_triangle sets up. Lanes at and after in.count are left
+// alone.
+void setup_msaa_batch(fill_kernel kernel, const setup_batch &in, const sample_pattern &pat, pixel_rect clip,
+                      fast_setup verdict[SETUP_BATCH], msaa_triangle out[SETUP_BATCH]);
+#ifdef TINY3D_AVX512
 void setup_msaa_batch_avx512(const setup_batch &in, const sample_pattern &pat, pixel_rect clip,
                              fast_setup verdict[SETUP_BATCH], msaa_triangle out[SETUP_BATCH]);
+#endif
+#ifdef TINY3D_AVX2
+void setup_msaa_batch_avx2(const setup_batch &in, const sample_pattern &pat, pixel_rect clip,
+                           fast_setup verdict[SETUP_BATCH], msaa_triangle out[SETUP_BATCH]);
 #endif
 
 // t's snapped vertices in 1/2^pat.bits px, exactly (t on the pattern's grid: t.x, t.y are

@@ -211,13 +211,12 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
             add_fast(t, depth, shade, out);
         }
     };
-    // With the AVX-512 kernels, fast triangles are set up eight at a time (in submission
-    // order: the batch is finished before a clipped triangle and at the end), and so are
-    // the multisampled ones on the 1/16 px grid (4 and 8 samples).
+    // With the AVX-512 and AVX2 kernels, fast triangles are set up eight at a time (in
+    // submission order: the batch is finished before a clipped triangle and at the end), and
+    // so are the multisampled ones on the 1/16 px grid (4 and 8 samples).
     setup_batch batch;
-    [[maybe_unused]] const bool batched = kernel == fill_kernel::avx512 && (!msaa || pattern->bits == RASTER_SUBPIXEL_BITS);
+    const bool batched = batched_setup(kernel) && (!msaa || pattern->bits == RASTER_SUBPIXEL_BITS);
     auto finish_batch = [&] {
-#ifdef TINY3D_AVX512
         if (batch.count == 0) return;
         fast_setup verdict[SETUP_BATCH];
         auto lane = [&](int l, auto &&set_up_alone) {  // a lane the batch left to the scalar set-up
@@ -229,7 +228,7 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
         };
         if (msaa) {
             msaa_triangle set_up[SETUP_BATCH];
-            setup_msaa_batch_avx512(batch, *pattern, full, verdict, set_up);
+            setup_msaa_batch(kernel, batch, *pattern, full, verdict, set_up);
             for (int l = 0; l < batch.count; ++l) {
                 if (verdict[l] == fast_setup::ready) add_msaa(set_up[l], state, out);
                 if (verdict[l] != fast_setup::scalar) continue;
@@ -242,7 +241,7 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
             return;
         }
         fast_triangle set_up[SETUP_BATCH];
-        setup_fast_batch_avx512(batch, full, verdict, set_up);
+        setup_fast_batch(kernel, batch, full, verdict, set_up);
         for (int l = 0; l < batch.count; ++l) {
             if (verdict[l] == fast_setup::ready) {  // (the common case: no lane gathered)
                 bin_ready(set_up[l]);
@@ -255,7 +254,6 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
             });
         }
         batch.count = 0;
-#endif
     };
     for (std::size_t i = first; i < last; ++i) {
         const std::array<std::uint32_t, 3> &tri = m.triangles[i];

@@ -411,6 +411,18 @@ void fill_rows_dispatch(canvas_t &canvas, zbuffer *depth, const fast_triangle &f
 
 }  // namespace
 
+void setup_fast_batch([[maybe_unused]] fill_kernel kernel, const setup_batch &in, pixel_rect clip,
+                      fast_setup verdict[SETUP_BATCH], fast_triangle out[SETUP_BATCH]) {
+#ifdef TINY3D_AVX512
+    if (kernel == fill_kernel::avx512) return setup_fast_batch_avx512(in, clip, verdict, out);
+#endif
+#ifdef TINY3D_AVX2
+    if (kernel == fill_kernel::avx2) return setup_fast_batch_avx2(in, clip, verdict, out);
+#endif
+    std::fill(verdict, verdict + in.count, fast_setup::scalar);
+    (void)clip, (void)out;
+}
+
 void attribute_planes_at(const double x[3], const double y[3], int px, int py, const float depth[3],
                          const float intensity[3], float planes[6]) {
     fast_triangle f;

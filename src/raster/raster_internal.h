@@ -228,14 +228,22 @@ struct setup_batch {
     }
 };
 
+// setup_fast_triangle for the first in.count lanes of `in` at once with `kernel`'s
+// instructions where it has a batch (batched_setup: AVX-512, eight lanes of doubles; AVX2,
+// two halves of four): the same operations in the same order, so the same fast_triangle bit
+// for bit and the same verdict — except that a triangle with a horizontal edge gets
+// fast_setup::scalar (rare: its rows are cut in integers; setup_fast_triangle does it).
+// Other kernels: every lane fast_setup::scalar. Lanes at and after in.count are left alone.
+inline bool batched_setup(fill_kernel kernel) { return kernel == fill_kernel::avx512 || kernel == fill_kernel::avx2; }
+void setup_fast_batch(fill_kernel kernel, const setup_batch &in, pixel_rect clip, fast_setup verdict[SETUP_BATCH],
+                      fast_triangle out[SETUP_BATCH]);
 #ifdef TINY3D_AVX512
-// setup_fast_triangle for the first in.count lanes of `in` at once (AVX-512, eight lanes of
-// doubles: the same operations in the same order, so the same fast_triangle bit for bit and
-// the same verdict), except that a triangle with a horizontal edge gets fast_setup::scalar
-// (rare: its rows are cut in integers; setup_fast_triangle does it). Lanes at and after
-// in.count are left alone.
 void setup_fast_batch_avx512(const setup_batch &in, pixel_rect clip, fast_setup verdict[SETUP_BATCH],
                              fast_triangle out[SETUP_BATCH]);
+#endif
+#ifdef TINY3D_AVX2
+void setup_fast_batch_avx2(const setup_batch &in, pixel_rect clip, fast_setup verdict[SETUP_BATCH],
+                           fast_triangle out[SETUP_BATCH]);
 #endif
 
 // Draws rows [y0, y1) ∩ [min_y, max_y] of the triangle with `kernel` (fill_kernel_runs).
