@@ -182,6 +182,21 @@ TEST(pieces_and_bands_are_each_handed_out_once) {
         a.forget(5);
         CHECK(a.own[2] == 0u && a.own[4] == 0u);
     }
+    // While waiting, a thread claims at most its share of the bands (ceil(count / threads)),
+    // in its order, however long the wait; none when the wait is over.
+    {
+        band_affinity a;
+        a.rank(10, false);
+        phase_counters c;
+        c.reset(0, 3, 10);
+        int claimed[detail::MAX_BANDS], worked = 0;
+        const int n = c.claim_while(a, 10, 3, [] { return true; }, [&](int) { ++worked; }, claimed);
+        CHECK_EQ(n, 4);
+        CHECK_EQ(worked, 4);
+        CHECK((std::vector<int>(claimed, claimed + n) == std::vector<int>{0, 1, 2, 3}));
+        CHECK_EQ(c.claim_while(a, 10, 3, [] { return false; }, [&](int) { ++worked; }, claimed), 0);
+        CHECK_EQ(c.take_band(a, 10), 4);  // the claimed bands stay taken; the next is the fifth
+    }
     // Threads taking at once: each piece and band exactly once, whatever the interleaving.
     std::mt19937 rng(29);
     for (int threads = 1; threads <= 16; ++threads) {

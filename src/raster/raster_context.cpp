@@ -421,15 +421,15 @@ void render_context::impl::set_up_and_draw(int thread, const raster_mesh &m, con
     }
     if (multisampled()) return;  // drawn at end_frame
     mine.rank(bands.count, pool.size() > 1);
-    // Until the other threads' last pieces are set up: claim the next bands and clear them
-    // (the frame's first draw), to draw them first once every piece is ready.
+    // Until the other threads' last pieces are set up: claim the next bands (at most this
+    // thread's share) and clear them (the frame's first draw), to draw them first once every
+    // piece is ready.
     int claimed[MAX_BANDS], claimed_count = 0;
-    while (pending_clear && counters.pieces_done.load(std::memory_order_acquire) < plan.count) {
-        const int band = counters.take_band(mine, bands.count);
-        if (band >= bands.count) break;
-        clear_band(band);
-        claimed[claimed_count++] = band;
-    }
+    if (pending_clear)
+        claimed_count = counters.claim_while(
+            mine, bands.count, pool.size(),
+            [&] { return counters.pieces_done.load(std::memory_order_acquire) < plan.count; },
+            [&](int band) { clear_band(band); }, claimed);
     phase_counters::wait_for(counters.pieces_done, plan.count);
     const bool drop = counters.bad_indices.load(std::memory_order_relaxed);
     // Then the bands one ahead: a thread takes its next band before drawing the current

@@ -142,6 +142,23 @@ struct phase_counters {
     void claim_bands(band_affinity &mine, int count, Draw &&draw) {
         for (int band; (band = take_band(mine, count)) < count;) draw(band);
     }
+    // While waiting() holds: the next band in `mine`'s order that no thread has taken, given
+    // to work(band) and recorded in claimed[] — at most `share` bands, this thread's part of
+    // `count` among `threads`, so that a thread which waits long (the others' set-up
+    // unfinished: one descheduled, or started late) cannot take every band and leave the
+    // others nothing to draw. Returns how many it claimed.
+    template <class Waiting, class Work>
+    int claim_while(band_affinity &mine, int count, int threads, Waiting &&waiting, Work &&work, int claimed[]) {
+        const int share = (count + threads - 1) / threads;
+        int n = 0;
+        while (n < share && waiting()) {
+            const int band = take_band(mine, count);
+            if (band >= count) break;
+            work(band);
+            claimed[n++] = band;
+        }
+        return n;
+    }
     // Waits (spinning, then yielding) until `counter` reaches n; the acquire pairs with the
     // release of the increments, so everything written before them is visible.
     static void wait_for(const std::atomic<int> &counter, int n) {
