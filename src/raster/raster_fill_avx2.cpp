@@ -300,10 +300,9 @@ void setup_fast_batch_avx2(const setup_batch &in, pixel_rect clip, fast_setup ve
             _mm256_store_pd(cross_step[j] + 4 * h, sj);
         }
     }
-    alignas(32) float planes[6][SETUP_BATCH];
-    planes8(in, v, min_x, min_y, planes);
-    alignas(32) std::int32_t bounds[4][SETUP_BATCH];
-    store_bounds8(min_x, max_x, min_y, max_y, bounds);
+    batch_lanes lanes;
+    planes8(in, v, min_x, min_y, lanes.planes);
+    store_bounds8(min_x, max_x, min_y, max_y, lanes.bounds);
     for (int l = 0; l < in.count; ++l) {
         const int bit = 1 << l;
         if (v.wide & bit) verdict[l] = fast_setup::wide;
@@ -312,10 +311,8 @@ void setup_fast_batch_avx2(const setup_batch &in, pixel_rect clip, fast_setup ve
         else {
             verdict[l] = fast_setup::ready;
             fast_triangle &f = out[l];
-            f.min_x = bounds[0][l], f.max_x = bounds[1][l], f.min_y = bounds[2][l], f.max_y = bounds[3][l];
+            lanes.unpack(l, f);
             for (int j = 0; j < 4; ++j) f.cross[j] = cross[j][l], f.cross_step[j] = cross_step[j][l];
-            f.z = planes[0][l], f.zdx = planes[1][l], f.zdy = planes[2][l];
-            f.i = planes[3][l], f.idx = planes[4][l], f.idy = planes[5][l];
             f.wide = -1;
         }
     }
@@ -341,10 +338,9 @@ void setup_msaa_batch_avx2(const setup_batch &in, const sample_pattern &pat, pix
             _mm256_store_si256(reinterpret_cast<__m256i *>(b[k] + 4 * h), half_widen(bk, h));
         }
     }
-    alignas(32) float planes[6][SETUP_BATCH];
-    planes8(in, v, min_x, min_y, planes);
-    alignas(32) std::int32_t bounds[4][SETUP_BATCH];
-    store_bounds8(min_x, max_x, min_y, max_y, bounds);
+    batch_lanes lanes;
+    planes8(in, v, min_x, min_y, lanes.planes);
+    store_bounds8(min_x, max_x, min_y, max_y, lanes.bounds);
     for (int l = 0; l < in.count; ++l) {
         const int bit = 1 << l;
         if (v.wide & bit) verdict[l] = fast_setup::scalar;
@@ -352,10 +348,8 @@ void setup_msaa_batch_avx2(const setup_batch &in, const sample_pattern &pat, pix
         else {
             verdict[l] = fast_setup::ready;
             msaa_triangle &f = out[l];
-            f.min_x = bounds[0][l], f.max_x = bounds[1][l], f.min_y = bounds[2][l], f.max_y = bounds[3][l];
+            lanes.unpack(l, f);
             for (int k = 0; k < 3; ++k) f.e[k] = e[k][l], f.a[k] = a[k][l], f.b[k] = b[k][l];
-            f.z = planes[0][l], f.zdx = planes[1][l], f.zdy = planes[2][l];
-            f.i = planes[3][l], f.idx = planes[4][l], f.idy = planes[5][l];
             f.narrow = true, f.chunkable = true;  // (the box spans < span_limit: narrow implies chunkable)
         }
     }

@@ -378,10 +378,9 @@ void setup_fast_batch_avx512(const setup_batch &in, pixel_rect clip, fast_setup 
         _mm512_store_pd(cross[j], c);
         _mm512_store_pd(cross_step[j], st);
     }
-    alignas(32) float planes[6][SETUP_BATCH];
-    lane_planes(in, v, min_x, min_y, planes);
-    alignas(32) std::int32_t bounds[4][SETUP_BATCH];
-    store_bounds(min_x, max_x, min_y, max_y, bounds);
+    batch_lanes lanes;
+    lane_planes(in, v, min_x, min_y, lanes.planes);
+    store_bounds(min_x, max_x, min_y, max_y, lanes.bounds);
     for (int l = 0; l < in.count; ++l) {
         const unsigned bit = 1u << l;
         if (wide & bit) verdict[l] = fast_setup::wide;
@@ -390,10 +389,8 @@ void setup_fast_batch_avx512(const setup_batch &in, pixel_rect clip, fast_setup 
         else {
             verdict[l] = fast_setup::ready;
             fast_triangle &f = out[l];
-            f.min_x = bounds[0][l], f.max_x = bounds[1][l], f.min_y = bounds[2][l], f.max_y = bounds[3][l];
+            lanes.unpack(l, f);
             for (int j = 0; j < 4; ++j) f.cross[j] = cross[j][l], f.cross_step[j] = cross_step[j][l];
-            f.z = planes[0][l], f.zdx = planes[1][l], f.zdy = planes[2][l];
-            f.i = planes[3][l], f.idx = planes[4][l], f.idy = planes[5][l];
             f.wide = -1;
         }
     }
@@ -416,10 +413,9 @@ void setup_msaa_batch_avx512(const setup_batch &in, const sample_pattern &pat, p
         _mm512_store_si512(a[k], widen(_mm256_mullo_epi32(g[k].dy, _mm256_set1_epi32(-RASTER_SUBPIXEL_ONE))));
         _mm512_store_si512(b[k], widen(_mm256_mullo_epi32(g[k].dx, _mm256_set1_epi32(RASTER_SUBPIXEL_ONE))));
     }
-    alignas(32) float planes[6][SETUP_BATCH];
-    lane_planes(in, v, min_x, min_y, planes);
-    alignas(32) std::int32_t bounds[4][SETUP_BATCH];
-    store_bounds(min_x, max_x, min_y, max_y, bounds);
+    batch_lanes lanes;
+    lane_planes(in, v, min_x, min_y, lanes.planes);
+    store_bounds(min_x, max_x, min_y, max_y, lanes.bounds);
     for (int l = 0; l < in.count; ++l) {
         const unsigned bit = 1u << l;
         if (wide & bit) verdict[l] = fast_setup::scalar;
@@ -427,10 +423,8 @@ void setup_msaa_batch_avx512(const setup_batch &in, const sample_pattern &pat, p
         else {
             verdict[l] = fast_setup::ready;
             msaa_triangle &f = out[l];
-            f.min_x = bounds[0][l], f.max_x = bounds[1][l], f.min_y = bounds[2][l], f.max_y = bounds[3][l];
+            lanes.unpack(l, f);
             for (int k = 0; k < 3; ++k) f.e[k] = e[k][l], f.a[k] = a[k][l], f.b[k] = b[k][l];
-            f.z = planes[0][l], f.zdx = planes[1][l], f.zdy = planes[2][l];
-            f.i = planes[3][l], f.idx = planes[4][l], f.idy = planes[5][l];
             f.narrow = true, f.chunkable = true;  // (the box spans < span_limit: narrow implies chunkable)
         }
     }

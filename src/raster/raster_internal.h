@@ -228,6 +228,19 @@ struct setup_batch {
     }
 };
 
+// What the set-up batches compute per lane and unpack into each lane's set-up triangle
+// (fast_triangle or msaa_triangle: the same field names).
+struct batch_lanes {
+    alignas(32) std::int32_t bounds[4][SETUP_BATCH];  // min_x, max_x, min_y, max_y
+    alignas(32) float planes[6][SETUP_BATCH];         // z, zdx, zdy, i, idx, idy
+    template <class Triangle>
+    void unpack(int l, Triangle &f) const {
+        f.min_x = bounds[0][l], f.max_x = bounds[1][l], f.min_y = bounds[2][l], f.max_y = bounds[3][l];
+        f.z = planes[0][l], f.zdx = planes[1][l], f.zdy = planes[2][l];
+        f.i = planes[3][l], f.idx = planes[4][l], f.idy = planes[5][l];
+    }
+};
+
 // setup_fast_triangle for the first in.count lanes of `in` at once with `kernel`'s
 // instructions where it has a batch (batched_setup: AVX-512, eight lanes of doubles; AVX2,
 // two halves of four): the same operations in the same order, so the same fast_triangle bit
