@@ -196,10 +196,15 @@ timing measure_ns(int repeats, double work_units, const std::function<void()> &f
     const double units = work_units > 0 ? work_units : 1.0;
     std::vector<double> per_unit(std::size_t(runs), 0.0);
     timed_runs(fn, per_unit, units);
-    std::sort(per_unit.begin(), per_unit.end());
-    const std::size_t n = per_unit.size();
-    const double median = n % 2 ? per_unit[n / 2] : 0.5 * (per_unit[n / 2 - 1] + per_unit[n / 2]);
-    return {median, per_unit.front(), per_unit.back()};
+    return summarise(std::move(per_unit));
+}
+
+timing summarise(std::vector<double> values) {
+    if (values.empty()) return {NAN, NAN, NAN};
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    const double median = n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+    return {median, values.front(), values.back()};
 }
 
 options parse_options(int argc, char **argv) {

@@ -42,6 +42,9 @@ struct timing {
 // work_units ≤ 0 is treated as 1. Keep fn's results alive with bench::keep(x).
 timing measure_ns(int repeats, double work_units, const std::function<void()> &fn);
 
+// The median, fastest and slowest of `values` (at least one; sorted here).
+timing summarise(std::vector<double> values);
+
 // Optimization barrier: the compiler must assume `value` is read, so the computation that
 // produced it cannot be removed.
 template <class T>
