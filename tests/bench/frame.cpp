@@ -6,7 +6,9 @@
 // (make_raster_clusters, built once before timing) and, for comparison, without, and with
 // the SSE2 fill forced on a CPU that has a faster one (what CPUs without AVX-512 get); level 6
 // on one thread while another context renders on the other core (the machine's penalty on
-// two busy cores); frame time against triangle count for levels 3–7. Only what this program
+// two busy cores); level 6 on one and on two threads with their frames interleaved (the
+// two-thread ratio measured in the same seconds); frame time against triangle count for
+// levels 3–7. Only what this program
 // measures is printed; other renderers' figures are in documentation/other_renderers.md,
 // with their source and date.
 // Error column: fraction of pixels where the two-thread frame differs from the one-thread
