@@ -159,6 +159,25 @@ bool make_msaa_triangle(const std::int32_t X[3], const std::int32_t Y[3], std::i
 // alone.
 void setup_msaa_batch(fill_kernel kernel, const setup_batch &in, const sample_pattern &pat, pixel_rect clip,
                       fast_setup verdict[SETUP_BATCH], msaa_triangle out[SETUP_BATCH]);
+// The batch kernels' verdicts for lanes [0, count): scalar (wide), empty, or ready, out[l]
+// then set with its edges (e[k][l], a[k][l], b[k][l]); a lane they set up is narrow (its box
+// spans less than span_limit), so chunkable too.
+inline void finish_msaa_batch(const batch_lanes &lanes, int count, const std::int64_t e[3][SETUP_BATCH],
+                              const std::int64_t a[3][SETUP_BATCH], const std::int64_t b[3][SETUP_BATCH],
+                              fast_setup verdict[SETUP_BATCH], msaa_triangle out[SETUP_BATCH]) {
+    for (int l = 0; l < count; ++l) {
+        const unsigned bit = 1u << l;
+        if (lanes.wide & bit) verdict[l] = fast_setup::scalar;
+        else if (lanes.empty & bit) verdict[l] = fast_setup::empty;
+        else {
+            verdict[l] = fast_setup::ready;
+            msaa_triangle &f = out[l];
+            lanes.unpack(l, f);
+            for (int k = 0; k < 3; ++k) f.e[k] = e[k][l], f.a[k] = a[k][l], f.b[k] = b[k][l];
+            f.narrow = true, f.chunkable = true;
+        }
+    }
+}
 #ifdef TINY3D_AVX512
 void setup_msaa_batch_avx512(const setup_batch &in, const sample_pattern &pat, pixel_rect clip,
                              fast_setup verdict[SETUP_BATCH], msaa_triangle out[SETUP_BATCH]);

@@ -134,40 +134,8 @@ namespace {
 inline __m128i half_of(__m256i v, int h) { return h ? _mm256_extracti128_si256(v, 1) : _mm256_castsi256_si128(v); }
 inline __m256d half_double(__m256i v, int h) { return _mm256_cvtepi32_pd(half_of(v, h)); }
 inline __m256i half_widen(__m256i v, int h) { return _mm256_cvtepi32_epi64(half_of(v, h)); }
-inline int lane_bits(__m256i mask) { return _mm256_movemask_ps(_mm256_castsi256_ps(mask)); }
 
-// The batch's vertices (sub-pixel units), their box, and the lanes too wide for 32-bit steps.
-struct lanes8_vertices {
-    __m256i X[3], Y[3], min_X, max_X, min_Y, max_Y;
-    int wide;
-    explicit lanes8_vertices(const setup_batch &in) {
-        for (int k = 0; k < 3; ++k) {
-            X[k] = _mm256_load_si256(reinterpret_cast<const __m256i *>(in.X[k]));
-            Y[k] = _mm256_load_si256(reinterpret_cast<const __m256i *>(in.Y[k]));
-        }
-        min_X = _mm256_min_epi32(_mm256_min_epi32(X[0], X[1]), X[2]), max_X = _mm256_max_epi32(_mm256_max_epi32(X[0], X[1]), X[2]);
-        min_Y = _mm256_min_epi32(_mm256_min_epi32(Y[0], Y[1]), Y[2]), max_Y = _mm256_max_epi32(_mm256_max_epi32(Y[0], Y[1]), Y[2]);
-        const __m256i below = _mm256_set1_epi32(static_cast<int>(FAST_SPAN_LIMIT) - 1);
-        wide = lane_bits(_mm256_or_si256(_mm256_cmpgt_epi32(_mm256_sub_epi32(max_X, min_X), below),
-                                         _mm256_cmpgt_epi32(_mm256_sub_epi32(max_Y, min_Y), below)));
-    }
-};
-
-// pixel_bounds / axis_bounds on the 1/16 px grid (as lane_axis_bounds of the AVX-512 batch).
-inline void axis_bounds8(__m256i lo, __m256i hi, int lo_off, int hi_off, int clip0, int clip1, __m256i &first,
-                         __m256i &last) {
-    const __m256i half = _mm256_set1_epi32(RASTER_SUBPIXEL_ONE / 2);
-    first = _mm256_max_epi32(
-        _mm256_sub_epi32(_mm256_setzero_si256(),
-                         _mm256_srai_epi32(_mm256_sub_epi32(_mm256_add_epi32(half, _mm256_set1_epi32(hi_off)), lo), RASTER_SUBPIXEL_BITS)),
-        _mm256_set1_epi32(clip0));
-    last = _mm256_min_epi32(
-        _mm256_srai_epi32(_mm256_sub_epi32(_mm256_sub_epi32(hi, half), _mm256_set1_epi32(lo_off)), RASTER_SUBPIXEL_BITS),
-        _mm256_set1_epi32(clip1 - 1));
-}
-inline int empty_lanes(__m256i min_x, __m256i max_x, __m256i min_y, __m256i max_y) {
-    return lane_bits(_mm256_or_si256(_mm256_cmpgt_epi32(min_x, max_x), _mm256_cmpgt_epi32(min_y, max_y)));
-}
+#include "setup_batch_lanes.inc"  // lane_bits, lane_vertices, lane_bounds
 
 // Edge k (snapped_edge_at at the centre (cx, cy)): dx, dy on 32-bit lanes, the value e in
 // two halves of 64-bit lanes.
@@ -192,7 +160,7 @@ inline edge8 edge_at8(__m256i s, __m256i xa, __m256i ya, __m256i xb, __m256i yb,
 }
 
 // The three edges at the centre of pixel (min_x, min_y), oriented by s = sign(area2).
-inline void edges_at8(const setup_batch &in, const lanes8_vertices &v, __m256i min_x, __m256i min_y, edge8 g[3]) {
+inline void edges_at8(const setup_batch &in, const lane_vertices &v, __m256i min_x, __m256i min_y, edge8 g[3]) {
     alignas(32) std::int32_t sign[SETUP_BATCH];
     for (int l = 0; l < SETUP_BATCH; ++l) sign[l] = in.area2[l] > 0 ? 1 : -1;
     const __m256i s = _mm256_load_si256(reinterpret_cast<const __m256i *>(sign));
@@ -220,8 +188,9 @@ inline void plane_half(const float *const f[3], int h, __m256d d1x, __m256d d1y,
 
 // The depth and intensity planes at the centre of pixel (min_x, min_y): planes[0..5] =
 // depth, its x and y steps, intensity, its x and y steps.
-inline void planes8(const setup_batch &in, const lanes8_vertices &v, __m256i min_x, __m256i min_y,
-                    float planes[6][SETUP_BATCH]) {
+// (Inlined, as the AVX-512 batch's lane_planes is, and for the same reason: see there.)
+[[gnu::always_inline]] inline void planes8(const setup_batch &in, const lane_vertices &v, __m256i min_x,
+                                           __m256i min_y, float planes[6][SETUP_BATCH]) {
     const __m256d step = _mm256_set1_pd(1.0 / RASTER_SUBPIXEL_ONE);
     const float *const depth[3] = {in.depth[0], in.depth[1], in.depth[2]};
     const float *const shade[3] = {in.shade[0], in.shade[1], in.shade[2]};
@@ -239,26 +208,17 @@ inline void planes8(const setup_batch &in, const lanes8_vertices &v, __m256i min
     }
 }
 
-inline void store_bounds8(__m256i min_x, __m256i max_x, __m256i min_y, __m256i max_y, std::int32_t bounds[4][SETUP_BATCH]) {
-    _mm256_storeu_si256(reinterpret_cast<__m256i *>(bounds[0]), min_x);
-    _mm256_storeu_si256(reinterpret_cast<__m256i *>(bounds[1]), max_x);
-    _mm256_storeu_si256(reinterpret_cast<__m256i *>(bounds[2]), min_y);
-    _mm256_storeu_si256(reinterpret_cast<__m256i *>(bounds[3]), max_y);
-}
-
 }  // namespace
 
 void setup_fast_batch_avx2(const setup_batch &in, pixel_rect clip, fast_setup verdict[SETUP_BATCH],
                            fast_triangle out[SETUP_BATCH]) {
-    const lanes8_vertices v(in);
-    __m256i min_x, max_x, min_y, max_y;
-    axis_bounds8(v.min_X, v.max_X, 0, 0, clip.x0, clip.x1, min_x, max_x);
-    axis_bounds8(v.min_Y, v.max_Y, 0, 0, clip.y0, clip.y1, min_y, max_y);
-    const int empty = empty_lanes(min_x, max_x, min_y, max_y);
+    const lane_vertices v(in);
+    batch_lanes lanes;
+    const lane_bounds box(v, 0, 0, 0, 0, clip, lanes);
     edge8 g[3];
-    edges_at8(in, v, min_x, min_y, g);
+    edges_at8(in, v, box.min_x, box.min_y, g);
     const __m256i zero = _mm256_setzero_si256();
-    const int horizontal = lane_bits(_mm256_or_si256(_mm256_or_si256(_mm256_cmpeq_epi32(g[0].dy, zero), _mm256_cmpeq_epi32(g[1].dy, zero)),
+    const unsigned horizontal = lane_bits(_mm256_or_si256(_mm256_or_si256(_mm256_cmpeq_epi32(g[0].dy, zero), _mm256_cmpeq_epi32(g[1].dy, zero)),
                                                      _mm256_cmpeq_epi32(g[2].dy, zero)));
     // The crossings in set_crossing's slots (as the AVX-512 batch: left edges to 0 then 2,
     // right ones to 1 then 3, in edge order; a slot no edge takes holds NO_EDGE).
@@ -300,33 +260,17 @@ void setup_fast_batch_avx2(const setup_batch &in, pixel_rect clip, fast_setup ve
             _mm256_store_pd(cross_step[j] + 4 * h, sj);
         }
     }
-    batch_lanes lanes;
-    planes8(in, v, min_x, min_y, lanes.planes);
-    store_bounds8(min_x, max_x, min_y, max_y, lanes.bounds);
-    for (int l = 0; l < in.count; ++l) {
-        const int bit = 1 << l;
-        if (v.wide & bit) verdict[l] = fast_setup::wide;
-        else if (empty & bit) verdict[l] = fast_setup::empty;
-        else if (horizontal & bit) verdict[l] = fast_setup::scalar;
-        else {
-            verdict[l] = fast_setup::ready;
-            fast_triangle &f = out[l];
-            lanes.unpack(l, f);
-            for (int j = 0; j < 4; ++j) f.cross[j] = cross[j][l], f.cross_step[j] = cross_step[j][l];
-            f.wide = -1;
-        }
-    }
+    planes8(in, v, box.min_x, box.min_y, lanes.planes);
+    lanes.finish_fast(in.count, horizontal, cross, cross_step, verdict, out);
 }
 
 void setup_msaa_batch_avx2(const setup_batch &in, const sample_pattern &pat, pixel_rect clip,
                            fast_setup verdict[SETUP_BATCH], msaa_triangle out[SETUP_BATCH]) {
-    const lanes8_vertices v(in);
-    __m256i min_x, max_x, min_y, max_y;
-    axis_bounds8(v.min_X, v.max_X, pat.min_dx, pat.max_dx, clip.x0, clip.x1, min_x, max_x);
-    axis_bounds8(v.min_Y, v.max_Y, pat.min_dy, pat.max_dy, clip.y0, clip.y1, min_y, max_y);
-    const int empty = empty_lanes(min_x, max_x, min_y, max_y);
+    const lane_vertices v(in);
+    batch_lanes lanes;
+    const lane_bounds box(v, pat.min_dx, pat.max_dx, pat.min_dy, pat.max_dy, clip, lanes);
     edge8 g[3];
-    edges_at8(in, v, min_x, min_y, g);
+    edges_at8(in, v, box.min_x, box.min_y, g);
     // a = −dy·16, b = dx·16 (64 bits, as msaa_triangle holds them; |·| < 2^19 here).
     alignas(32) std::int64_t e[3][SETUP_BATCH], a[3][SETUP_BATCH], b[3][SETUP_BATCH];
     for (int k = 0; k < 3; ++k) {
@@ -338,21 +282,8 @@ void setup_msaa_batch_avx2(const setup_batch &in, const sample_pattern &pat, pix
             _mm256_store_si256(reinterpret_cast<__m256i *>(b[k] + 4 * h), half_widen(bk, h));
         }
     }
-    batch_lanes lanes;
-    planes8(in, v, min_x, min_y, lanes.planes);
-    store_bounds8(min_x, max_x, min_y, max_y, lanes.bounds);
-    for (int l = 0; l < in.count; ++l) {
-        const int bit = 1 << l;
-        if (v.wide & bit) verdict[l] = fast_setup::scalar;
-        else if (empty & bit) verdict[l] = fast_setup::empty;
-        else {
-            verdict[l] = fast_setup::ready;
-            msaa_triangle &f = out[l];
-            lanes.unpack(l, f);
-            for (int k = 0; k < 3; ++k) f.e[k] = e[k][l], f.a[k] = a[k][l], f.b[k] = b[k][l];
-            f.narrow = true, f.chunkable = true;  // (the box spans < span_limit: narrow implies chunkable)
-        }
-    }
+    planes8(in, v, box.min_x, box.min_y, lanes.planes);
+    finish_msaa_batch(lanes, in.count, e, a, b, verdict, out);
 }
 
 }  // namespace tiny3d::detail
