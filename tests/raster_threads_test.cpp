@@ -318,10 +318,9 @@ TEST(batched_setup_gives_the_scalar_setup_bit_for_bit) {
         detail::fast_triangle batched[detail::SETUP_BATCH];
         detail::setup_fast_batch(kernel, batch, clip, verdict, batched);
         for (int l = 0; l < batch.count; ++l) {
-            const std::int32_t X[3] = {batch.X[0][l], batch.X[1][l], batch.X[2][l]};
-            const std::int32_t Y[3] = {batch.Y[0][l], batch.Y[1][l], batch.Y[2][l]};
-            const float depth[3] = {batch.depth[0][l], batch.depth[1][l], batch.depth[2][l]};
-            const float shade[3] = {batch.shade[0][l], batch.shade[1][l], batch.shade[2][l]};
+            std::int32_t X[3], Y[3];
+            float depth[3], shade[3];
+            batch.lane(l, X, Y, depth, shade);
             detail::fast_triangle one;
             const detail::fast_setup expected = detail::setup_fast_triangle(X, Y, batch.area2[l], clip, depth, shade, one);
             if (verdict[l] == detail::fast_setup::scalar) {  // allowed only for a horizontal edge
@@ -366,10 +365,9 @@ TEST(batched_multisample_setup_gives_the_scalar_setup_bit_for_bit) {
             detail::msaa_triangle batched[detail::SETUP_BATCH];
             detail::setup_msaa_batch(kernel, batch, pat, clip, verdict, batched);
             for (int l = 0; l < batch.count; ++l) {
-                const std::int32_t X[3] = {batch.X[0][l], batch.X[1][l], batch.X[2][l]};
-                const std::int32_t Y[3] = {batch.Y[0][l], batch.Y[1][l], batch.Y[2][l]};
-                const float depth[3] = {batch.depth[0][l], batch.depth[1][l], batch.depth[2][l]};
-                const float shade[3] = {batch.shade[0][l], batch.shade[1][l], batch.shade[2][l]};
+                std::int32_t X[3], Y[3];
+                float depth[3], shade[3];
+                batch.lane(l, X, Y, depth, shade);
                 detail::msaa_triangle one;
                 const bool made = detail::make_msaa_triangle(X, Y, batch.area2[l], pat, clip, depth, shade, one);
                 if (verdict[l] == detail::fast_setup::scalar) {  // allowed only for a box past the fast span

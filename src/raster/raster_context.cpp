@@ -219,23 +219,17 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
     auto finish_batch = [&] {
         if (batch.count == 0) return;
         fast_setup verdict[SETUP_BATCH];
-        auto lane = [&](int l, auto &&set_up_alone) {  // a lane the batch left to the scalar set-up
-            const std::int32_t X[3] = {batch.X[0][l], batch.X[1][l], batch.X[2][l]};
-            const std::int32_t Y[3] = {batch.Y[0][l], batch.Y[1][l], batch.Y[2][l]};
-            const float depth[3] = {batch.depth[0][l], batch.depth[1][l], batch.depth[2][l]};
-            const float shade[3] = {batch.shade[0][l], batch.shade[1][l], batch.shade[2][l]};
-            set_up_alone(X, Y, depth, shade);
-        };
         if (msaa) {
             msaa_triangle set_up[SETUP_BATCH];
             setup_msaa_batch(kernel, batch, *pattern, full, verdict, set_up);
             for (int l = 0; l < batch.count; ++l) {
                 if (verdict[l] == fast_setup::ready) add_msaa(set_up[l], state, out);
                 if (verdict[l] != fast_setup::scalar) continue;
-                lane(l, [&](const std::int32_t X[3], const std::int32_t Y[3], const float depth[3], const float shade[3]) {
-                    if (make_msaa_triangle(X, Y, batch.area2[l], *pattern, full, depth, shade, set_up[l]))
-                        add_msaa(set_up[l], state, out);
-                });
+                std::int32_t X[3], Y[3];  // a lane the batch left to the scalar set-up
+                float depth[3], shade[3];
+                batch.lane(l, X, Y, depth, shade);
+                if (make_msaa_triangle(X, Y, batch.area2[l], *pattern, full, depth, shade, set_up[l]))
+                    add_msaa(set_up[l], state, out);
             }
             batch.count = 0;
             return;
@@ -247,11 +241,12 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
                 bin_ready(set_up[l]);
                 continue;
             }
-            lane(l, [&](const std::int32_t X[3], const std::int32_t Y[3], const float depth[3], const float shade[3]) {
-                if (verdict[l] == fast_setup::scalar)
-                    verdict[l] = detail::setup_fast_triangle(X, Y, batch.area2[l], full, depth, shade, set_up[l]);
-                finish(verdict[l], set_up[l], X, Y, depth, shade);
-            });
+            std::int32_t X[3], Y[3];
+            float depth[3], shade[3];
+            batch.lane(l, X, Y, depth, shade);
+            if (verdict[l] == fast_setup::scalar)
+                verdict[l] = detail::setup_fast_triangle(X, Y, batch.area2[l], full, depth, shade, set_up[l]);
+            finish(verdict[l], set_up[l], X, Y, depth, shade);
         }
         batch.count = 0;
     };

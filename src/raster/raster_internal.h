@@ -226,6 +226,10 @@ struct setup_batch {
         for (int k = 0; k < 3; ++k) X[k][count] = x[k], Y[k][count] = y[k], depth[k][count] = z[k], shade[k][count] = i[k];
         ++count;
     }
+    // Lane l's arguments back, as add took them (its area2 is area2[l]).
+    void lane(int l, std::int32_t x[3], std::int32_t y[3], float z[3], float i[3]) const {
+        for (int k = 0; k < 3; ++k) x[k] = X[k][l], y[k] = Y[k][l], z[k] = depth[k][l], i[k] = shade[k][l];
+    }
 };
 
 // What the set-up batches compute per lane and unpack into each lane's set-up triangle
