@@ -61,6 +61,15 @@ scene make_scene(const tiny3d::mesh &m) {
     return s;
 }
 
+// One frame of `mesh` with `params`, the mesh turned `frame` degrees about +y.
+void render_frame(tiny3d::render_context &ctx, canvas_t &canvas, const tiny3d::raster_mesh &mesh,
+                  tiny3d::draw_params &params, int frame) {
+    params.model = tiny3d::mat4_rotate_y(static_cast<float>(frame * M_PI / 180));
+    if (!ctx.begin_frame(canvas).ok()) return;
+    ctx.draw(mesh, params);
+    ctx.end_frame();
+}
+
 // Times frames of the scene with `threads`, with or without its clusters, filled with the
 // instruction set `simd`; the last frame stays in `canvas`.
 bench::timing time_frames(scene &s, int threads, canvas_t &canvas, int frames, bool clusters = true,
@@ -69,12 +78,7 @@ bench::timing time_frames(scene &s, int threads, canvas_t &canvas, int frames, b
     ctx.use_simd(simd);
     s.params.clusters = clusters ? &s.clusters : nullptr;
     int frame = 0;
-    auto render = [&] {
-        s.params.model = tiny3d::mat4_rotate_y(static_cast<float>(frame++ * M_PI / 180));
-        if (!ctx.begin_frame(canvas).ok()) return;
-        ctx.draw(s.mesh, s.params);
-        ctx.end_frame();
-    };
+    auto render = [&] { render_frame(ctx, canvas, s.mesh, s.params, frame++); };
     for (int k = 0; k < WARMUP_FRAMES - 1; ++k) render();  // measure_ns adds one more
     const bench::timing t = bench::measure_ns(frames, NS_PER_MS, render);
     bench::keep(canvas.data[SIDE * SIDE / 2]);
@@ -94,12 +98,7 @@ bench::timing time_frames_beside_another(scene &s, canvas_t &canvas, int frames)
         tiny3d::canvas_ptr own = tiny3d::make_canvas(SIDE, SIDE).value();
         tiny3d::render_context ctx(1);
         tiny3d::draw_params p = params;
-        for (int frame = 0; !done.load(std::memory_order_relaxed); ++frame) {
-            p.model = tiny3d::mat4_rotate_y(static_cast<float>(frame * M_PI / 180));
-            if (!ctx.begin_frame(*own).ok()) return;
-            ctx.draw(s.mesh, p);
-            ctx.end_frame();
-        }
+        for (int frame = 0; !done.load(std::memory_order_relaxed); ++frame) render_frame(ctx, *own, s.mesh, p, frame);
     });
     const bench::timing t = time_frames(s, 1, canvas, frames);
     done.store(true, std::memory_order_relaxed);
@@ -120,12 +119,8 @@ paired_timing time_frames_interleaved(scene &s, canvas_t &one_canvas, canvas_t &
     tiny3d::render_context one(1), two(2);
     s.params.clusters = &s.clusters;
     auto render_ms = [&](tiny3d::render_context &ctx, canvas_t &canvas, int frame) {
-        s.params.model = tiny3d::mat4_rotate_y(static_cast<float>(frame * M_PI / 180));
         const auto start = std::chrono::steady_clock::now();
-        if (ctx.begin_frame(canvas).ok()) {
-            ctx.draw(s.mesh, s.params);
-            ctx.end_frame();
-        }
+        render_frame(ctx, canvas, s.mesh, s.params, frame);
         return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     };
     for (int k = 0; k < WARMUP_FRAMES; ++k) render_ms(one, one_canvas, k), render_ms(two, two_canvas, k);
