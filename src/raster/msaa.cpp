@@ -131,7 +131,16 @@ void fill_rows_portable(sample_store &store, const msaa_triangle &f, const sampl
 }
 
 #ifdef TINY3D_SSE2
-#include "msaa_sse2_fill.inc"  // compare, select, fill_rows_sse2, fill_rows_sse2_dispatch
+#include "msaa_sse2_fill.inc"  // compare, select, fill_rows_sse2
+
+// msaa_fill_for's SSE2 functions: the SSE2 kernel where f is chunkable, else the portable one.
+template <int S, depth_func Test>
+void fill_sse2(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test, bool depth_write,
+               float clear_colour, int y0, int y1) {
+    if (!clamp_to_rows(f, y0, y1)) return;
+    if (f.chunkable) fill_rows_sse2<S, Test>(store, f, pat, depth_write, clear_colour, y0, y1);
+    else fill_rows_portable(store, f, pat, test, depth_write, clear_colour, y0, y1);
+}
 
 // resolve() for S = 4, 8, 16, the sums in the portable loop's order (resolve_pixel).
 // A resolved pixel's samples back at rest (sample_store): depth 1, the clear colour.
@@ -382,30 +391,36 @@ void setup_msaa_batch([[maybe_unused]] fill_kernel kernel, const setup_batch &in
     (void)pat, (void)clip, (void)out;
 }
 
-void fill_msaa_rows(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
-                    bool depth_write, float clear_colour, int y0, int y1, [[maybe_unused]] msaa_kernel kernel) {
-    y0 = std::max(y0, f.min_y);
-    y1 = std::min(y1, f.max_y + 1);
-    if (y0 >= y1 || test == depth_func::never) return;
+namespace {
+
+void fill_nothing(sample_store &, const msaa_triangle &, const sample_pattern &, depth_func, bool, float, int, int) {}
+
+void fill_portable(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
+                   bool depth_write, float clear_colour, int y0, int y1) {
+    if (clamp_to_rows(f, y0, y1)) fill_rows_portable(store, f, pat, test, depth_write, clear_colour, y0, y1);
+}
+
+}  // namespace
+
+msaa_row_fill msaa_fill_for([[maybe_unused]] msaa_kernel kernel, int samples, depth_func test) {
+    if (test == depth_func::never) return fill_nothing;
+    [[maybe_unused]] const bool simd_samples = samples == 4 || samples == 8 || samples == 16;
 #ifdef TINY3D_AVX512
-    if (f.chunkable && kernel == msaa_kernel::avx512 && (pat.count == 4 || pat.count == 8 || pat.count == 16))
-        return fill_rows_avx512(store, f, pat, test, depth_write, clear_colour, y0, y1);
+    if (kernel == msaa_kernel::avx512 && simd_samples) return fill_function_avx512(samples, test);
 #endif
 #ifdef TINY3D_AVX2
-    if (f.narrow && kernel == msaa_kernel::avx2 && (pat.count == 4 || pat.count == 8 || pat.count == 16))
-        return fill_rows_avx2(store, f, pat, test, depth_write, clear_colour, y0, y1);
+    if (kernel == msaa_kernel::avx2 && simd_samples) return fill_function_avx2(samples, test);
 #endif
 #ifdef TINY3D_SSE2
-    if (f.chunkable && kernel != msaa_kernel::portable) {
-        switch (pat.count) {
-            case 4: return fill_rows_sse2_dispatch<4>(store, f, pat, test, depth_write, clear_colour, y0, y1);
-            case 8: return fill_rows_sse2_dispatch<8>(store, f, pat, test, depth_write, clear_colour, y0, y1);
-            case 16: return fill_rows_sse2_dispatch<16>(store, f, pat, test, depth_write, clear_colour, y0, y1);
-            default: break;
-        }
-    }
+    if (kernel != msaa_kernel::portable && simd_samples)
+        return fill_function(samples, test, [](auto s, auto t) -> msaa_row_fill { return &fill_sse2<s.value, t.value>; });
 #endif
-    fill_rows_portable(store, f, pat, test, depth_write, clear_colour, y0, y1);
+    return fill_portable;
+}
+
+void fill_msaa_rows(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
+                    bool depth_write, float clear_colour, int y0, int y1, msaa_kernel kernel) {
+    msaa_fill_for(kernel, pat.count, test)(store, f, pat, test, depth_write, clear_colour, y0, y1);
 }
 
 void screen_gradient(const screen_vertex v[3], const float f[3], float &fdx, float &fdy) {

@@ -209,13 +209,21 @@ void fill_rows_pixels(sample_store &store, const msaa_triangle &f, const sample_
 
 }  // namespace
 
-void fill_rows_avx2(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
-                    bool depth_write, float clear_colour, int y0, int y1) {
-    with_depth_test(test, [&](auto t) {
-        if (pat.count == 4) fill_rows_pairs<t.value>(store, f, pat, depth_write, y0, y1);
-        else if (pat.count == 8) fill_rows_pixels<8, t.value>(store, f, pat, depth_write, clear_colour, y0, y1);
-        else fill_rows_pixels<16, t.value>(store, f, pat, depth_write, clear_colour, y0, y1);
-    });
+namespace {
+
+template <int S, depth_func Test>
+void fill_avx2(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test, bool depth_write,
+               float clear_colour, int y0, int y1) {
+    if (!f.narrow) return msaa_fill_for(msaa_kernel::sse2, S, test)(store, f, pat, test, depth_write, clear_colour, y0, y1);
+    if (!clamp_to_rows(f, y0, y1)) return;
+    if constexpr (S == 4) fill_rows_pairs<Test>(store, f, pat, depth_write, y0, y1);
+    else fill_rows_pixels<S, Test>(store, f, pat, depth_write, clear_colour, y0, y1);
+}
+
+}  // namespace
+
+msaa_row_fill fill_function_avx2(int samples, depth_func test) {
+    return fill_function(samples, test, [](auto s, auto t) -> msaa_row_fill { return &fill_avx2<s.value, t.value>; });
 }
 
 }  // namespace tiny3d::detail

@@ -324,14 +324,26 @@ void fill_rows_blocks(sample_store &store, const msaa_triangle &f, const sample_
 
 }  // namespace
 
-void fill_rows_avx512(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
-                      bool depth_write, float clear_colour, int y0, int y1) {
-    with_depth_test(test, [&](auto t) {
-        if (pat.count == 4 && f.narrow) fill_rows_blocks<t.value>(store, f, pat, depth_write, y0, y1);
-        else if (pat.count == 4) fill_rows_sse2<4, t.value>(store, f, pat, depth_write, clear_colour, y0, y1);
-        else if (pat.count == 16) fill_rows<16, t.value>(store, f, pat, depth_write, clear_colour, y0, y1);
-        else fill_rows<8, t.value>(store, f, pat, depth_write, clear_colour, y0, y1);
-    });
+namespace {
+
+template <int S, depth_func Test>
+void fill_avx512(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
+                 bool depth_write, float clear_colour, int y0, int y1) {
+    if (!f.chunkable)
+        return msaa_fill_for(msaa_kernel::portable, S, test)(store, f, pat, test, depth_write, clear_colour, y0, y1);
+    if (!clamp_to_rows(f, y0, y1)) return;
+    if constexpr (S == 4) {
+        if (f.narrow) fill_rows_blocks<Test>(store, f, pat, depth_write, y0, y1);
+        else fill_rows_sse2<4, Test>(store, f, pat, depth_write, clear_colour, y0, y1);
+    } else {
+        fill_rows<S, Test>(store, f, pat, depth_write, clear_colour, y0, y1);
+    }
+}
+
+}  // namespace
+
+msaa_row_fill fill_function_avx512(int samples, depth_func test) {
+    return fill_function(samples, test, [](auto s, auto t) -> msaa_row_fill { return &fill_avx512<s.value, t.value>; });
 }
 
 // Eight pixels (four lines of two) at a time. Per 128-bit lane a line holds one quad of four

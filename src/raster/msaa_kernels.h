@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <type_traits>
 
 #include "msaa.h"
 #include "../simd_config.h"
@@ -70,20 +71,40 @@ inline void sample_offsets_exact(const msaa_triangle &f, const sample_pattern &p
     for (int s = 0; s < pat.count; ++s) out[s] = static_cast<std::int32_t>(sample_edge_offset(f.a[k], f.b[k], pat, s));
 }
 
+// Rows [y0, y1) := those of f among them; false when none are.
+inline bool clamp_to_rows(const msaa_triangle &f, int &y0, int &y1) {
+    y0 = std::max(y0, f.min_y);
+    y1 = std::min(y1, f.max_y + 1);
+    return y0 < y1;
+}
+
+// The msaa_row_fill choose(S, Test) returns for samples (4, 8 or 16) and test (not never),
+// S and Test as std::integral_constant: one kernel file's functions by sample count and test.
+template <class Choose>
+msaa_row_fill fill_function(int samples, depth_func test, Choose &&choose) {
+    msaa_row_fill chosen = nullptr;
+    with_depth_test(test, [&](auto t) {
+        if (samples == 4) chosen = choose(std::integral_constant<int, 4>{}, t);
+        else if (samples == 8) chosen = choose(std::integral_constant<int, 8>{}, t);
+        else chosen = choose(std::integral_constant<int, 16>{}, t);
+    });
+    return chosen;
+}
+
 #ifdef TINY3D_AVX2
-// The AVX2 kernel (msaa_kernel::avx2; only on CPUs best_fill_kernel() reports it for, or
-// avx512): f.narrow, pat.count = 4, 8 or 16, rows [y0, y1) already clamped to f's. The same integer
-// tests and float operations as the portable kernel.
-void fill_rows_avx2(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
-                    bool depth_write, float clear_colour, int y0, int y1);
+// msaa_fill_for's AVX2 functions (msaa_kernel::avx2; only on CPUs best_fill_kernel() reports
+// it for, or avx512), samples 4, 8 or 16, test not never: the AVX2 kernel where f is narrow,
+// the SSE2 functions otherwise. The same integer tests and float operations as the portable
+// kernel.
+msaa_row_fill fill_function_avx2(int samples, depth_func test);
 #endif
 
 #ifdef TINY3D_AVX512
-// The AVX-512 kernels (msaa_kernel::avx512; only on CPUs best_fill_kernel() reports it for):
-// f.chunkable, pat.count = 4, 8 or 16, rows [y0, y1) already clamped to f's. The same integer
-// tests and float operations as the portable kernel.
-void fill_rows_avx512(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
-                      bool depth_write, float clear_colour, int y0, int y1);
+// msaa_fill_for's AVX-512 functions (msaa_kernel::avx512; only on CPUs best_fill_kernel()
+// reports it for), samples 4, 8 or 16, test not never: the AVX-512 kernels where f is
+// chunkable, the portable one otherwise. The same integer tests and float operations as the
+// portable kernel.
+msaa_row_fill fill_function_avx512(int samples, depth_func test);
 // The 4-sample resolve of one tile row's first `pixels` pixels (a multiple of 8), p at its
 // first pixel, the tile at rest (sample_store): colour := ((s0 + s2) + (s1 + s3)) · 1/4,
 // z := min(min(s0, s2), min(s1, s3)) — the SSE2 resolve's operations in its order, so the

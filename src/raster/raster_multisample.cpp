@@ -26,6 +26,8 @@ void render_context::impl::draw_multisampled_band(int band, sample_store &tile) 
     const int y0 = bands.y0(band), y1 = bands.y0(band + 1);
     if (y0 >= y1) return;
     tile.start(y0, y1);
+    msaa_row_fill fill_for[8];  // by depth_func (raster.h: never … always)
+    for (int test = 0; test < 8; ++test) fill_for[test] = msaa_fill_for(kernel, pattern->count, static_cast<depth_func>(test));
     constexpr int TRIANGLES_AHEAD = 6;
     struct cursor {  // an entry of the band's bins, in drawing order
         int number = 0;
@@ -57,7 +59,8 @@ void render_context::impl::draw_multisampled_band(int band, sample_store &tile) 
                 continue;
             }
             const msaa_triangle &f = from.msaa[index];
-            fill_msaa_rows(tile, f, *pattern, states[f.state].depth, true, clear_intensity, y0, y1, kernel);
+            const depth_func test = states[f.state].depth;
+            fill_for[static_cast<int>(test)](tile, f, *pattern, test, true, clear_intensity, y0, y1);
         }
     }
     for (const generic_triangle &g : translucent)
