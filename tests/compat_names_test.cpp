@@ -1,5 +1,5 @@
 // compat_names_test.cpp — the alternate names that are also names programs give their own
-// functions (issue 20): save_canvas_pgm, save_canvas_as_pgm, canvas_save_to_pgm,
+// functions: save_canvas_pgm, save_canvas_as_pgm, canvas_save_to_pgm,
 // save_canvas_to_pgm, the 7-argument draw_line_f, create_cube, the global mat4_perspective
 // and vec3_normalize. They are in the normal headers and step aside for a program's own
 // function of the same name (include/compat/user_first.h).

@@ -1,5 +1,5 @@
 // compat_test.cpp — libtiny3d as a drop-in for programs written against other libtiny3d
-// implementations (issue 10).
+// implementations.
 //
 // The user-style programs tests/compat/*.c are compiled as C++ by `make tests` (g++
 // -std=c++20 -Wall -Wextra -Werror) into $BUILD/compat/ (BUILD from the environment,

@@ -2,7 +2,7 @@
 // bounding spheres, the framing matrix, face and vertex normals at 1e-38, 1e38 and mixed
 // scales; a framed mesh draws the same image at every scale (wireframe with frustum
 // culling, filled); framing in double reaches what the float matrix cannot, and the programs
-// frame the issue's 1e19 / 1e38 triangles and any other extent instead of writing a blank frame.
+// frame triangles at 1e19 and 1e38 and any other extent instead of writing a blank frame.
 //
 // References: the same quantities recomputed in long double, and the image of the same mesh
 // at scale 1 (a power-of-two scale changes every float operation by an exact factor, so the
@@ -141,7 +141,7 @@ TEST(bounding_sphere_is_tight_and_holds_every_position_at_any_scale) {
     }
 }
 
-TEST(bounding_sphere_of_the_issues_triangles) {
+TEST(bounding_sphere_of_triangles_at_extreme_scales) {
     // 1e19 (r² = 3e38 overflowed float to inf), 1e-38 apart (r² underflowed to 0), and 1e38.
     for (double s : {1e19, 1e-38, 1e38}) {
         mesh m;

@@ -73,7 +73,7 @@ void check_against_reference(double thickness, tiny3d::line_cap cap, int count, 
         worst_ink = std::max(worst_ink, std::fabs(ink(*c) - expect) / expect);
     }
     const double mean = e.sum / double(std::max(e.pixels, 1L));
-    // Bounds from issue 3: mean ≤ 0.05 % of full scale, max ≤ 0.07, ink within 0.1 %.
+    // The required bounds: mean ≤ 0.05 % of full scale, max ≤ 0.07, ink within 0.1 %.
     CHECK_MSG(mean <= 5e-4, "T=" + std::to_string(thickness) + " mean " + std::to_string(mean));
     CHECK_MSG(e.max <= 0.07, "T=" + std::to_string(thickness) + " max " + std::to_string(e.max));
     CHECK_MSG(worst_ink <= 1e-3, "T=" + std::to_string(thickness) + " ink " + std::to_string(worst_ink));
