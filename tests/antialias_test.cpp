@@ -249,14 +249,21 @@ TEST(msaa_background_keeps_the_clear_intensity) {
 TEST(msaa_tile_at_rest_follows_the_clear_the_mode_and_the_size) {
     detail::sample_store store;
     int wrong = 0;
-    for (const auto &[width, samples, clear] : {std::tuple{9, 4, 0.3f}, std::tuple{9, 4, 0.6f}, std::tuple{9, 16, 0.6f},
-                                                std::tuple{9, 4, 0.6f}, std::tuple{40, 4, 0.6f}}) {
-        store.resize(width, 3, samples, clear);
+    for (const auto &[width, samples, clear, blocks] :
+         {std::tuple{9, 4, 0.3f, false}, std::tuple{9, 4, 0.6f, false}, std::tuple{9, 16, 0.6f, false},
+          std::tuple{9, 4, 0.6f, false}, std::tuple{9, 4, 0.6f, true}, std::tuple{40, 4, 0.6f, true},
+          std::tuple{40, 4, 0.6f, false}}) {
+        store.resize(width, 3, samples, clear, blocks);
         store.start(0, 3);
         if (samples != 4) continue;
+        CHECK_EQ(store.blocks(), blocks);
         for (int y = 0; y < 3; ++y)
             for (int x = 0; x < width; ++x)
-                for (int s = 0; s < 8; ++s) wrong += store.pixel(x, y)[s] != (s < 4 ? 1.0f : clear);
+                for (int s = 0; s < 4; ++s) {
+                    const float *p = store.pixel(x, y);
+                    wrong += p[s] != 1.0f;
+                    wrong += p[store.colour_offset() + s] != clear;
+                }
     }
     CHECK_EQ(wrong, 0);
     const small_scene near_sphere = make_small_scene(make_icosphere(2), 0.3f);
@@ -335,26 +342,62 @@ TEST(msaa_multi_draw_frames_do_not_depend_on_the_thread_count) {
     }
 }
 
-// The sample store's layout the AVX2 and AVX-512 4× kernels rely on: rows padded to a multiple of
-// STRIDE_PIXELS and every row's first pixel on a 64-byte boundary (so a pair of pixels from
-// an even column is one aligned 64-byte line at 4 samples), pixels contiguous and disjoint,
-// across resizes that shrink and grow the width.
-TEST(msaa_sample_store_rows_are_padded_and_aligned) {
+// The sample store's layouts the SIMD kernels rely on (sample_store), across resizes that
+// shrink and grow the width, odd row counts included: rows padded to a multiple of
+// STRIDE_PIXELS; every pixel's depths and colours S floats each, disjoint, together filling
+// the tile without a gap; pixel_step from column to column; in rows pixel after pixel, each
+// row's first on a 64-byte boundary (at 4 samples a pixel pair from an even column one
+// aligned 64-byte line); in blocks (4 samples) 2 × 2 pixels from column 0 and the tile's
+// origin, 128 bytes each and 64-byte aligned, pixel q = 2r + j at float 4q of the block's
+// depths and of its colours 16 floats on (the AVX-512 kernel's lanes). Blocks are asked of
+// 8 and 16 samples too, and not given.
+TEST(msaa_sample_store_layout) {
     detail::sample_store store;
     for (int width : {1, 2, 3, 5, 8, 41, 7, 1024})
-        for (int samples : {4, 8, 16}) {
-            store.resize(width, 3, samples, 0.0f);
-            store.start(10, 13);
-            CHECK(store.stride() >= width);
-            CHECK_EQ(store.stride() % detail::sample_store::STRIDE_PIXELS, 0);
-            CHECK(store.stride() < width + detail::sample_store::STRIDE_PIXELS);
-            for (int y = 10; y < 13; ++y) {
-                CHECK_EQ(reinterpret_cast<std::uintptr_t>(store.pixel(0, y)) % 64, 0u);
-                CHECK_EQ(store.pixel(1, y) - store.pixel(0, y), 2L * samples);
-                CHECK_EQ(store.touched_row(y) - store.touched_row(10), static_cast<long>(y - 10) * store.stride());
+        for (int samples : {4, 8, 16})
+            for (int rows : {3, 4})
+            for (bool asked : {false, true}) {
+                store.resize(width, rows, samples, 0.0f, asked);
+                store.start(11, 11 + rows);
+                const bool blocks = asked && samples == 4;
+                CHECK_EQ(store.blocks(), blocks);
+                CHECK_EQ(detail::sample_store::blocks_for(detail::msaa_kernel::avx512, samples), samples == 4);
+                CHECK(!detail::sample_store::blocks_for(detail::msaa_kernel::sse2, samples));
+                CHECK_EQ(store.origin(), 11);
+                CHECK(store.stride() >= width);
+                CHECK_EQ(store.stride() % detail::sample_store::STRIDE_PIXELS, 0);
+                CHECK(store.stride() < width + detail::sample_store::STRIDE_PIXELS);
+                const int C = store.colour_offset();
+                CHECK_EQ(C, blocks ? 16 : samples);
+                std::vector<std::pair<const float *, int>> runs;  // (first float, S): every depth and colour run
+                const float *first = store.pixel(0, 11);
+                const int padded_rows = blocks ? rows + (rows & 1) : rows;
+                for (int y = 11; y < 11 + padded_rows; ++y) {
+                    CHECK_EQ(store.touched_row(y) - store.touched_row(11), static_cast<long>(y - 11) * store.stride());
+                    for (int x = 0; x < store.stride(); ++x) {
+                        const float *p = store.pixel(x, y);
+                        runs.push_back({p, samples});
+                        runs.push_back({p + C, samples});
+                        if (x + 1 < store.stride())
+                            CHECK_EQ(store.pixel(x + 1, y) - p, detail::sample_store::pixel_step(samples, blocks, x));
+                        if (!blocks) {
+                            CHECK_EQ(p - first, (static_cast<long>(y - 11) * store.stride() + x) * 2 * samples);
+                            if (x % 2 == 0 && samples == 4) CHECK_EQ(reinterpret_cast<std::uintptr_t>(p) % 64, 0u);
+                            continue;
+                        }
+                        const float *block = store.pixel(x & ~1, y - ((y - 11) & 1));
+                        CHECK_EQ(reinterpret_cast<std::uintptr_t>(block) % 64, 0u);
+                        CHECK_EQ(block - first, ((static_cast<long>(y - 11) / 2) * store.stride() / 2 + x / 2) * 32);
+                        CHECK_EQ(p - block, 4L * (2 * ((y - 11) & 1) + (x & 1)));
+                    }
+                }
+                CHECK_EQ(reinterpret_cast<std::uintptr_t>(first) % 64, 0u);
+                std::sort(runs.begin(), runs.end());
+                int gaps = 0;
+                for (std::size_t k = 0; k < runs.size(); ++k)
+                    gaps += runs[k].first != first + static_cast<std::ptrdiff_t>(k) * samples;
+                CHECK_EQ(gaps, 0);
             }
-            CHECK_EQ(store.pixel(0, 11) - store.pixel(0, 10), static_cast<long>(store.stride()) * 2 * samples);
-        }
 }
 
 // No allocation per frame in steady state, multisampled frames included: after one frame
@@ -449,7 +492,7 @@ std::vector<std::array<std::int32_t, 6>> jittered_grid(int W, int H, unsigned se
 detail::sample_store fill_all(const std::vector<std::array<std::int32_t, 6>> &tris, int W, int H, int samples,
                               bool reversed, detail::msaa_kernel kernel) {
     detail::sample_store store;
-    store.resize(W, H, samples, 0.0f);
+    store.resize(W, H, samples, 0.0f, detail::sample_store::blocks_for(kernel, samples));
     store.start(0, H);
     const detail::sample_pattern &pat = detail::pattern_of(samples);
     for (std::size_t n = 0; n < tris.size(); ++n) {
@@ -486,7 +529,8 @@ TEST(msaa_watertight_per_sample) {
                         if (!forward.touched_row(y)[x]) continue;
                         for (int s = 0; s < samples; ++s) {
                             gaps += f[s] != 0.5f;
-                            doubles += f[samples + s] != b[samples + s];
+                            const int c = forward.colour_offset() + s;
+                            doubles += f[c] != b[c];
                         }
                     }
                 CHECK_EQ(gaps, 0);
@@ -560,7 +604,9 @@ TEST(msaa_16_pattern_is_centred_and_its_coverage_exact) {
 // bit-identical; large triangles (boxes wider than 8 columns: walked by
 // row spans) and small ones (at most 8 columns: at 4× the box walked whole), some off the
 // canvas' edges; and wide ones, reaching far beyond the canvas (boxes beyond what 32-bit
-// values cover: rows walked in chunks, offsets in integers — msaa_kernels.h).
+// values cover: rows walked in chunks, offsets in integers — msaa_kernels.h). Each SIMD
+// kernel in the tile layout the render context gives it and in the other one (blocks at
+// 4×: sample_store), samples and resolves alike.
 TEST(msaa_simd_kernels_match_the_portable_kernel) {
     constexpr int W = 41, H = 33;
     const std::vector<detail::msaa_kernel> kernels = msaa_kernels();
@@ -580,7 +626,13 @@ TEST(msaa_simd_kernels_match_the_portable_kernel) {
             std::uniform_int_distribution<int> coord(-reach * grid, (40 + reach) * grid), near(-3 * grid, 3 * grid);
             std::uniform_real_distribution<float> unit(0.0f, 1.0f);
             detail::sample_store a, b;
-            for (detail::sample_store *st : {&a, &b}) st->resize(W, H, samples, 0.25f), st->start(0, H);
+            // (a in the layout its kernel is given, blocks for AVX-512 at 4×; other: the same
+            // kernel in the other layout, which every kernel takes too)
+            detail::sample_store other;
+            const bool blocks = detail::sample_store::blocks_for(kernels[kernel], samples);
+            a.resize(W, H, samples, 0.25f, blocks), a.start(0, H);
+            b.resize(W, H, samples, 0.25f), b.start(0, H);
+            other.resize(W, H, samples, 0.25f, !blocks), other.start(0, H);
             int narrow_boxes = 0, drawn = 0, chunked = 0;
             for (int t = 0; t < (small ? 600 : 60); ++t) {
                 std::int32_t X[3] = {coord(rng), coord(rng), coord(rng)}, Y[3] = {coord(rng), coord(rng), coord(rng)};
@@ -607,6 +659,7 @@ TEST(msaa_simd_kernels_match_the_portable_kernel) {
                 const depth_func test = t % 7 ? depth_func::less : tests[(t / 7) % 7];
                 const bool write = t % 5 != 4;
                 detail::fill_msaa_rows(a, f, pat, test, write, 0.25f, 0, H, kernels[kernel]);
+                detail::fill_msaa_rows(other, f, pat, test, write, 0.25f, 0, H, kernels[kernel]);
                 detail::fill_msaa_rows(b, f, pat, test, write, 0.25f, 0, H, kernels[0]);
             }
             CHECK(small ? narrow_boxes == drawn : narrow_boxes < drawn / 4);
@@ -614,15 +667,21 @@ TEST(msaa_simd_kernels_match_the_portable_kernel) {
             // Every sample as the stores hold it: in memory when its pixel is touched, else
             // implicitly depth 1 and the clear colour (the 4× block kernels also touch pixels of
             // their blocks without a covered sample, storing those values: sample_store).
-            auto held = [samples](detail::sample_store &st, int x, int y, int s) {
-                if (st.touched_row(y)[x]) return st.pixel(x, y)[s];
+            // Value s of a pixel's 2·samples: its depths, then its colours.
+            auto value = [samples](const detail::sample_store &st, int x, int y, int s) {
+                const float *p = st.pixel(x, y);
+                return s < samples ? p[s] : p[st.colour_offset() + s - samples];
+            };
+            auto held = [samples, &value](detail::sample_store &st, int x, int y, int s) {
+                if (st.touched_row(y)[x]) return value(st, x, y, s);
                 return s < samples ? 1.0f : 0.25f;
             };
             int differ = 0, touched = 0;
             for (int y = 0; y < H; ++y)
                 for (int x = 0; x < W; ++x) {
                     touched += b.touched_row(y)[x];
-                    for (int s = 0; s < 2 * samples; ++s) differ += held(a, x, y, s) != held(b, x, y, s);
+                    for (int s = 0; s < 2 * samples; ++s)
+                        differ += (held(a, x, y, s) != held(b, x, y, s)) + (held(other, x, y, s) != held(b, x, y, s));
                 }
             CHECK(touched > (clip.x1 - clip.x0) * (clip.y1 - clip.y0) / 2);
             CHECK_EQ(differ, 0);
@@ -641,27 +700,30 @@ TEST(msaa_simd_kernels_match_the_portable_kernel) {
                         continue;
                     }
                     mean[i] = 0;
-                    for (int s = 0; s < samples; ++s) mean[i] += px[samples + s] / samples;
+                    for (int s = 0; s < samples; ++s) mean[i] += value(a, x, y, samples + s) / samples;
                     nearest[i] = *std::min_element(px, px + samples);
                 }
             canvas_ptr fast = make_canvas(W, H).value(), plain = make_canvas(W, H).value();
-            zbuffer fast_z, plain_z;
-            CHECK(fast_z.resize(W, H).ok() && plain_z.resize(W, H).ok());
+            canvas_ptr in_other = make_canvas(W, H).value();
+            zbuffer fast_z, plain_z, other_z;
+            CHECK(fast_z.resize(W, H).ok() && plain_z.resize(W, H).ok() && other_z.resize(W, H).ok());
             a.resolve(*fast, fast_z, 0.25f, kernels[kernel]);
             b.resolve(*plain, plain_z, 0.25f, kernels[0]);
+            other.resolve(*in_other, other_z, 0.25f, kernels[kernel]);
             int resolve_differ = 0, not_at_rest = 0;
             double worst = 0;
             for (int y = 0; y < H; ++y)
                 for (int x = 0; x < W; ++x) {
                     resolve_differ += fast->pixels[y][x] != plain->pixels[y][x] || fast_z.at(x, y) != plain_z.at(x, y);
+                    resolve_differ += in_other->pixels[y][x] != plain->pixels[y][x] || other_z.at(x, y) != plain_z.at(x, y);
                     const std::size_t i = static_cast<std::size_t>(y * W + x);
                     worst = std::max(worst, std::fabs(mean[i] - fast->pixels[y][x]));
                     CHECK_EQ(fast_z.at(x, y), nearest[i]);
                     // At rest again (4 samples): every sample of every pixel (1, 0.25).
                     if (samples == 4)
-                        for (const detail::sample_store *st : {&a, &b})
+                        for (const detail::sample_store *st : {&a, &b, &other})
                             for (int s = 0; s < 2 * samples; ++s)
-                                not_at_rest += st->pixel(x, y)[s] != (s < samples ? 1.0f : 0.25f);
+                                not_at_rest += value(*st, x, y, s) != (s < samples ? 1.0f : 0.25f);
                 }
             CHECK_EQ(resolve_differ, 0);
             CHECK_EQ(not_at_rest, 0);
@@ -670,7 +732,8 @@ TEST(msaa_simd_kernels_match_the_portable_kernel) {
             // A tile no triangle touched (the SIMD resolves pass over runs of untouched pixels
             // without reading their samples): the clear values everywhere.
             detail::sample_store empty;
-            empty.resize(W, H, samples, 0.25f), empty.start(0, H);
+            empty.resize(W, H, samples, 0.25f, detail::sample_store::blocks_for(kernels[kernel], samples));
+            empty.start(0, H);
             empty.resolve(*fast, fast_z, 0.25f, kernels[kernel]);
             int not_clear = 0;
             for (int y = 0; y < H; ++y)

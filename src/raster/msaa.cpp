@@ -120,11 +120,12 @@ void fill_rows_portable(sample_store &store, const msaa_triangle &f, const sampl
                 touched[px] = 1;
             }
             const float zc = zr + f.zdx * static_cast<float>(x), shade = clamp01(ir + f.idx * static_cast<float>(x));
+            float *colours = p + store.colour_offset();
             for (int s = 0; s < S; ++s) {
                 const float z = zc + dz[s];
                 if (!((mask >> s) & 1) || !depth_passes(test, z, p[s])) continue;
                 if (depth_write) p[s] = z;
-                p[S + s] = shade;
+                colours[s] = shade;
             }
         }
     }
@@ -138,8 +139,11 @@ template <int S, depth_func Test>
 void fill_sse2(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test, bool depth_write,
                float clear_colour, int y0, int y1) {
     if (!clamp_to_rows(f, y0, y1)) return;
-    if (f.chunkable) fill_rows_sse2<S, Test>(store, f, pat, depth_write, clear_colour, y0, y1);
-    else fill_rows_portable(store, f, pat, test, depth_write, clear_colour, y0, y1);
+    if (!f.chunkable) return fill_rows_portable(store, f, pat, test, depth_write, clear_colour, y0, y1);
+    if constexpr (S == 4) {
+        if (store.blocks()) return fill_rows_sse2<4, Test, true>(store, f, pat, depth_write, clear_colour, y0, y1);
+    }
+    fill_rows_sse2<S, Test, false>(store, f, pat, depth_write, clear_colour, y0, y1);
 }
 
 // resolve() for S = 4, 8, 16, the sums in the portable loop's order (resolve_pixel).
@@ -237,27 +241,37 @@ const sample_pattern &pattern_of(int samples) {
     }
 }
 
-void sample_store::resize(int width, int rows, int samples, float clear_colour) {
+void sample_store::resize(int width, int rows, int samples, float clear_colour, bool blocks) {
     constexpr std::size_t ALIGN_FLOATS = 64 / sizeof(float);
+    blocks = blocks && samples == 4;
     const int stride = (width + STRIDE_PIXELS - 1) / STRIDE_PIXELS * STRIDE_PIXELS;
-    const std::size_t pixels = static_cast<std::size_t>(stride) * static_cast<std::size_t>(rows);
+    // (blocks: an odd last row paired with a row of padding)
+    const std::size_t pixels = static_cast<std::size_t>(stride) * static_cast<std::size_t>(rows + (blocks && rows % 2));
     const float *before = base_;
     if (data_.size() < pixels * 2 * samples + ALIGN_FLOATS) data_.resize(pixels * 2 * samples + ALIGN_FLOATS);
     if (touched_.size() < pixels) touched_.resize(pixels);
     const std::size_t misalign = reinterpret_cast<std::uintptr_t>(data_.data()) % 64 / sizeof(float);
     base_ = data_.data() + (misalign ? ALIGN_FLOATS - misalign : 0);
     const bool same = base_ == before && stride == stride_ && rows == rows_ && samples == samples_ &&
-                      std::memcmp(&clear_colour, &rest_colour_, sizeof clear_colour) == 0;
+                      blocks == blocks_ && std::memcmp(&clear_colour, &rest_colour_, sizeof clear_colour) == 0;
     stride_ = stride;
     width_ = width;
     rows_ = rows;
     samples_ = samples;
+    blocks_ = blocks;
     if (samples != 4) {
         at_rest_ = false;
         return;
     }
     if (at_rest_ && same) return;
-    for (std::size_t k = 0; k < pixels; ++k) initialise(base_ + k * 2 * samples, clear_colour);
+    if (blocks) {
+        for (std::size_t block = 0; block < pixels / 4; ++block) {
+            std::fill_n(base_ + block * 32, 16, 1.0f);
+            std::fill_n(base_ + block * 32 + 16, 16, clear_colour);
+        }
+    } else {
+        for (std::size_t k = 0; k < pixels; ++k) initialise(base_ + k * 2 * samples, clear_colour);
+    }
     rest_colour_ = clear_colour;
     at_rest_ = true;
 }
@@ -275,41 +289,43 @@ void sample_store::clear_rows(int y0, int y1) {
 
 void sample_store::initialise(float *pixel, float clear_colour) const {
     std::fill(pixel, pixel + samples_, 1.0f);
-    std::fill(pixel + samples_, pixel + 2 * samples_, clear_colour);
+    std::fill_n(pixel + colour_offset(), samples_, clear_colour);
 }
 
 void sample_store::resolve(canvas_t &canvas, zbuffer &depth, float clear_colour, [[maybe_unused]] msaa_kernel kernel) {
     const int S = samples_;
     const float inv = 1.0f / static_cast<float>(S);
+    int first_column = 0;  // (the columns before it resolved already)
+#ifdef TINY3D_AVX512
+    if (blocks_ && kernel == msaa_kernel::avx512) {  // a row of blocks at a time, eight columns per step
+        first_column = width_ / 8 * 8;
+        for (int y = origin_; y < end_; y += 2) {
+            const bool two = y + 1 < end_;
+            resolve_blocks4_avx512(pixel(0, y), touched_row(y), two ? touched_row(y + 1) : nullptr, first_column,
+                                   clear_colour, canvas.pixels[y], depth.row(y), two ? canvas.pixels[y + 1] : nullptr,
+                                   two ? depth.row(y + 1) : nullptr);
+        }
+    }
+#endif
     for (int y = origin_; y < end_; ++y) {
         const std::uint8_t *touched = touched_row(y);
         float *colour = canvas.pixels[y], *z = depth.row(y);
 #ifdef TINY3D_SSE2
-        switch (kernel == msaa_kernel::portable ? 0 : S) {
-            case 4: {
-                int x = 0;
-#ifdef TINY3D_AVX512
-                if (kernel == msaa_kernel::avx512) {
-                    x = width_ / 8 * 8;
-                    resolve_row4_avx512(pixel(0, y), touched, x, clear_colour, colour, z);
-                }
-#endif
-                resolve_row_sse2<4>(pixel(x, y), touched + x, width_ - x, clear_colour, colour + x, z + x);
-                continue;
-            }
+        switch (kernel == msaa_kernel::portable || blocks_ ? 0 : S) {
+            case 4: resolve_row_sse2<4>(pixel(0, y), touched, width_, clear_colour, colour, z); continue;
             case 8: resolve_row_sse2<8>(pixel(0, y), touched, width_, clear_colour, colour, z); continue;
             case 16: resolve_row_sse2<16>(pixel(0, y), touched, width_, clear_colour, colour, z); continue;
             default: break;
         }
 #endif
-        for (int x = 0; x < width_; ++x) {
+        for (int x = first_column; x < width_; ++x) {
             if (!touched[x]) {
                 colour[x] = clear_colour;
                 z[x] = 1.0f;
                 continue;
             }
             float *p = pixel(x, y);
-            colour[x] = resolve_sum(p + S, S) * inv;
+            colour[x] = resolve_sum(p + colour_offset(), S) * inv;
             z[x] = *std::min_element(p, p + S);
             if (at_rest_) initialise(p, rest_colour_);
         }

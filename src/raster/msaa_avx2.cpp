@@ -214,7 +214,8 @@ namespace {
 template <int S, depth_func Test>
 void fill_avx2(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test, bool depth_write,
                float clear_colour, int y0, int y1) {
-    if (!f.narrow) return msaa_fill_for(msaa_kernel::sse2, S, test)(store, f, pat, test, depth_write, clear_colour, y0, y1);
+    if (!f.narrow || store.blocks())  // (the pair kernel walks the rows layout)
+        return msaa_fill_for(msaa_kernel::sse2, S, test)(store, f, pat, test, depth_write, clear_colour, y0, y1);
     if (!clamp_to_rows(f, y0, y1)) return;
     if constexpr (S == 4) fill_rows_pairs<Test>(store, f, pat, depth_write, y0, y1);
     else fill_rows_pixels<S, Test>(store, f, pat, depth_write, clear_colour, y0, y1);

@@ -203,25 +203,13 @@ void fill_rows(sample_store &store, const msaa_triangle &f, const sample_pattern
 }
 
 // 4× on narrow triangles: a 2 × 2 block of pixels per step, its 16 samples in one register
-// (lane 4q + s: sample s of pixel q = 2r + j, column j and row r of the block). Blocks start
-// at even columns, so each of a block's two rows is one whole, aligned 64-byte line of the
-// store (sample_store::STRIDE_PIXELS): loaded and stored whole, so a later triangle's loads
-// of the same block are forwarded from this one's stores. The depths and colours are
-// gathered from the two lines into one register each, and scattered back, by two-source
-// permutes. For small triangles (Scene S's are ~13 px) a 2 × 2 block beats four pixels of
-// a row: 10 % fewer groups to visit and half as many row starts (documentation/
-// antialias.md, "How a multisampled frame is drawn").
-namespace block {
-
-// Lane 4q + s of the sample-planar registers from the two lines (row r's line holds pixel
-// j's depths at floats 8j..8j+3 and its colours at 8j+4..8j+7; index 16 and up: row 1).
-inline __m512i depth_lanes() { return _mm512_setr_epi32(0, 1, 2, 3, 8, 9, 10, 11, 16, 17, 18, 19, 24, 25, 26, 27); }
-inline __m512i colour_lanes() { return _mm512_setr_epi32(4, 5, 6, 7, 12, 13, 14, 15, 20, 21, 22, 23, 28, 29, 30, 31); }
-// Back to row r's line from (depths, colours = index 16 and up).
-inline __m512i row0_lanes() { return _mm512_setr_epi32(0, 1, 2, 3, 16, 17, 18, 19, 4, 5, 6, 7, 20, 21, 22, 23); }
-inline __m512i row1_lanes() { return _mm512_setr_epi32(8, 9, 10, 11, 24, 25, 26, 27, 12, 13, 14, 15, 28, 29, 30, 31); }
-
-}  // namespace block
+// (lane 4q + s: sample s of pixel q = 2r + j, column j and row r of the block) — the
+// 4-sample tile's own block (sample_store: columns paired from 0, rows from the tile's
+// origin), its 16 depths and 16 colours two aligned 64-byte lines, loaded and stored whole
+// as they are, so a later triangle's loads of the same block are forwarded from this one's
+// stores. For small triangles (Scene S's are ~13 px) a 2 × 2 block beats four pixels of a
+// row: 10 % fewer groups to visit and half as many row starts (documentation/antialias.md,
+// "How a multisampled frame is drawn").
 
 template <depth_func Test>
 void fill_rows_blocks(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, bool depth_write, int y0,
@@ -256,22 +244,29 @@ void fill_rows_blocks(sample_store &store, const msaa_triangle &f, const sample_
     const __m512 z0 = V::set(f.z), i0 = V::set(f.i);
     const __m512i two_columns = _mm512_set1_epi32(2);
     const __m512i last_column = _mm512_set1_epi32(f.max_x - f.min_x);
-    const __m512i to_depth = block::depth_lanes(), to_colour = block::colour_lanes();
-    const __m512i to_row0 = block::row0_lanes(), to_row1 = block::row1_lanes();
     const int odd = f.min_x & 1;  // the blocks start one column left of min_x
     const int stride = store.stride();  // (held here: the byte stores below may alias the store)
-    const std::size_t row_floats = static_cast<std::size_t>(stride) * 2 * S;
-    for (int y = y0; y < y1; y += 2) {
-        const bool two = y + 1 < y1;  // the block's second row is drawn (and in the tile)
+    // The tile's blocks pair rows from its origin: the first block may start a row above y0
+    // and the last end a row below y1 (a row of the tile or its padding). Their lanes are
+    // masked off, so their samples are stored back as they were; the touched marks go to
+    // both rows all the same (a branch on the rows drawn, or a read of the marks, took the
+    // layout's gain back): a pixel so marked holds its samples in memory, at rest or drawn,
+    // which is all a mark says.
+    constexpr std::uint16_t both_touched = 0x0101;
+    const __mmask16 writes = depth_write ? 0xFFFF : 0;
+    for (int y = y0 - ((y0 - store.origin()) & 1); y < y1; y += 2) {
+        const bool upper = y >= y0, lower = y + 1 < y1;  // the block's rows drawn
+        const __mmask16 rows_drawn = static_cast<__mmask16>((upper ? 0x00FF : 0) | (lower ? 0xFF00 : 0));
         const int dy = y - f.min_y;
         std::int32_t e[3];
         int lo = 0, hi = columns - 1;
         if (scan) {
             for (int k = 0; k < 3; ++k) e[k] = static_cast<std::int32_t>(f.e[k] + f.b[k] * dy);
         } else {
+            // (row sets e whatever it returns; narrow: within a row of the box, e fits 32 bits)
             std::int32_t e1[3];
             int lo1, hi1;
-            const bool row0 = off.row(f, y, e, lo, hi), row1 = two && off.row(f, y + 1, e1, lo1, hi1);
+            const bool row0 = off.row(f, y, e, lo, hi) && upper, row1 = lower && off.row(f, y + 1, e1, lo1, hi1);
             if (!row0 && !row1) continue;
             if (!row0) lo = lo1, hi = hi1;
             else if (row1) lo = std::min(lo, lo1), hi = std::max(hi, hi1);
@@ -286,11 +281,10 @@ void fill_rows_blocks(sample_store &store, const msaa_triangle &f, const sample_
         const __m512 z_row = V::add(z0, V::mul(zdy, rows)), i_row = V::add(i0, V::mul(idy, rows));
         std::uint8_t *touched = store.touched_row(y) + f.min_x + first;
         float *p = store.pixel(f.min_x + first, y);
-        for (int x = first; x <= hi; x += 2, p += 2 * 2 * S, touched += 2, column = _mm512_add_epi32(column, two_columns)) {
-            // In: every edge value ≥ 0, and the pixel inside the (clipped) box. (A second row
-            // outside [y0, y1) is neither read nor written.)
+        for (int x = first; x <= hi; x += 2, p += 32, touched += 2, column = _mm512_add_epi32(column, two_columns)) {
+            // In: every edge value ≥ 0, and the pixel inside the (clipped) box and its rows.
             const __mmask16 in = _mm512_mask_testn_epi32_mask(
-                _mm512_cmple_epu32_mask(column, last_column),
+                _mm512_mask_cmple_epu32_mask(rows_drawn, column, last_column),
                 _mm512_ternarylogic_epi32(b0, b1, b2, 0xFE), _mm512_set1_epi32(INT32_MIN));
             b0 = V::add(b0, step0), b1 = V::add(b1, step1), b2 = V::add(b2, step2);
             // No early exit for a block without a covered sample: it is loaded and stored back
@@ -302,22 +296,16 @@ void fill_rows_blocks(sample_store &store, const msaa_triangle &f, const sample_
             // The 4-sample tile is at rest between bands (sample_store): an untouched pixel's
             // samples hold depth 1 and the clear colour in memory too, so the lines are used as
             // loaded, touched or not (no test of the touched bytes: Scene S level 6 4× −5.7 %,
-            // frames identical). The block's lines are stored whole, so afterwards every pixel
-            // of the block holds its samples in memory, covered or not: the touched bytes
-            // become 1 without a test of the coverage (−5 %).
-            constexpr std::uint16_t both_touched = 0x0101;
-            const __m512 line0 = _mm512_load_ps(p), line1 = two ? _mm512_load_ps(p + row_floats) : ones;
-            const __m512 stored = _mm512_permutex2var_ps(line0, to_depth, line1);
-            const __m512 colours = _mm512_permutex2var_ps(line0, to_colour, line1);
+            // frames identical). The block is stored whole, so afterwards every pixel of it
+            // holds its samples in memory, covered or not: the touched bytes become 1 without
+            // a test of the coverage (−5 %). The depth write is a mask, not a branch (with the
+            // branch GCC moved the pass mask through a general register: +4 %).
+            const __m512 stored = _mm512_load_ps(p), colours = _mm512_load_ps(p + sample_store::colour_offset(S, true));
             const __mmask16 pass = passing<16, Test>(in, z, stored);
-            const __m512 depths = depth_write ? _mm512_mask_blend_ps(pass, stored, z) : stored;
-            const __m512 shades = _mm512_mask_blend_ps(pass, colours, shade);
-            _mm512_store_ps(p, _mm512_permutex2var_ps(depths, to_row0, shades));
+            _mm512_store_ps(p, _mm512_mask_blend_ps(_kand_mask16(pass, writes), stored, z));
+            _mm512_store_ps(p + sample_store::colour_offset(S, true), _mm512_mask_blend_ps(pass, colours, shade));
             std::memcpy(touched, &both_touched, sizeof both_touched);
-            if (two) {
-                _mm512_store_ps(p + row_floats, _mm512_permutex2var_ps(depths, to_row1, shades));
-                std::memcpy(touched + stride, &both_touched, sizeof both_touched);
-            }
+            std::memcpy(touched + stride, &both_touched, sizeof both_touched);
         }
     }
 }
@@ -333,8 +321,9 @@ void fill_avx512(sample_store &store, const msaa_triangle &f, const sample_patte
         return msaa_fill_for(msaa_kernel::portable, S, test)(store, f, pat, test, depth_write, clear_colour, y0, y1);
     if (!clamp_to_rows(f, y0, y1)) return;
     if constexpr (S == 4) {
-        if (f.narrow) fill_rows_blocks<Test>(store, f, pat, depth_write, y0, y1);
-        else fill_rows_sse2<4, Test>(store, f, pat, depth_write, clear_colour, y0, y1);
+        if (!store.blocks()) fill_rows_sse2<4, Test, false>(store, f, pat, depth_write, clear_colour, y0, y1);
+        else if (f.narrow) fill_rows_blocks<Test>(store, f, pat, depth_write, y0, y1);
+        else fill_rows_sse2<4, Test, true>(store, f, pat, depth_write, clear_colour, y0, y1);
     } else {
         fill_rows<S, Test>(store, f, pat, depth_write, clear_colour, y0, y1);
     }
@@ -346,45 +335,44 @@ msaa_row_fill fill_function_avx512(int samples, depth_func test) {
     return fill_function(samples, test, [](auto s, auto t) -> msaa_row_fill { return &fill_avx512<s.value, t.value>; });
 }
 
-// Eight pixels (four lines of two) at a time. Per 128-bit lane a line holds one quad of four
-// samples: pixel A's depths, A's colours, B's depths, B's colours. The SSE2 resolve's
-// transpose (unpacks, then the low and high halves) runs on all four quads of two pairs of
-// lines at once, with the sums and minima both taken; the colours are then the sums of
-// quads 1 and 3 and the depths the minima of quads 0 and 2 (pixels 0, 2, 4, 6 and 1, 3, 5,
-// 7), put in pixel order by one permute. An untouched pixel's samples hold (1, clear) at
-// rest, whose sum is exactly 4·clear and minimum 1: no select.
-void resolve_row4_avx512(float *p, const std::uint8_t *touched, int pixels, float clear_colour, float *colour,
-                         float *z) {
-    const __m512 rest = _mm512_setr_ps(1, 1, 1, 1, clear_colour, clear_colour, clear_colour, clear_colour, 1, 1, 1, 1,
-                                       clear_colour, clear_colour, clear_colour, clear_colour);
-    const __m256 quarter = _mm256_set1_ps(0.25f), clear = _mm256_set1_ps(clear_colour), far = _mm256_set1_ps(1.0f);
-    // Lane j of the result: pixel j from quad 0 or 1 (even j) or quad 2 or 3 (odd j).
-    const __m512i depth_order = _mm512_setr_epi32(0, 8, 1, 9, 2, 10, 3, 11, 0, 0, 0, 0, 0, 0, 0, 0);
-    const __m512i colour_order = _mm512_setr_epi32(4, 12, 5, 13, 6, 14, 7, 15, 0, 0, 0, 0, 0, 0, 0, 0);
-    for (int x = 0; x < pixels; x += 8, p += 8 * 8) {
-        std::uint64_t t8;
-        std::memcpy(&t8, touched + x, sizeof t8);
-        if (t8 == 0) {
-            _mm256_storeu_ps(colour + x, clear), _mm256_storeu_ps(z + x, far);
+// Eight columns of a row of blocks (four blocks: sixteen pixels of two rows) at a time.
+// Per 128-bit lane q a block's register holds pixel q's four samples. The SSE2 resolve's
+// transpose (unpacks, then the low and high halves) runs on all four lanes of two pairs
+// of blocks at once, the colour sums and depth minima both, leaving in lane q pixel q of
+// blocks 0..3; one permute puts them in column order, row 0 in the low half and row 1 in
+// the high half. An untouched pixel's samples hold (1, clear) at rest, whose sum is
+// exactly 4·clear and minimum 1: no select.
+void resolve_blocks4_avx512(float *p, const std::uint8_t *touched0, const std::uint8_t *touched1, int pixels,
+                            float clear_colour, float *colour0, float *z0, float *colour1, float *z1) {
+    const __m512 far = _mm512_set1_ps(1.0f), clear = _mm512_set1_ps(clear_colour), quarter = _mm512_set1_ps(0.25f);
+    // Lane i < 8: column i of row 0 (block i/2, pixel i%2: lane 4·(i%2) + i/2); lanes 8..15 row 1.
+    const __m512i column_order = _mm512_setr_epi32(0, 4, 1, 5, 2, 6, 3, 7, 8, 12, 9, 13, 10, 14, 11, 15);
+    for (int x = 0; x < pixels; x += 8, p += 4 * 32) {
+        std::uint64_t t0, t1 = 0;
+        std::memcpy(&t0, touched0 + x, sizeof t0);
+        if (touched1) std::memcpy(&t1, touched1 + x, sizeof t1);
+        if ((t0 | t1) == 0) {
+            _mm256_storeu_ps(colour0 + x, _mm512_castps512_ps256(clear)), _mm256_storeu_ps(z0 + x, _mm512_castps512_ps256(far));
+            if (colour1) _mm256_storeu_ps(colour1 + x, _mm512_castps512_ps256(clear)), _mm256_storeu_ps(z1 + x, _mm512_castps512_ps256(far));
             continue;
         }
-        const __m512 l0 = _mm512_load_ps(p), l1 = _mm512_load_ps(p + 16);
-        const __m512 l2 = _mm512_load_ps(p + 32), l3 = _mm512_load_ps(p + 48);
-        // Per quad: (s0, s0', s1, s1') and (s2, s2', s3, s3') of lines 0 and 1 (2 and 3).
-        const __m512 lo01 = _mm512_unpacklo_ps(l0, l1), hi01 = _mm512_unpackhi_ps(l0, l1);
-        const __m512 lo23 = _mm512_unpacklo_ps(l2, l3), hi23 = _mm512_unpackhi_ps(l2, l3);
-        const __m512 sum01 = _mm512_add_ps(lo01, hi01), sum23 = _mm512_add_ps(lo23, hi23);
-        const __m512 min01 = _mm512_min_ps(lo01, hi01), min23 = _mm512_min_ps(lo23, hi23);
-        // Per quad, the four lines' pixels: (s0 + s2) + (s1 + s3), min(min(s0, s2), min(s1, s3)).
-        const __m512 sums = _mm512_add_ps(_mm512_shuffle_ps(sum01, sum23, _MM_SHUFFLE(1, 0, 1, 0)),
-                                          _mm512_shuffle_ps(sum01, sum23, _MM_SHUFFLE(3, 2, 3, 2)));
-        const __m512 mins = _mm512_min_ps(_mm512_shuffle_ps(min01, min23, _MM_SHUFFLE(1, 0, 1, 0)),
-                                          _mm512_shuffle_ps(min01, min23, _MM_SHUFFLE(3, 2, 3, 2)));
-        _mm256_storeu_ps(colour + x,
-                         _mm256_mul_ps(_mm512_castps512_ps256(_mm512_permutexvar_ps(colour_order, sums)), quarter));
-        _mm256_storeu_ps(z + x, _mm512_castps512_ps256(_mm512_permutexvar_ps(depth_order, mins)));
-        _mm512_store_ps(p, rest), _mm512_store_ps(p + 16, rest);
-        _mm512_store_ps(p + 32, rest), _mm512_store_ps(p + 48, rest);
+        // (s0 + s2) + (s1 + s3) (op = add) or the minimum in the same order (op = min) of
+        // every pixel, from the four blocks' registers at `offset` (depths 0, colours 16).
+        auto reduce = [p](int offset, auto op) {
+            const __m512 b0 = _mm512_load_ps(p + offset), b1 = _mm512_load_ps(p + 32 + offset);
+            const __m512 b2 = _mm512_load_ps(p + 64 + offset), b3 = _mm512_load_ps(p + 96 + offset);
+            // Per lane: (s0 + s2, s0' + s2', s1 + s3, s1' + s3') of blocks 0 and 1 (2 and 3).
+            const __m512 v01 = op(_mm512_unpacklo_ps(b0, b1), _mm512_unpackhi_ps(b0, b1));
+            const __m512 v23 = op(_mm512_unpacklo_ps(b2, b3), _mm512_unpackhi_ps(b2, b3));
+            return op(_mm512_shuffle_ps(v01, v23, _MM_SHUFFLE(1, 0, 1, 0)), _mm512_shuffle_ps(v01, v23, _MM_SHUFFLE(3, 2, 3, 2)));
+        };
+        const __m512 colours = _mm512_mul_ps(
+            _mm512_permutexvar_ps(column_order, reduce(16, [](__m512 u, __m512 v) { return _mm512_add_ps(u, v); })), quarter);
+        const __m512 depths =
+            _mm512_permutexvar_ps(column_order, reduce(0, [](__m512 u, __m512 v) { return _mm512_min_ps(u, v); }));
+        _mm256_storeu_ps(colour0 + x, _mm512_castps512_ps256(colours)), _mm256_storeu_ps(z0 + x, _mm512_castps512_ps256(depths));
+        if (colour1) _mm256_storeu_ps(colour1 + x, _mm512_extractf32x8_ps(colours, 1)), _mm256_storeu_ps(z1 + x, _mm512_extractf32x8_ps(depths, 1));
+        for (int k = 0; k < 4; ++k) _mm512_store_ps(p + 32 * k, far), _mm512_store_ps(p + 32 * k + 16, clear);
     }
 }
 

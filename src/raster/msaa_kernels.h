@@ -105,13 +105,15 @@ msaa_row_fill fill_function_avx2(int samples, depth_func test);
 // chunkable, the portable one otherwise. The same integer tests and float operations as the
 // portable kernel.
 msaa_row_fill fill_function_avx512(int samples, depth_func test);
-// The 4-sample resolve of one tile row's first `pixels` pixels (a multiple of 8), p at its
-// first pixel, the tile at rest (sample_store): colour := ((s0 + s2) + (s1 + s3)) · 1/4,
-// z := min(min(s0, s2), min(s1, s3)) — the SSE2 resolve's operations in its order, so the
-// same bits — and every pixel read put back at rest. Eight untouched pixels get the clear
-// values without reading their samples.
-void resolve_row4_avx512(float *p, const std::uint8_t *touched, int pixels, float clear_colour, float *colour,
-                         float *z);
+// The 4-sample resolve of one row of blocks' first `pixels` columns (a multiple of 8): p at
+// its first block, the tile at rest (sample_store), its two rows' touched bytes, canvas
+// colours and depths (row 1's all null when the block row's second row is padding):
+// colour := ((s0 + s2) + (s1 + s3)) · 1/4, z := min(min(s0, s2), min(s1, s3)) — the SSE2
+// resolve's operations in its order, so the same bits — and every block read put back at
+// rest. Eight columns whose pixels are all untouched get the clear values without reading
+// their samples.
+void resolve_blocks4_avx512(float *p, const std::uint8_t *touched0, const std::uint8_t *touched1, int pixels,
+                            float clear_colour, float *colour0, float *z0, float *colour1, float *z1);
 #endif
 
 }  // namespace tiny3d::detail

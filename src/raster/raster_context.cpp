@@ -533,7 +533,8 @@ status render_context::begin_frame(canvas_t &target, float clear_intensity, samp
     s.bands.plan(target.height, s.pool.size(), band_rows(count));
     if (count > 1) {
         const int tile_rows = (target.height + s.bands.count - 1) / s.bands.count;
-        for (int t = 0; t < s.pool.size(); ++t) s.tiles[t].resize(target.width, tile_rows, count, s.clear_intensity);
+        const bool blocks = detail::sample_store::blocks_for(s.kernel, count);
+        for (int t = 0; t < s.pool.size(); ++t) s.tiles[t].resize(target.width, tile_rows, count, s.clear_intensity, blocks);
     }
     s.guard = std::clamp(GUARD_SPAN_PIXELS / static_cast<float>(std::max(target.width, target.height)), 1.0f, MAX_GUARD);
     return {};

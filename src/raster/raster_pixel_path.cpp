@@ -128,7 +128,7 @@ void draw_generic_samples(sample_store &tile, const sample_pattern &pat, float c
             const float z = zc + dz[k];
             if (!((mask >> k) & 1) || !depth_passes(p.depth, z, px[k])) continue;
             if (!shaded) shade = shade_at(l0, l1, l2), shaded = true;  // once per pixel
-            write_fragment(p, px[S + k], px[k], z, shade);
+            write_fragment(p, px[tile.colour_offset() + k], px[k], z, shade);
         }
     });
 }
