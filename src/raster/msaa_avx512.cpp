@@ -254,28 +254,41 @@ void fill_rows_blocks(sample_store &store, const msaa_triangle &f, const sample_
     // which is all a mark says.
     constexpr std::uint16_t both_touched = 0x0101;
     const __mmask16 writes = depth_write ? 0xFFFF : 0;
-    for (int y = y0 - ((y0 - store.origin()) & 1); y < y1; y += 2) {
+    // The edge values at a row pair's first block (column `first` relative to min_x): 32
+    // bits, wrapping as the 64-bit values' truncation does.
+    auto start = [&](const std::int32_t e[3], int first, __m512i &b0, __m512i &b1, __m512i &b2) {
+        b0 = V::add(V::set_int(e[0] + static_cast<std::int32_t>(f.a[0]) * first), d[0]);
+        b1 = V::add(V::set_int(e[1] + static_cast<std::int32_t>(f.a[1]) * first), d[1]);
+        b2 = V::add(V::set_int(e[2] + static_cast<std::int32_t>(f.a[2]) * first), d[2]);
+    };
+    const int top = y0 - ((y0 - store.origin()) & 1);
+    __m512i scan_b0, scan_b1, scan_b2;
+    const __m512i down0 = V::set_int(2 * f.b[0]), down1 = V::set_int(2 * f.b[1]), down2 = V::set_int(2 * f.b[2]);
+    if (scan) {
+        std::int32_t e[3];
+        for (int k = 0; k < 3; ++k) e[k] = static_cast<std::int32_t>(f.e[k] + f.b[k] * (top - f.min_y));
+        start(e, -odd, scan_b0, scan_b1, scan_b2);
+    }
+    for (int y = top; y < y1; y += 2) {
         const bool upper = y >= y0, lower = y + 1 < y1;  // the block's rows drawn
         const __mmask16 rows_drawn = static_cast<__mmask16>((upper ? 0x00FF : 0) | (lower ? 0xFF00 : 0));
         const int dy = y - f.min_y;
-        std::int32_t e[3];
         int lo = 0, hi = columns - 1;
-        if (scan) {
-            for (int k = 0; k < 3; ++k) e[k] = static_cast<std::int32_t>(f.e[k] + f.b[k] * dy);
+        __m512i b0, b1, b2;
+        if (scan) {  // every row pair from the same first block: the last pair's values + 2·b (−2 %)
+            b0 = scan_b0, b1 = scan_b1, b2 = scan_b2;
+            scan_b0 = V::add(scan_b0, down0), scan_b1 = V::add(scan_b1, down1), scan_b2 = V::add(scan_b2, down2);
         } else {
             // (row sets e whatever it returns; narrow: within a row of the box, e fits 32 bits)
-            std::int32_t e1[3];
+            std::int32_t e[3], e1[3];
             int lo1, hi1;
             const bool row0 = off.row(f, y, e, lo, hi) && upper, row1 = lower && off.row(f, y + 1, e1, lo1, hi1);
             if (!row0 && !row1) continue;
             if (!row0) lo = lo1, hi = hi1;
             else if (row1) lo = std::min(lo, lo1), hi = std::max(hi, hi1);
+            start(e, lo - ((lo + odd) & 1), b0, b1, b2);
         }
         const int first = lo - ((lo + odd) & 1);  // relative to min_x, at an even canvas column
-        const std::int32_t first32 = first;
-        __m512i b0 = V::add(V::set_int(e[0] + static_cast<std::int32_t>(f.a[0]) * first32), d[0]);
-        __m512i b1 = V::add(V::set_int(e[1] + static_cast<std::int32_t>(f.a[1]) * first32), d[1]);
-        __m512i b2 = V::add(V::set_int(e[2] + static_cast<std::int32_t>(f.a[2]) * first32), d[2]);
         __m512i column = _mm512_add_epi32(_mm512_set1_epi32(first), lane_column);
         const __m512 rows = _mm512_cvtepi32_ps(_mm512_add_epi32(_mm512_set1_epi32(dy), lane_row));  // exactly
         const __m512 z_row = V::add(z0, V::mul(zdy, rows)), i_row = V::add(i0, V::mul(idy, rows));
