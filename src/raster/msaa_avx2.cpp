@@ -207,10 +207,6 @@ void fill_rows_pixels(sample_store &store, const msaa_triangle &f, const sample_
     }
 }
 
-}  // namespace
-
-namespace {
-
 template <int S, depth_func Test>
 void fill_avx2(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test, bool depth_write,
                float clear_colour, int y0, int y1) {

@@ -323,10 +323,6 @@ void fill_rows_blocks(sample_store &store, const msaa_triangle &f, const sample_
     }
 }
 
-}  // namespace
-
-namespace {
-
 template <int S, depth_func Test>
 void fill_avx512(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
                  bool depth_write, float clear_colour, int y0, int y1) {
@@ -361,12 +357,19 @@ void resolve_blocks4_avx512(float *p, const std::uint8_t *touched0, const std::u
     // Lane i < 8: column i of row 0 (block i/2, pixel i%2: lane 4·(i%2) + i/2); lanes 8..15 row 1.
     const __m512i column_order = _mm512_setr_epi32(0, 4, 1, 5, 2, 6, 3, 7, 8, 12, 9, 13, 10, 14, 11, 15);
     for (int x = 0; x < pixels; x += 8, p += 4 * 32) {
+        // Row 0's eight pixels from the low halves, row 1's (if any) from the high halves.
+        auto put = [&](__m512 colours, __m512 depths) {
+            _mm256_storeu_ps(colour0 + x, _mm512_castps512_ps256(colours));
+            _mm256_storeu_ps(z0 + x, _mm512_castps512_ps256(depths));
+            if (!colour1) return;
+            _mm256_storeu_ps(colour1 + x, _mm512_extractf32x8_ps(colours, 1));
+            _mm256_storeu_ps(z1 + x, _mm512_extractf32x8_ps(depths, 1));
+        };
         std::uint64_t t0, t1 = 0;
         std::memcpy(&t0, touched0 + x, sizeof t0);
         if (touched1) std::memcpy(&t1, touched1 + x, sizeof t1);
         if ((t0 | t1) == 0) {
-            _mm256_storeu_ps(colour0 + x, _mm512_castps512_ps256(clear)), _mm256_storeu_ps(z0 + x, _mm512_castps512_ps256(far));
-            if (colour1) _mm256_storeu_ps(colour1 + x, _mm512_castps512_ps256(clear)), _mm256_storeu_ps(z1 + x, _mm512_castps512_ps256(far));
+            put(clear, far);
             continue;
         }
         // (s0 + s2) + (s1 + s3) (op = add) or the minimum in the same order (op = min) of
@@ -377,14 +380,14 @@ void resolve_blocks4_avx512(float *p, const std::uint8_t *touched0, const std::u
             // Per lane: (s0 + s2, s0' + s2', s1 + s3, s1' + s3') of blocks 0 and 1 (2 and 3).
             const __m512 v01 = op(_mm512_unpacklo_ps(b0, b1), _mm512_unpackhi_ps(b0, b1));
             const __m512 v23 = op(_mm512_unpacklo_ps(b2, b3), _mm512_unpackhi_ps(b2, b3));
-            return op(_mm512_shuffle_ps(v01, v23, _MM_SHUFFLE(1, 0, 1, 0)), _mm512_shuffle_ps(v01, v23, _MM_SHUFFLE(3, 2, 3, 2)));
+            return op(_mm512_shuffle_ps(v01, v23, _MM_SHUFFLE(1, 0, 1, 0)),
+                      _mm512_shuffle_ps(v01, v23, _MM_SHUFFLE(3, 2, 3, 2)));
         };
         const __m512 colours = _mm512_mul_ps(
             _mm512_permutexvar_ps(column_order, reduce(16, [](__m512 u, __m512 v) { return _mm512_add_ps(u, v); })), quarter);
         const __m512 depths =
             _mm512_permutexvar_ps(column_order, reduce(0, [](__m512 u, __m512 v) { return _mm512_min_ps(u, v); }));
-        _mm256_storeu_ps(colour0 + x, _mm512_castps512_ps256(colours)), _mm256_storeu_ps(z0 + x, _mm512_castps512_ps256(depths));
-        if (colour1) _mm256_storeu_ps(colour1 + x, _mm512_extractf32x8_ps(colours, 1)), _mm256_storeu_ps(z1 + x, _mm512_extractf32x8_ps(depths, 1));
+        put(colours, depths);
         for (int k = 0; k < 4; ++k) _mm512_store_ps(p + 32 * k, far), _mm512_store_ps(p + 32 * k + 16, clear);
     }
 }

@@ -26,8 +26,10 @@ void render_context::impl::draw_multisampled_band(int band, sample_store &tile) 
     const int y0 = bands.y0(band), y1 = bands.y0(band + 1);
     if (y0 >= y1) return;
     tile.start(y0, y1);
-    msaa_row_fill fill_for[8];  // by depth_func (raster.h: never … always)
-    for (int test = 0; test < 8; ++test) fill_for[test] = msaa_fill_for(kernel, pattern->count, static_cast<depth_func>(test));
+    constexpr int DEPTH_TESTS = static_cast<int>(depth_func::always) + 1;  // (raster.h: never … always)
+    msaa_row_fill fill_for[DEPTH_TESTS];
+    for (int test = 0; test < DEPTH_TESTS; ++test)
+        fill_for[test] = msaa_fill_for(kernel, pattern->count, static_cast<depth_func>(test));
     constexpr int TRIANGLES_AHEAD = 6;
     struct cursor {  // an entry of the band's bins, in drawing order
         int number = 0;
