@@ -633,7 +633,7 @@ TEST(msaa_simd_kernels_match_the_portable_kernel) {
             a.resize(W, H, samples, 0.25f, blocks), a.start(0, H);
             b.resize(W, H, samples, 0.25f), b.start(0, H);
             other.resize(W, H, samples, 0.25f, !blocks), other.start(0, H);
-            int narrow_boxes = 0, drawn = 0, chunked = 0;
+            int narrow_boxes = 0, drawn = 0, chunked = 0, clipped = 0;
             for (int t = 0; t < (small ? 600 : 60); ++t) {
                 std::int32_t X[3] = {coord(rng), coord(rng), coord(rng)}, Y[3] = {coord(rng), coord(rng), coord(rng)};
                 if (small)
@@ -649,6 +649,7 @@ TEST(msaa_simd_kernels_match_the_portable_kernel) {
                 CHECK(f.chunkable);
                 CHECK(wide || f.narrow);
                 chunked += !f.narrow;
+                clipped += f.clipped_x;
                 ++drawn;
                 narrow_boxes += f.max_x - f.min_x < 8;
                 // Mostly `less` with depth writes; every seventh triangle another test, some
@@ -663,6 +664,9 @@ TEST(msaa_simd_kernels_match_the_portable_kernel) {
                 detail::fill_msaa_rows(b, f, pat, test, write, 0.25f, 0, H, kernels[0]);
             }
             CHECK(small ? narrow_boxes == drawn : narrow_boxes < drawn / 4);
+            // (small: boxes cut by the clip and boxes not, which the 4× block kernel walks without
+            // masking the column past them)
+            if (small) CHECK(clipped > 0 && clipped < drawn);
             CHECK(wide ? chunked > drawn / 2 : chunked == 0);
             // Every sample as the stores hold it: in memory when its pixel is touched, else
             // implicitly depth 1 and the clear colour (the 4× block kernels also touch pixels of

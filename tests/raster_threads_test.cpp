@@ -356,7 +356,7 @@ TEST(batched_multisample_setup_gives_the_scalar_setup_bit_for_bit) {
     if (!detail::fill_kernel_runs(kernel) || !detail::batched_setup(kernel)) continue;
     std::mt19937 rng(20261204);
     const pixel_rect clip{3, 5, 250, 200};
-    int ready = 0, empty = 0, scalar = 0;
+    int ready = 0, empty = 0, scalar = 0, clipped = 0;
     for (const int samples : {4, 8}) {
         const detail::sample_pattern &pat = detail::pattern_of(samples);
         for (int round = 0; round < 3000; ++round) {
@@ -390,13 +390,15 @@ TEST(batched_multisample_setup_gives_the_scalar_setup_bit_for_bit) {
                 const float planes_b[6] = {b.z, b.zdx, b.zdy, b.i, b.idx, b.idy};
                 const float planes_one[6] = {one.z, one.zdx, one.zdy, one.i, one.idx, one.idy};
                 CHECK(std::memcmp(planes_b, planes_one, sizeof planes_b) == 0);
-                CHECK(b.narrow == one.narrow && b.chunkable == one.chunkable);
+                CHECK(b.narrow == one.narrow && b.chunkable == one.chunkable && b.clipped_x == one.clipped_x);
+                clipped += one.clipped_x;
             }
         }
     }
     CHECK(ready > 2000);
     CHECK(empty > 1000);
     CHECK(scalar > 100);
+    CHECK(clipped > 100 && clipped < ready);
   }
 #endif
 }

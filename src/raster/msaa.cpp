@@ -40,12 +40,15 @@ sample_pattern make_pattern(std::initializer_list<std::pair<int, int>> offsets, 
 }
 
 // Pixels p (one axis) whose centre 2^bits·p + 2^bits/2 plus an offset in [lo_off, hi_off]
-// meets [lo, hi] (sub-pixel units, 2^bits per px; >> is floor division, defined in C++20).
-inline void axis_bounds(std::int64_t lo, std::int64_t hi, int lo_off, int hi_off, int bits, int clip0, int clip1,
+// meets [lo, hi] (sub-pixel units, 2^bits per px; >> is floor division, defined in C++20),
+// clamped to [clip0, clip1). True when the clamp cut that range.
+inline bool axis_bounds(std::int64_t lo, std::int64_t hi, int lo_off, int hi_off, int bits, int clip0, int clip1,
                         int &first, int &last) {
     const std::int64_t half = std::int64_t{1} << (bits - 1);
-    first = static_cast<int>(std::max<std::int64_t>(-((half + hi_off - lo) >> bits), clip0));
-    last = static_cast<int>(std::min<std::int64_t>((hi - half - lo_off) >> bits, clip1 - 1));
+    const std::int64_t from = -((half + hi_off - lo) >> bits), to = (hi - half - lo_off) >> bits;
+    first = static_cast<int>(std::max<std::int64_t>(from, clip0));
+    last = static_cast<int>(std::min<std::int64_t>(to, clip1 - 1));
+    return from < clip0 || to >= clip1;
 }
 
 // The snapped vertex box (sub-pixel units).
@@ -58,11 +61,12 @@ struct snapped_box {
 };
 
 // The pixels [x0, x1] × [y0, y1] with a sample of the pattern inside the box, clamped to clip
-// (bits = pat.bits; a constant where the caller has one).
-inline void pattern_bounds(const snapped_box &b, const sample_pattern &pat, int bits, pixel_rect clip, int &x0, int &x1,
+// (bits = pat.bits; a constant where the caller has one). True when the clamp cut the
+// columns.
+inline bool pattern_bounds(const snapped_box &b, const sample_pattern &pat, int bits, pixel_rect clip, int &x0, int &x1,
                            int &y0, int &y1) {
-    axis_bounds(b.min_X, b.max_X, pat.min_dx, pat.max_dx, bits, clip.x0, clip.x1, x0, x1);
     axis_bounds(b.min_Y, b.max_Y, pat.min_dy, pat.max_dy, bits, clip.y0, clip.y1, y0, y1);
+    return axis_bounds(b.min_X, b.max_X, pat.min_dx, pat.max_dx, bits, clip.x0, clip.x1, x0, x1);
 }
 
 // The offsets d[k][s] themselves (the portable kernel).
@@ -352,7 +356,7 @@ bool make_msaa_triangle_on(const std::int32_t X[3], const std::int32_t Y[3], std
                            msaa_triangle &out) {
     constexpr std::int64_t one = std::int64_t{1} << Bits;
     const snapped_box box = snapped_box::of(X, Y);
-    pattern_bounds(box, pat, Bits, clip, out.min_x, out.max_x, out.min_y, out.max_y);
+    out.clipped_x = pattern_bounds(box, pat, Bits, clip, out.min_x, out.max_x, out.min_y, out.max_y);
     if (out.min_x > out.max_x || out.min_y > out.max_y) return false;
     // triangle_setup_snapped's edges (oriented by s, top-left bias) at the centre (cx, cy) of
     // pixel (min_x, min_y).

@@ -156,11 +156,14 @@ private:
 // SIMD kernels can walk a row in chunks of columns whose values fit 32 bits (a value beyond
 // ±2^30 at a chunk's start keeps its sign over the chunk and is clamped: msaa_kernels.h);
 // narrow implies chunkable. The portable kernel takes any triangle.
+// clipped_x: the clip rectangle cut the bounds' columns, so a pixel left or right of them may
+// have a sample inside the triangle; otherwise none has (the AVX-512 4× kernel then walks
+// 2 × 2 blocks reaching a column past the bounds without masking that column off).
 struct msaa_triangle {
     int min_x, max_x, min_y, max_y;
     std::int64_t e[3], a[3], b[3];
     float z, zdx, zdy, i, idx, idy;
-    bool narrow, chunkable;
+    bool narrow, chunkable, clipped_x;
     std::uint32_t state;  // the render context's draw state (set by the caller)
 };
 
@@ -201,7 +204,7 @@ inline void finish_msaa_batch(const batch_lanes &lanes, int count, const std::in
             msaa_triangle &f = out[l];
             lanes.unpack(l, f);
             for (int k = 0; k < 3; ++k) f.e[k] = e[k][l], f.a[k] = a[k][l], f.b[k] = b[k][l];
-            f.narrow = true, f.chunkable = true;
+            f.narrow = true, f.chunkable = true, f.clipped_x = (lanes.clipped_x & bit) != 0;
         }
     }
 }

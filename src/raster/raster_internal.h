@@ -238,6 +238,7 @@ struct batch_lanes {
     alignas(32) std::int32_t bounds[4][SETUP_BATCH];  // min_x, max_x, min_y, max_y
     alignas(32) float planes[6][SETUP_BATCH];         // z, zdx, zdy, i, idx, idy
     unsigned wide = 0, empty = 0;  // bit l: lane l's box spans FAST_SPAN_LIMIT or more; has no pixel
+    unsigned clipped_x = 0;        // bit l: the clip cut lane l's columns (msaa_triangle::clipped_x)
     template <class Triangle>
     void unpack(int l, Triangle &f) const {
         f.min_x = bounds[0][l], f.max_x = bounds[1][l], f.min_y = bounds[2][l], f.max_y = bounds[3][l];
