@@ -525,8 +525,10 @@ TEST(msaa_watertight_per_sample) {
                 for (int y = 0; y < H; ++y)
                     for (int x = 0; x < W; ++x) {
                         const float *f = forward.pixel(x, y), *b = backward.pixel(x, y);
-                        gaps += !forward.touched_row(y)[x] * samples;
-                        if (!forward.touched_row(y)[x]) continue;
+                        // (a tile at rest holds every sample in memory, marked or not: sample_store)
+                        const bool held = forward.touched_row(y)[x] || forward.at_rest();
+                        gaps += !held * samples;
+                        if (!held) continue;
                         for (int s = 0; s < samples; ++s) {
                             gaps += f[s] != 0.5f;
                             const int c = forward.colour_offset() + s;
@@ -668,16 +670,15 @@ TEST(msaa_simd_kernels_match_the_portable_kernel) {
             // masking the column past them)
             if (small) CHECK(clipped > 0 && clipped < drawn);
             CHECK(wide ? chunked > drawn / 2 : chunked == 0);
-            // Every sample as the stores hold it: in memory when its pixel is touched, else
-            // implicitly depth 1 and the clear colour (the 4× block kernels also touch pixels of
-            // their blocks without a covered sample, storing those values: sample_store).
+            // Every sample as the stores hold it: in memory when its pixel is touched or the tile
+            // is at rest (4 samples), else implicitly depth 1 and the clear colour (sample_store).
             // Value s of a pixel's 2·samples: its depths, then its colours.
             auto value = [samples](const detail::sample_store &st, int x, int y, int s) {
                 const float *p = st.pixel(x, y);
                 return s < samples ? p[s] : p[st.colour_offset() + s - samples];
             };
             auto held = [samples, &value](detail::sample_store &st, int x, int y, int s) {
-                if (st.touched_row(y)[x]) return value(st, x, y, s);
+                if (st.touched_row(y)[x] || st.at_rest()) return value(st, x, y, s);
                 return s < samples ? 1.0f : 0.25f;
             };
             int differ = 0, touched = 0;
@@ -699,10 +700,8 @@ TEST(msaa_simd_kernels_match_the_portable_kernel) {
                 for (int x = 0; x < W; ++x) {
                     const float *px = a.pixel(x, y);
                     const std::size_t i = static_cast<std::size_t>(y * W + x);
-                    if (!a.touched_row(y)[x]) {
-                        ++untouched;
-                        continue;
-                    }
+                    untouched += !a.touched_row(y)[x];
+                    if (!a.touched_row(y)[x] && !a.at_rest()) continue;
                     mean[i] = 0;
                     for (int s = 0; s < samples; ++s) mean[i] += value(a, x, y, samples + s) / samples;
                     nearest[i] = *std::min_element(px, px + samples);

@@ -107,7 +107,6 @@ void fill_rows_portable(sample_store &store, const msaa_triangle &f, const sampl
         std::int64_t e[3];
         int lo, hi;
         off.row(f, y, e, lo, hi);
-        std::uint8_t *touched = store.touched_row(y);
         const float zr = f.z + f.zdy * static_cast<float>(dy), ir = f.i + f.idy * static_cast<float>(dy);
         for (int x = lo; x <= hi; ++x) {
             unsigned mask = 0;
@@ -117,12 +116,7 @@ void fill_rows_portable(sample_store &store, const msaa_triangle &f, const sampl
                 mask |= static_cast<unsigned>(in) << s;
             }
             if (!mask) continue;
-            const int px = f.min_x + x;
-            float *p = store.pixel(px, y);
-            if (!touched[px]) {
-                store.initialise(p, clear_colour);
-                touched[px] = 1;
-            }
+            float *p = store.touch(f.min_x + x, y, clear_colour);
             const float zc = zr + f.zdx * static_cast<float>(x), shade = clamp01(ir + f.idx * static_cast<float>(x));
             float *colours = p + store.colour_offset();
             for (int s = 0; s < S; ++s) {
@@ -323,7 +317,7 @@ void sample_store::resolve(canvas_t &canvas, zbuffer &depth, float clear_colour,
         }
 #endif
         for (int x = first_column; x < width_; ++x) {
-            if (!touched[x]) {
+            if (!touched[x] && !at_rest_) {  // (at rest: resolved as it holds, clear or not)
                 colour[x] = clear_colour;
                 z[x] = 1.0f;
                 continue;

@@ -249,14 +249,12 @@ void fill_rows_blocks(sample_store &store, const msaa_triangle &f, const sample_
     const __m512i last_column = _mm512_set1_epi32(f.max_x - f.min_x);
     const __m512 two_columns_f = V::set(2.0f);
     const int odd = f.min_x & 1;  // the blocks start one column left of min_x
-    const int stride = store.stride();  // (held here: the byte stores below may alias the store)
     // The tile's blocks pair rows from its origin: the first block may start a row above y0
     // and the last end a row below y1 (a row of the tile or its padding). Their lanes are
-    // masked off, so their samples are stored back as they were; the touched marks go to
-    // both rows all the same (a branch on the rows drawn, or a read of the marks, took the
-    // layout's gain back): a pixel so marked holds its samples in memory, at rest or drawn,
-    // which is all a mark says.
-    constexpr std::uint16_t both_touched = 0x0101;
+    // masked off, so their samples are stored back as they were. The tile is at rest, so a
+    // mark only tells the resolve where to read: one per block, on its first pixel
+    // (sample_store), whatever rows or samples were drawn (a branch on the rows drawn, or a
+    // read of the marks, took the layout's gain back).
     const __mmask16 writes = depth_write ? 0xFFFF : 0;
     // The edge values at a row pair's first block (column `first` relative to min_x): 32
     // bits, wrapping as the 64-bit values' truncation does.
@@ -318,16 +316,14 @@ void fill_rows_blocks(sample_store &store, const msaa_triangle &f, const sample_
             // The 4-sample tile is at rest between bands (sample_store): an untouched pixel's
             // samples hold depth 1 and the clear colour in memory too, so the lines are used as
             // loaded, touched or not (no test of the touched bytes: Scene S level 6 4× −5.7 %,
-            // frames identical). The block is stored whole, so afterwards every pixel of it
-            // holds its samples in memory, covered or not: the touched bytes become 1 without
-            // a test of the coverage (−5 %). The depth write is a mask, not a branch (with the
+            // frames identical). The block's mark is set without a test of the coverage (−5 %).
+            // The depth write is a mask, not a branch (with the
             // branch GCC moved the pass mask through a general register: +4 %).
             const __m512 stored = _mm512_load_ps(p), colours = _mm512_load_ps(p + sample_store::colour_offset(S, true));
             const __mmask16 pass = passing<16, Test>(in, z, stored);
             _mm512_store_ps(p, _mm512_mask_blend_ps(_kand_mask16(pass, writes), stored, z));
             _mm512_store_ps(p + sample_store::colour_offset(S, true), _mm512_mask_blend_ps(pass, colours, shade));
-            std::memcpy(touched, &both_touched, sizeof both_touched);
-            std::memcpy(touched + stride, &both_touched, sizeof both_touched);
+            *touched = 1;
         }
     }
 }

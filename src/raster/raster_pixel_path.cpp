@@ -116,12 +116,7 @@ void draw_generic_samples(sample_store &tile, const sample_pattern &pat, float c
         const float l1 = static_cast<float>(static_cast<double>(t.c[1] + t.a[1] * x + t.b[1] * y) * inv_area);
         const float l2 = 1.0f - l0 - l1;
         const float zc = depth_at(g, l1, l2);
-        float *px = tile.pixel(x, y);
-        std::uint8_t &touched = tile.touched_row(y)[x];
-        if (!touched) {
-            tile.initialise(px, clear_colour);
-            touched = 1;
-        }
+        float *px = tile.touch(x, y, clear_colour);
         bool shaded = false;
         float shade = 0.0f;
         for (int k = 0; k < S; ++k) {
