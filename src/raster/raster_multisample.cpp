@@ -9,10 +9,10 @@ namespace tiny3d {
 
 using namespace detail;
 
-void render_context::impl::add_msaa(msaa_triangle &f, std::uint32_t state, piece &out) {
-    f.state = state;
+void render_context::impl::add_msaa(const msaa_triangle &f, std::uint32_t state, piece &out) {
     const std::uint32_t index = static_cast<std::uint32_t>(out.msaa.size());
     out.msaa.push_back(f);
+    out.msaa.back().state = state;
     bin_rows(f.min_y, f.max_y, index, out);
 }
 

@@ -188,7 +188,7 @@ struct render_context::impl {
 
     // Multisampled frames (raster_multisample.cpp).
     // Appends f (made by make_msaa_triangle: either form) with the draw state and bins it.
-    void add_msaa(detail::msaa_triangle &f, std::uint32_t state, piece &out);
+    void add_msaa(const detail::msaa_triangle &f, std::uint32_t state, piece &out);
     void draw_multisampled_band(int band, detail::sample_store &tile);
     void end_multisampled_frame();
 };
