@@ -45,7 +45,10 @@ inline __m256 passing(__m256 z, __m256 stored) {
     else return _mm256_castsi256_ps(_mm256_set1_epi32(-1));
 }
 
-template <depth_func Test>
+// Clipped (f.clipped_x): a pair reaching a column past the bounds masks it off; otherwise no
+// sample there is inside f and the mask is left out, the pair's column stepped in float
+// (as the AVX-512 block kernel; Scene S level 6 4× with this kernel forced: −4 %).
+template <depth_func Test, bool Clipped>
 void fill_rows_pairs(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, bool depth_write, int y0,
                      int y1) {
     constexpr int S = 4;
@@ -79,6 +82,7 @@ void fill_rows_pairs(sample_store &store, const msaa_triangle &f, const sample_p
     const __m256 write = depth_write ? _mm256_castsi256_ps(_mm256_set1_epi32(-1)) : zero;
     const __m256i two_columns = _mm256_set1_epi32(2), minus_one = _mm256_set1_epi32(-1);
     const __m256i past_last = _mm256_set1_epi32(columns);
+    const __m256 two_columns_f = _mm256_set1_ps(2.0f);
     const int odd = f.min_x & 1;  // the steps start one column left of min_x
     for (int y = y0; y < y1; ++y) {
         const int dy = y - f.min_y;
@@ -94,17 +98,21 @@ void fill_rows_pairs(sample_store &store, const msaa_triangle &f, const sample_p
         __m256i b1 = _mm256_add_epi32(_mm256_set1_epi32(e[1] + static_cast<std::int32_t>(f.a[1]) * first), d[1]);
         __m256i b2 = _mm256_add_epi32(_mm256_set1_epi32(e[2] + static_cast<std::int32_t>(f.a[2]) * first), d[2]);
         __m256i column = _mm256_add_epi32(_mm256_set1_epi32(first), lane_column);
+        __m256 at = _mm256_cvtepi32_ps(column);  // (exactly: < 2^24; stepped exactly)
         const __m256 z_row = _mm256_set1_ps(f.z + f.zdy * static_cast<float>(dy));
         const __m256 i_row = _mm256_set1_ps(f.i + f.idy * static_cast<float>(dy));
         std::uint8_t *touched = store.touched_row(y) + f.min_x + first;
         float *p = store.pixel(f.min_x + first, y);
-        for (int x = first; x <= hi; x += 2, p += 2 * 2 * S, touched += 2, column = _mm256_add_epi32(column, two_columns)) {
-            // In (all ones): every edge value ≥ 0, and the pixel inside the (clipped) box.
-            const __m256i inside = _mm256_and_si256(_mm256_cmpgt_epi32(column, minus_one), _mm256_cmpgt_epi32(past_last, column));
+        for (int x = first; x <= hi; x += 2, p += 2 * 2 * S, touched += 2, at = _mm256_add_ps(at, two_columns_f)) {
+            // In (all ones): every edge value ≥ 0 (and, clipped, the pixel inside the bounds).
+            __m256i inside = _mm256_set1_epi32(-1);
+            if constexpr (Clipped) {
+                inside = _mm256_and_si256(_mm256_cmpgt_epi32(column, minus_one), _mm256_cmpgt_epi32(past_last, column));
+                column = _mm256_add_epi32(column, two_columns);
+            }
             const __m256 in = _mm256_castsi256_ps(
                 _mm256_andnot_si256(_mm256_srai_epi32(_mm256_or_si256(_mm256_or_si256(b0, b1), b2), 31), inside));
             b0 = _mm256_add_epi32(b0, step0), b1 = _mm256_add_epi32(b1, step1), b2 = _mm256_add_epi32(b2, step2);
-            const __m256 at = _mm256_cvtepi32_ps(column);  // exactly (< 2^24)
             const __m256 z = _mm256_add_ps(_mm256_add_ps(z_row, _mm256_mul_ps(zdx, at)), dz);
             const __m256 shade = _mm256_min_ps(_mm256_max_ps(_mm256_add_ps(i_row, _mm256_mul_ps(idx, at)), zero), ones);
             // The 4-sample tile is at rest between bands (sample_store): an untouched pixel's
@@ -213,7 +221,10 @@ void fill_avx2(sample_store &store, const msaa_triangle &f, const sample_pattern
     if (!f.narrow || store.blocks())  // (the pair kernel walks the rows layout)
         return msaa_fill_for(msaa_kernel::sse2, S, test)(store, f, pat, test, depth_write, clear_colour, y0, y1);
     if (!clamp_to_rows(f, y0, y1)) return;
-    if constexpr (S == 4) fill_rows_pairs<Test>(store, f, pat, depth_write, y0, y1);
+    if constexpr (S == 4) {
+        if (f.clipped_x) fill_rows_pairs<Test, true>(store, f, pat, depth_write, y0, y1);
+        else fill_rows_pairs<Test, false>(store, f, pat, depth_write, y0, y1);
+    }
     else fill_rows_pixels<S, Test>(store, f, pat, depth_write, clear_colour, y0, y1);
 }
 
