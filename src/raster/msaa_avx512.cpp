@@ -317,8 +317,8 @@ void fill_rows_blocks(sample_store &store, const msaa_triangle &f, const sample_
             // samples hold depth 1 and the clear colour in memory too, so the lines are used as
             // loaded, touched or not (no test of the touched bytes: Scene S level 6 4× −5.7 %,
             // frames identical). The block's mark is set without a test of the coverage (−5 %).
-            // The depth write is a mask, not a branch (with the
-            // branch GCC moved the pass mask through a general register: +4 %).
+            // The depth write is a mask, not a branch (with the branch GCC moved the pass mask
+            // through a general register: +4 %).
             const __m512 stored = _mm512_load_ps(p), colours = _mm512_load_ps(p + sample_store::colour_offset(S, true));
             const __mmask16 pass = passing<16, Test>(in, z, stored);
             _mm512_store_ps(p, _mm512_mask_blend_ps(_kand_mask16(pass, writes), stored, z));
