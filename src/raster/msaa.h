@@ -80,8 +80,8 @@ using msaa_kernel = raster_simd;  // raster.h
 // their pixels were touched, and the portable kernel and the per-pixel path initialise
 // nothing (touch). In a tile at rest the marks are only the resolve's hint of where to
 // read: the AVX-512 block kernel marks the first pixel of each block it stores (one byte
-// store per block instead of two: Scene S level 6 4× −1.3 %), and the block resolve reads
-// every 8 × 2 group of pixels with a mark, its per-pixel tail every pixel.
+// store per block instead of two: Scene S level 6 4× −1.2 to −2.4 %), and the block
+// resolve reads every 8 × 2 group of pixels with a mark, its per-pixel tail every pixel.
 //
 // Two layouts. Rows: pixel after pixel along a row, each its S depths then its S colours
 // (every count; at 4 samples the two pixels from an even column are one aligned 64-byte
@@ -171,8 +171,8 @@ private:
 // ±2^30 at a chunk's start keeps its sign over the chunk and is clamped: msaa_kernels.h);
 // narrow implies chunkable. The portable kernel takes any triangle.
 // clipped_x: the clip rectangle cut the bounds' columns, so a pixel left or right of them may
-// have a sample inside the triangle; otherwise none has (the AVX-512 4× kernel then walks
-// 2 × 2 blocks reaching a column past the bounds without masking that column off).
+// have a sample inside the triangle; otherwise none has (the AVX-512 and AVX2 4× kernels
+// then walk blocks or pairs reaching a column past the bounds without masking it off).
 struct msaa_triangle {
     int min_x, max_x, min_y, max_y;
     std::int64_t e[3], a[3], b[3];
