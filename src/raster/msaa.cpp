@@ -262,13 +262,12 @@ void sample_store::resize(int width, int rows, int samples, float clear_colour, 
         return;
     }
     if (at_rest_ && same) return;
-    if (blocks) {
-        for (std::size_t block = 0; block < pixels / 4; ++block) {
-            std::fill_n(base_ + block * 32, 16, 1.0f);
-            std::fill_n(base_ + block * 32 + 16, 16, clear_colour);
-        }
-    } else {
-        for (std::size_t k = 0; k < pixels; ++k) initialise(base_ + k * 2 * samples, clear_colour);
+    // Both layouts are runs of colour_offset() depths, then as many colours (a pixel's in
+    // rows, a block's in blocks).
+    const std::size_t run = static_cast<std::size_t>(colour_offset());
+    for (float *p = base_, *end = base_ + pixels * 2 * samples; p < end; p += 2 * run) {
+        std::fill_n(p, run, 1.0f);
+        std::fill_n(p + run, run, clear_colour);
     }
     rest_colour_ = clear_colour;
     at_rest_ = true;

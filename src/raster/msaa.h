@@ -65,10 +65,10 @@ using msaa_kernel = raster_simd;  // raster.h
 // The samples of a tile of rows [origin, origin + rows) of the canvas: per pixel S sample
 // depths and S sample colours (floats, laid out as below), and whether the pixel has been
 // touched (untouched pixels hold the clear values implicitly, so clearing a tile writes one
-// byte per pixel; a touched pixel's samples are in memory — the 4× kernels that store whole
-// lines or blocks also mark the pixels they covered no sample of: their samples hold
-// the clear values, whose mean is the clear intensity exactly, as begin_frame clamps it to
-// [0, 1]). Grows only (resize), never per frame. A tile small enough to stay in the
+// byte per pixel; a touched pixel's samples are in memory — the AVX2 4× kernel, which stores
+// whole lines, also marks the pixels it covered no sample of: their samples hold the clear
+// values, whose mean is the clear intensity exactly, as begin_frame clamps it to [0, 1]; in
+// a tile at rest, below, every pixel's samples are in memory and a mark is a hint). Grows only (resize), never per frame. A tile small enough to stay in the
 // core's cache while every triangle of the frame that reaches it is drawn is what keeps
 // multisampling cheap (documentation/antialias.md).
 //
