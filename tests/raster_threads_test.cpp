@@ -10,6 +10,9 @@
 //    and intensity within 2e-6 of them (depth test always), on random triangles of every
 //    width (narrow ones with 1–4 groups of four — the AVX-512 kernel's 8- and 16-lane rows —,
 //    wide ones, ones at the canvas' right edge);
+//  * a context kept over frames (its threads streaming the triangles another thread is
+//    expected to draw) gives the one-thread frame in every frame with every kernel, and the
+//    streamed list keeps what was appended;
 //  * the hand-out (render_bands.h): with 1–16 threads taking at once, every piece and every
 //    band goes to exactly one thread; a thread's first piece is the first of its home run,
 //    its run is taken front to back and the others' from the back; bands are claimed in the
@@ -150,6 +153,67 @@ TEST(every_thread_count_from_1_to_16_gives_the_one_thread_frame) {
         for (int threads = 2; threads <= 16; ++threads)
             CHECK_MSG(same(render(threads, *c, scenes[k].draws, scenes[k].samples), one),
                       "scene " + std::to_string(k) + ", " + std::to_string(threads) + " threads");
+    }
+}
+
+// A context kept over frames: a thread's set-up streams the triangles it expects another
+// thread to draw (every one in its first frame, those reaching bands it did not draw last
+// frame after that), and the band kernels read them from that list. Scene S turning, on 2,
+// 3 and 5 threads with every 1-sample kernel this CPU runs: every frame is the one-thread
+// frame bit for bit.
+TEST(frames_of_a_kept_context_give_the_one_thread_frame_with_every_kernel) {
+    canvas_ptr c = make_canvas(192, 160).value();
+    const raster_mesh sphere = smooth_raster_mesh(make_icosphere(4));
+    const raster_clusters clusters = make_raster_clusters(sphere).value();
+    int compared = 0;
+    for (raster_simd simd : {raster_simd::portable, raster_simd::sse2, raster_simd::avx2, raster_simd::avx512}) {
+        if (!detail::fill_kernel_runs(simd)) continue;
+        for (int threads : {2, 3, 5}) {
+            render_context ctx(threads);
+            CHECK(ctx.use_simd(simd));
+            for (int frame = 0; frame < 4; ++frame) {
+                draw_params p = scene_s_params(0.4f * static_cast<float>(frame));
+                p.clusters = frame % 2 ? &clusters : nullptr;
+                const rendered one = render(1, *c, {{&sphere, p}}, sample_count::x1, simd);
+                CHECK(ctx.begin_frame(*c, 0.05f, sample_count::x1).ok());
+                ctx.draw(sphere, p);
+                ctx.end_frame();
+                CHECK_MSG(same(raster_test::capture(ctx, *c), one),
+                          std::to_string(threads) + " threads, frame " + std::to_string(frame));
+                ++compared;
+            }
+        }
+    }
+    CHECK(compared >= 24);  // (the portable and SSE2 kernels at least)
+}
+
+// The streamed list keeps what was appended, in order, across its growths and a reserve,
+// and starts over after clear().
+TEST(streamed_triangles_keep_every_appended_triangle) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> any(-1e6f, 1e6f);
+    auto random_triangle = [&] {
+        detail::fast_triangle f{};
+        f.min_x = static_cast<int>(rng() % 1000), f.max_x = f.min_x + 3, f.min_y = static_cast<int>(rng() % 1000);
+        f.max_y = f.min_y + 7;
+        for (int k = 0; k < 4; ++k) f.cross[k] = any(rng), f.cross_step[k] = any(rng);
+        f.z = any(rng), f.zdx = any(rng), f.zdy = any(rng), f.i = any(rng), f.idx = any(rng), f.idy = any(rng);
+        f.wide = static_cast<std::int32_t>(rng() % 5) - 1;
+        return f;
+    };
+    detail::streamed_triangles list;
+    for (int round = 0; round < 2; ++round) {
+        std::vector<detail::fast_triangle> expected;
+        list.clear();
+        for (int k = 0; k < 300; ++k) {
+            if (k == 150) list.reserve(1000);
+            expected.push_back(random_triangle());
+            CHECK_EQ(list.append(expected.back()), static_cast<std::size_t>(k));
+        }
+        detail::stream_fence();
+        CHECK_EQ(list.size(), expected.size());
+        CHECK(std::memcmp(list.data(), expected.data(), expected.size() * sizeof(detail::fast_triangle)) == 0);
+        CHECK_EQ(reinterpret_cast<std::uintptr_t>(list.data()) % 16, 0u);
     }
 }
 

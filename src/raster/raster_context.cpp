@@ -139,6 +139,8 @@ void render_context::impl::set_up_piece(int thread, int number, const raster_mes
     segment &seg = segments[thread];
     piece &out = pieces[static_cast<std::size_t>(number)];
     out.fast.clear();
+    out.far.clear();
+    out.near_bands = pool.size() > 1 ? affinity[thread].drew : nullptr;
     out.msaa.clear();
     out.wide.clear();
     out.generic.clear();
@@ -377,7 +379,7 @@ void render_context::impl::draw_band(int band, const draw_params &p, const draw_
         for (int number = plan.first; number < plan.first + plan.count; ++number) {
             const piece &from = pieces[static_cast<std::size_t>(number)];
             const std::vector<std::uint32_t> &bin = from.bins[band];
-            if (!bin.empty()) bins[count++] = {from.fast.data(), from.wide.data(), bin.data(), bin.size()};
+            if (!bin.empty()) bins[count++] = {from.fast.data(), from.far.data(), from.wide.data(), bin.data(), bin.size()};
         }
         fill_fast_bins(*target, depth, bins, count, p.depth, y0, y1, kernel, ahead);
         return;
@@ -411,11 +413,21 @@ void render_context::impl::set_up_and_draw(int thread, const raster_mesh &m, con
     if (!multisampled()) mine.forget(bands.count);  // (a multisampled frame counts every draw's)
     for (int k; (k = counters.take_piece(thread, pool.size())) >= 0;) {
         set_up_piece(thread, plan.first + k, m, p, job, state, view, plan);
-        mine.count(pieces[static_cast<std::size_t>(plan.first + k)].bins, bands.count);
+        piece &done = pieces[static_cast<std::size_t>(plan.first + k)];
+        mine.count(done.bins, bands.count);
+        if (done.near_bands) {
+            // Either list may hold all of a piece's triangles in another frame: both grow
+            // to the largest total, so that a steady scene allocates nothing per frame.
+            const std::size_t total = done.fast.size() + done.far.size();
+            done.fast.reserve(total);
+            done.far.reserve(total);
+            if (!done.far.empty()) detail::stream_fence();  // (streamed triangles before the release)
+        }
         counters.pieces_done.fetch_add(1, std::memory_order_release);
     }
     if (multisampled()) return;  // drawn at end_frame
     mine.rank(bands.count, pool.size() > 1);
+    std::fill(mine.drew, mine.drew + bands.count, std::uint8_t{0});
     // Until the other threads' last pieces are set up: claim the next bands (at most this
     // thread's share) and clear them (the frame's first draw), to draw them first once every
     // piece is ready.
@@ -424,13 +436,14 @@ void render_context::impl::set_up_and_draw(int thread, const raster_mesh &m, con
         claimed_count = counters.claim_while(
             mine, bands.count, pool.size(),
             [&] { return counters.pieces_done.load(std::memory_order_acquire) < plan.count; },
-            [&](int band) { clear_band(band); }, claimed);
+            [&](int band) { clear_band(band), mine.drew[band] = 1; }, claimed);
     phase_counters::wait_for(counters.pieces_done, plan.count);
     const bool drop = counters.bad_indices.load(std::memory_order_relaxed);
     // Then the bands one ahead: a thread takes its next band before drawing the current
     // one, so that it can fetch the next one's lines meanwhile.
     int next = counters.take_band(mine, bands.count);
     auto draw = [&](int band, bool cleared, int ahead) {
+        mine.drew[band] = 1;
         if (drop) {
             if (pending_clear && !cleared) clear_band(band);
             return;

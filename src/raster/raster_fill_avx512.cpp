@@ -189,13 +189,13 @@ void fill_fast_bins_avx512(canvas_t &canvas, zbuffer &depth, const band_bin *bin
             for (std::size_t k = 0; k < bin.count; ++k) {
                 ahead.step();
                 const fast_triangle *later = nullptr;
-                if (const std::size_t on = k + TRIANGLES_AHEAD; on < bin.count) later = &bin.tris[bin.index[on]];
-                else if (next && on - bin.count < next->count) later = &next->tris[next->index[on - bin.count]];
+                if (const std::size_t on = k + TRIANGLES_AHEAD; on < bin.count) later = &bin.triangle(bin.index[on]);
+                else if (next && on - bin.count < next->count) later = &next->triangle(next->index[on - bin.count]);
                 if (later) {
                     _mm_prefetch(reinterpret_cast<const char *>(later), _MM_HINT_T0);
                     _mm_prefetch(reinterpret_cast<const char *>(later) + sizeof(fast_triangle) - 1, _MM_HINT_T0);
                 }
-                const fast_triangle &f = bin.tris[bin.index[k]];
+                const fast_triangle &f = bin.triangle(bin.index[k]);
                 const int first = std::max(y0, f.min_y), end = std::min(y1, f.max_y + 1);
                 if (first >= end) continue;
                 if (f.wide < 0 && narrow_fits(f, canvas.width))

@@ -118,6 +118,11 @@ struct render_context::impl {
     // What the set-up of one piece produced (render_bands.h), on cache lines of its own.
     struct alignas(detail::CACHE_LINE) piece {
         std::vector<detail::fast_triangle> fast;
+        // The fast triangles reaching a band that another thread drew in the setting-up
+        // thread's last band phase: likely drawn by that thread again, so streamed
+        // (detail::streamed_triangles); their bin entries carry FAR_ENTRY.
+        detail::streamed_triangles far;
+        const std::uint8_t *near_bands = nullptr;  // while set up: band_affinity::drew, or null (one thread: none far)
         std::vector<detail::msaa_triangle> msaa;  // instead of `fast` in multisampled frames
         std::vector<triangle_edges> wide;
         std::vector<detail::generic_triangle> generic;
@@ -169,9 +174,18 @@ struct render_context::impl {
     // of line, so that the vector appends inline here (in the large set-up loop they were
     // calls: +0.7 % instructions for Scene S level 6).
     [[gnu::noinline]] void bin_fast(const detail::fast_triangle &f, piece &out) {
-        const std::uint32_t index = static_cast<std::uint32_t>(out.fast.size());
-        out.fast.push_back(f);
-        bin_rows(f.min_y, f.max_y, index, out);
+        const int first = bands.of(f.min_y), last = bands.of(f.max_y);
+        bool near = true;
+        if (out.near_bands)
+            for (int b = first; b <= last; ++b) near = near && out.near_bands[b];
+        std::uint32_t index;
+        if (near) {
+            index = static_cast<std::uint32_t>(out.fast.size());
+            out.fast.push_back(f);
+        } else {
+            index = static_cast<std::uint32_t>(out.far.append(f)) | detail::FAR_ENTRY;
+        }
+        for (int b = first; b <= last; ++b) out.bins[b].push_back(index);
     }
     // Bin entry `index` into the bins of the bands of rows [y0, y1] (inclusive, on the
     // target). Inlined: called out of line from bin_fast it cost 0.4 % more instructions.
