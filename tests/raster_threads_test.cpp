@@ -184,7 +184,7 @@ TEST(frames_of_a_kept_context_give_the_one_thread_frame_with_every_kernel) {
             }
         }
     }
-    CHECK(compared >= 24);  // (the portable and SSE2 kernels at least)
+    CHECK(compared >= 12);  // (the portable kernel at least: the only one of a portable build)
 }
 
 // The streamed list keeps what was appended, in order, across its growths and a reserve,
