@@ -68,9 +68,10 @@ using msaa_kernel = raster_simd;  // raster.h
 // byte per pixel; a touched pixel's samples are in memory — the AVX2 4× kernel, which stores
 // whole lines, also marks the pixels it covered no sample of: their samples hold the clear
 // values, whose mean is the clear intensity exactly, as begin_frame clamps it to [0, 1]; in
-// a tile at rest, below, every pixel's samples are in memory and a mark is a hint). Grows only (resize), never per frame. A tile small enough to stay in the
-// core's cache while every triangle of the frame that reaches it is drawn is what keeps
-// multisampling cheap (documentation/antialias.md).
+// a tile at rest, below, every pixel's samples are in memory and a mark is a hint). Grows
+// only (resize), never per frame. A tile small enough to stay in the core's cache while
+// every triangle of the frame that reaches it is drawn is what keeps multisampling cheap
+// (documentation/antialias.md).
 //
 // A 4-sample tile is also kept AT REST between bands: every sample of every pixel, touched
 // or not, holds depth 1 and the clear colour in memory. resize establishes it (when the

@@ -436,7 +436,7 @@ void render_context::impl::set_up_and_draw(int thread, const raster_mesh &m, con
         claimed_count = counters.claim_while(
             mine, bands.count, pool.size(),
             [&] { return counters.pieces_done.load(std::memory_order_acquire) < plan.count; },
-            [&](int band) { clear_band(band), mine.drew[band] = 1; }, claimed);
+            [&](int band) { clear_band(band); }, claimed);
     phase_counters::wait_for(counters.pieces_done, plan.count);
     const bool drop = counters.bad_indices.load(std::memory_order_relaxed);
     // Then the bands one ahead: a thread takes its next band before drawing the current

@@ -71,8 +71,8 @@ struct alignas(CACHE_LINE) band_affinity {
     std::uint32_t own[MAX_BANDS] = {};  // bin entries per band in the pieces this thread set up
     std::uint8_t order[MAX_BANDS] = {};
     int cursor = 0;  // order[cursor..] are still to be tried
-    // The bands this thread drew (or cleared to draw) in its last band phase: where its next
-    // set-up expects to draw (none before the first; detail::streamed_triangles).
+    // The bands this thread drew in its last band phase: where its next set-up expects to
+    // draw (none before the first; detail::streamed_triangles).
     std::uint8_t drew[MAX_BANDS] = {};
 
     void forget(int count) { std::fill(own, own + count, 0u); }
