@@ -5,6 +5,7 @@
 #define TINY3D_RENDER_CONTEXT_IMPL_H
 
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <vector>
 
@@ -121,9 +122,11 @@ struct render_context::impl {
         std::vector<detail::fast_triangle> fast;
         // The fast triangles reaching a band that another thread drew in the setting-up
         // thread's last band phase: likely drawn by that thread again, so streamed
-        // (detail::streamed_triangles); their bin entries carry FAR_ENTRY.
+        // (detail::streamed_triangles) when the frame streams (stream_choice); their bin
+        // entries carry FAR_ENTRY.
         detail::streamed_triangles far;
-        const std::uint8_t *near_bands = nullptr;  // while set up: band_affinity::drew, or null (one thread: none far)
+        // While set up: band_affinity::drew, or null (none far: one thread, or stream_choice says no).
+        const std::uint8_t *near_bands = nullptr;
         std::vector<detail::msaa_triangle> msaa;  // instead of `fast` in multisampled frames
         std::vector<triangle_edges> wide;
         std::vector<detail::generic_triangle> generic;
@@ -139,6 +142,8 @@ struct render_context::impl {
     detail::band_layout bands;
     detail::phase_counters counters;
     detail::band_affinity affinity[detail::MAX_THREADS];  // per thread, for the bands it claims
+    detail::stream_choice streaming;  // whether this frame's set-up streams (several threads, one sample)
+    double phase_seconds = 0.0;       // this frame's draws' parallel phases so far (measured frames)
 
     void clear_band(int b) {
         const int y0 = bands.y0(b), y1 = bands.y0(b + 1);
