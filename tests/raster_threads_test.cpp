@@ -256,20 +256,24 @@ TEST(pieces_and_bands_are_each_handed_out_once) {
         for (int k; (k = c.take_piece(1, 3)) >= 0;) order.push_back(k);
         CHECK((order == std::vector<int>{3, 4, 5, 2, 1, 0, 9, 8, 7, 6}));
     }
-    // Bands in the order of the thread's own entries (most first, ties top first); with one
-    // thread, top to bottom.
+    // Bands in the order of the thread's own entries (most first, ties top first); with the
+    // bands it drew last time first (each group so ordered); top to bottom.
+    using order = band_affinity::claim_order;
     {
         band_affinity a;
         const std::vector<std::vector<int>> bins = {{1}, {}, {1, 2, 3}, {4}, {5, 6, 7}};
         a.count(bins, 5);
-        a.rank(5, true);
+        a.drew[1] = a.drew[3] = 1;
+        a.rank(5, order::kept_then_own);
+        CHECK((std::vector<int>(a.order, a.order + 5) == std::vector<int>{3, 1, 2, 4, 0}));
+        a.rank(5, order::own_entries);
         CHECK((std::vector<int>(a.order, a.order + 5) == std::vector<int>{2, 4, 0, 3, 1}));
         phase_counters c;
         c.reset(0, 2, 5);
         CHECK(c.take_band(a, 5) == 2);
         c.band_taken[4].store(1);  // taken by another thread
         CHECK(c.take_band(a, 5) == 0);
-        a.rank(5, false);
+        a.rank(5, order::top_down);
         CHECK((std::vector<int>(a.order, a.order + 5) == std::vector<int>{0, 1, 2, 3, 4}));
         a.forget(5);
         CHECK(a.own[2] == 0u && a.own[4] == 0u);
@@ -278,7 +282,7 @@ TEST(pieces_and_bands_are_each_handed_out_once) {
     // in its order, however long the wait; none when the wait is over.
     {
         band_affinity a;
-        a.rank(10, false);
+        a.rank(10, order::top_down);
         phase_counters c;
         c.reset(0, 3, 10);
         int claimed[detail::MAX_BANDS], worked = 0;
@@ -302,7 +306,8 @@ TEST(pieces_and_bands_are_each_handed_out_once) {
                 std::vector<std::vector<int>> bins(bands);
                 for (auto &bin : bins) bin.resize(rng() % 5);
                 a.count(bins, bands);
-                a.rank(bands, threads > 1);
+                for (int b = 0; b < bands; ++b) a.drew[b] = rng() % 2;
+                a.rank(bands, threads > 1 ? order::kept_then_own : order::top_down);
             }
             std::vector<std::thread> workers;
             for (int t = 0; t < threads; ++t)

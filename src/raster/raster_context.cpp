@@ -426,7 +426,7 @@ void render_context::impl::set_up_and_draw(int thread, const raster_mesh &m, con
         counters.pieces_done.fetch_add(1, std::memory_order_release);
     }
     if (multisampled()) return;  // drawn at end_frame
-    mine.rank(bands.count, pool.size() > 1);
+    mine.rank(bands.count, pool.size() > 1 ? band_affinity::claim_order::kept_then_own : band_affinity::claim_order::top_down);
     std::fill(mine.drew, mine.drew + bands.count, std::uint8_t{0});
     // Until the other threads' last pieces are set up: claim the next bands (at most this
     // thread's share) and clear them (the frame's first draw), to draw them first once every
@@ -574,7 +574,7 @@ void render_context::end_frame() {
     s.counters.reset(0, s.pool.size(), s.bands.count);
     auto phase = [&](int thread) {
         band_affinity &mine = s.affinity[thread];
-        mine.rank(s.bands.count, false);  // (translucent triangles are not binned: top to bottom)
+        mine.rank(s.bands.count, band_affinity::claim_order::top_down);  // (translucent triangles are not binned)
         s.counters.claim_bands(mine, s.bands.count, [&](int band) {
             const int y0 = s.bands.y0(band), y1 = s.bands.y0(band + 1);
             if (s.pending_clear) s.clear_band(band);

@@ -77,7 +77,7 @@ void render_context::impl::end_multisampled_frame() {
     counters.reset(0, pool.size(), bands.count);
     auto phase = [&](int thread) {
         band_affinity &mine = affinity[thread];
-        mine.rank(bands.count, pool.size() > 1);
+        mine.rank(bands.count, pool.size() > 1 ? band_affinity::claim_order::own_entries : band_affinity::claim_order::top_down);
         counters.claim_bands(mine, bands.count, [&](int band) { draw_multisampled_band(band, tiles[thread]); });
         mine.forget(bands.count);  // (counted again by the next frame's draws)
     };
