@@ -3,8 +3,8 @@
 // triangles), dealt to the threads in runs of neighbouring pieces (phase_counters); a thread
 // sets up the triangles of a piece into that piece's own lists and bins them by the
 // horizontal bands of the frame they reach. Once every piece is set up, each thread claims
-// bands, those holding most of its own triangles first (band_affinity); a band is drawn by one
-// thread, piece after piece in piece order — the draw's submission order — so the pixels
+// bands, those it drew in the frame before and those holding most of its own triangles first
+// (band_affinity); a band is drawn by one thread, piece after piece in piece order — the draw's submission order — so the pixels
 // depend neither on the number of threads nor on which thread set up or drew what, and a
 // piece's lists grow to the same sizes every frame whoever sets it up (no allocation in a
 // steady scene). Not installed.
@@ -62,10 +62,11 @@ struct band_layout {
 
 // What one thread knows of the bands when it starts drawing: how many bin entries of each
 // band it set up itself (its own pieces' triangles, still in its cache), and from that the
-// order in which it claims bands — most of its own entries first — so that a band is
-// mostly drawn by the thread that set up its triangles instead of fetching them from
-// another core's cache (reading lines another core has just written takes ~3× as long as
-// reading one's own). Only speed depends on it: a band's pixels do not depend on who draws it.
+// order in which it claims bands — the bands it drew last time, then most of its own
+// entries first (rank) — so that a band is mostly drawn by the thread that set up its
+// triangles instead of fetching them from another core's cache (reading lines another core
+// has just written takes ~3× as long as reading one's own), and by the same thread as in
+// the frame before. Only speed depends on it: a band's pixels do not depend on who draws it.
 // On a cache line of its own per thread.
 struct alignas(CACHE_LINE) band_affinity {
     std::uint32_t own[MAX_BANDS] = {};  // bin entries per band in the pieces this thread set up
