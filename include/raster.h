@@ -377,10 +377,11 @@ inline multisample_simd best_multisample_simd() { return best_raster_simd(); }
 // binned by horizontal 32-row bands of the canvas; then the threads claim bands (each those
 // it drew in the frame before, then those holding most of its own triangles, first), each
 // band drawn by one thread piece after piece in submission order, so the image (and the
-// stats) are identical for any thread count (documentation/raster.md, "Threads and buffers"). On several threads, 1-sample
-// frames time their draws: each period of 128 such frames starts with 4 frames storing the
-// triangles meant for another core with streaming stores and 4 without, and runs the rest
-// the faster way (which way changes the speed only, never a pixel).
+// stats) are identical for any thread count (documentation/raster.md, "Threads and
+// buffers"). On several threads, 1-sample frames time their draws: each period of 128 such
+// frames starts with 4 frames storing the triangles meant for another core with streaming
+// stores and 4 without, and runs the rest the faster way (which way changes the speed
+// only, never a pixel).
 // No allocation per frame once buffers have grown to the scene's size.
 class render_context {
 public:

@@ -560,8 +560,7 @@ status render_context::begin_frame(canvas_t &target, float clear_intensity, samp
 void render_context::end_frame() {
     impl &s = *impl_;
     if (!s.target) return;
-    if (s.phase_seconds > 0.0) s.streaming.frame_done(s.phase_seconds);
-    s.phase_seconds = 0.0;
+    if (s.phase_seconds > 0.0) s.streaming.frame_done(s.phase_seconds);  // (begin_frame resets it)
     // Back to front; equal depths keep submission order (std::sort: no temporary buffer).
     std::sort(s.translucent.begin(), s.translucent.end(), [](const generic_triangle &a, const generic_triangle &b) {
         return a.mean_depth != b.mean_depth ? a.mean_depth > b.mean_depth : a.sequence < b.sequence;

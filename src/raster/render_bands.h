@@ -4,10 +4,10 @@
 // sets up the triangles of a piece into that piece's own lists and bins them by the
 // horizontal bands of the frame they reach. Once every piece is set up, each thread claims
 // bands, those it drew in the frame before and those holding most of its own triangles first
-// (band_affinity); a band is drawn by one thread, piece after piece in piece order — the draw's submission order — so the pixels
-// depend neither on the number of threads nor on which thread set up or drew what, and a
-// piece's lists grow to the same sizes every frame whoever sets it up (no allocation in a
-// steady scene). Not installed.
+// (band_affinity); a band is drawn by one thread, piece after piece in piece order — the
+// draw's submission order — so the pixels depend neither on the number of threads nor on
+// which thread set up or drew what, and a piece's lists grow to the same sizes every frame
+// whoever sets it up (no allocation in a steady scene). Not installed.
 #ifndef TINY3D_RENDER_BANDS_H
 #define TINY3D_RENDER_BANDS_H
 
@@ -15,6 +15,7 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "../parallel/worker_pool.h"
@@ -130,13 +131,13 @@ public:
             best = std::min(best, seconds);
         }
         if (frame_ == 2 * TRIAL - 1) chosen_ = trial_[1] < trial_[0];
-        if (++frame_ == PERIOD) frame_ = 0, trial_[0] = trial_[1] = INFINITY_SECONDS;
+        if (++frame_ == PERIOD) frame_ = 0, trial_[0] = trial_[1] = NOT_TIMED;
     }
 
 private:
-    static constexpr double INFINITY_SECONDS = 1e300;
-    int frame_ = 0;                                          // position in the period
-    double trial_[2] = {INFINITY_SECONDS, INFINITY_SECONDS};  // least trial time: [0] not streaming, [1] streaming
+    static constexpr double NOT_TIMED = std::numeric_limits<double>::infinity();
+    int frame_ = 0;                              // position in the period
+    double trial_[2] = {NOT_TIMED, NOT_TIMED};  // least trial time: [0] not streaming, [1] streaming
     bool chosen_ = true;
 };
 

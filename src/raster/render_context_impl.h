@@ -194,11 +194,12 @@ struct render_context::impl {
         bin_bands(first, last, index, out);
     }
     // Bin entry `index` into the bins of the bands of rows [y0, y1] (inclusive, on the
-    // target), or of bands [first, last]. Inlined: called out of line from bin_fast it cost
-    // 0.4 % more instructions.
+    // target).
     [[gnu::always_inline]] void bin_rows(int y0, int y1, std::uint32_t index, piece &out) {
         bin_bands(bands.of(y0), bands.of(y1), index, out);
     }
+    // The same for bands [first, last] (inclusive). Inlined: called out of line from bin_fast
+    // it cost 0.4 % more instructions.
     [[gnu::always_inline]] void bin_bands(int first, int last, std::uint32_t index, piece &out) {
         for (int b = first; b <= last; ++b) out.bins[b].push_back(index);
     }
