@@ -13,19 +13,24 @@
 #ifndef TINY3D_ANIMATION_H
 #define TINY3D_ANIMATION_H
 
-#include <cstddef>
-#include <span>
-#include <vector>
-
 #include "math3d.h"
 #include "tiny3d_result.h"
 
-// ---- the libtiny3d report's API --------------------------------------------------------
+#ifdef __cplusplus
+#include <cstddef>
+#include <span>
+#include <vector>
+#endif
+
+// ---- the libtiny3d report's API (C linkage; all a C program sees, with bezier) ---------
+TINY3D_C_BEGIN
 
 // The report's cubic Bezier: B(t) = (1−t)³p0 + 3(1−t)²t p1 + 3(1−t)t² p2 + t³p3.
 // t in [0, 1] (other t extrapolate the polynomial). B(0) = p0 and B(1) = p3 exactly.
 vec3_t vec3_bezier(vec3_t p0, vec3_t p1, vec3_t p2, vec3_t p3, float t);
+TINY3D_C_END
 
+#ifdef __cplusplus
 namespace tiny3d {
 
 struct cubic_bezier {
@@ -213,6 +218,7 @@ struct motion {
 mat4_t motion_model_at(const motion &m, double seconds);
 
 }  // namespace tiny3d
+#endif  // __cplusplus
 
 #include "compat/animation_alias.h"  // other libtiny3d programs' name bezier(…)
 

@@ -23,6 +23,9 @@
 #ifndef TINY3D_CANVAS_H
 #define TINY3D_CANVAS_H
 
+#include "tiny3d_result.h"
+
+#ifdef __cplusplus
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -30,9 +33,10 @@
 #include <string>
 #include <string_view>
 #include <vector>
+#endif
 
-#include "tiny3d_result.h"
-
+// From C (C11) this header declares the C part only: canvas_t and the functions with C
+// linkage below (extern "C" under C++); everything in namespace tiny3d is C++ only.
 typedef struct canvas_t {
     int width;
     int height;
@@ -41,16 +45,23 @@ typedef struct canvas_t {
 } canvas_t;
 
 // Largest canvas: each side at most 32768 and width*height at most 2^28 pixels (1 GiB).
+#ifdef __cplusplus
 inline constexpr int CANVAS_MAX_SIDE = 32768;
 inline constexpr long long CANVAS_MAX_PIXELS = 1LL << 28;
+#else
+enum { CANVAS_MAX_SIDE = 32768 };
+#define CANVAS_MAX_PIXELS (1LL << 28)
+#endif
+
+TINY3D_C_BEGIN
 
 // ---- the libtiny3d report's API ------------------------------------------------------
 
-// A width × height canvas, all pixels 0. Returns nullptr when a side is ≤ 0, the size
+// A width × height canvas, all pixels 0. Returns NULL when a side is ≤ 0, the size
 // exceeds the limits above, or memory runs out; tiny3d::check_canvas_size(width, height)
 // says which. Free it with destroy_canvas (or remove_canvas).
 canvas_t *create_canvas(int width, int height);
-void destroy_canvas(canvas_t *canvas);  // nullptr is ignored
+void destroy_canvas(canvas_t *canvas);  // NULL is ignored
 void remove_canvas(canvas_t *canvas);   // the report's name for destroy_canvas
 
 // The report's bilinear splat (report convention, above): with x0 = floor(x),
@@ -68,13 +79,19 @@ bool save_canvas(const canvas_t *canvas, const char *path);
 
 // ---- libtiny3d additions --------------------------------------------------------------
 
-void canvas_clear(canvas_t *canvas, float value);            // every pixel := clamp(value)
+// Every pixel := clamp(value) (NaN → 0); NULL is ignored. In its own object file of the
+// archive, so a program that defines its own canvas_clear(canvas_t *, float) links its own.
+// (C++ also has canvas_clear(c), every pixel := 0: compat/canvas_alias.h.)
+void canvas_clear(canvas_t *canvas, float value);
 float get_pixel(const canvas_t *canvas, int x, int y);       // 0 outside the canvas
 // How many pixels differ from `value` (0 for a null canvas). A frame that should show
 // geometry and counts 0 against its clear value came out blank: programs report that as
 // an error instead of writing it (a mesh that could not be framed, a NaN matrix, …).
-std::size_t canvas_count_differing(const canvas_t *canvas, float value);
+size_t canvas_count_differing(const canvas_t *canvas, float value);
 
+TINY3D_C_END
+
+#ifdef __cplusplus
 namespace tiny3d {
 
 // Why create_canvas(width, height) would fail; ok() when it would not (memory aside).
@@ -163,6 +180,8 @@ result<std::string> read_file_bytes(const std::string &path, std::uint64_t max_b
                                     file_probe probe = nullptr);
 
 }  // namespace tiny3d
+
+#endif  // __cplusplus
 
 // Compat layer: other libtiny3d programs' names (canvas_create, …) and, because the
 // report's canvas.h declared draw_line_f, lines.h (a report program that includes canvas.h

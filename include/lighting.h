@@ -14,11 +14,13 @@
 #ifndef TINY3D_LIGHTING_H
 #define TINY3D_LIGHTING_H
 
-#include <cmath>
-#include <span>
-
 #include "math3d.h"
 #include "tiny3d_result.h"
+
+// From C (C11) this header declares light_t and lambert_intensity (C linkage) only.
+#ifdef __cplusplus
+#include <cmath>
+#include <span>
 
 namespace tiny3d {
 enum class light_kind : int {
@@ -26,6 +28,12 @@ enum class light_kind : int {
     point = 1,        // light at `position`, shining in every direction
 };
 }  // namespace tiny3d
+#define TINY3D_LIGHT_KIND_TYPE tiny3d::light_kind
+#else
+// C: light_t::kind is an int holding one of these (tiny3d::light_kind's values).
+enum { TINY3D_LIGHT_DIRECTIONAL = 0, TINY3D_LIGHT_POINT = 1 };
+#define TINY3D_LIGHT_KIND_TYPE int
+#endif
 
 // A light. Brace-initialise as other libtiny3d programs do — light_t l = {{dx, dy, dz}, i} —
 // for a directional light; set kind = tiny3d::light_kind::point and `position` for a point
@@ -34,9 +42,9 @@ enum class light_kind : int {
 // -Wextra (it is still an aggregate).
 typedef struct light_t {
     vec3_t direction;        // towards the light (directional lights)
-    float intensity = 0;     // ≥ 0 (0 by default, so `light_t l = {0};` compiles as C++)
-    tiny3d::light_kind kind = tiny3d::light_kind::directional;
-    vec3_t position = {0.0f, 0.0f, 0.0f};  // point lights: where the light is
+    float intensity TINY3D_DEFAULT(0);  // ≥ 0 (0 by default, so `light_t l = {0};` compiles as C++)
+    TINY3D_LIGHT_KIND_TYPE kind TINY3D_DEFAULT(tiny3d::light_kind::directional);
+    vec3_t position TINY3D_DEFAULT({0.0f, 0.0f, 0.0f});  // point lights: where the light is
 } light_t;
 
 // ---- the libtiny3d report's API --------------------------------------------------------
@@ -48,8 +56,11 @@ typedef struct light_t {
 // is not a surface normal and has no preferred sign, so under any light about half of a
 // wireframe's edges come out black (and an edge lying along the light is fully lit).
 // tiny3d::mesh_edge_normals plus tiny3d::shade_edge is the corrected model.
+TINY3D_C_BEGIN
 float lambert_intensity(vec3_t start, vec3_t end, vec3_t light_dir);
+TINY3D_C_END
 
+#ifdef __cplusplus
 namespace tiny3d {
 
 // Most lights a rig holds (a fixed array: a rig is a small value, never allocates).
@@ -140,5 +151,6 @@ float shade_edge_faithful(const light_rig &rig, vec3_t a, vec3_t b);
 }  // namespace tiny3d
 
 #include "compat/lighting_alias.h"  // pins light_t's form other libtiny3d programs use
+#endif  // __cplusplus
 
 #endif

@@ -12,12 +12,14 @@
 #ifndef TINY3D_LINES_H
 #define TINY3D_LINES_H
 
+#include "canvas.h"
+#include "tiny3d_result.h"
+
+#ifdef __cplusplus
 #include <cstddef>
 #include <new>
 #include <vector>
-
-#include "canvas.h"
-#include "tiny3d_result.h"
+#endif
 
 // ---- the libtiny3d report's line (src/lines/line_faithful.cpp) ------------------------
 
@@ -32,8 +34,12 @@
 // 2–2.5 times the true ink at 0.59–0.70; thickness 1 puts about twice the true ink down;
 // the cost grows with thickness². The line is clipped to the canvas first (margins of
 // thickness), so huge coordinates cost no more than a line across the canvas.
+// C linkage (and C11): the one declaration a C program sees from this header.
+TINY3D_C_BEGIN
 void draw_line_f(canvas_t *canvas, float x0, float y0, float x1, float y1, float thickness);
+TINY3D_C_END
 
+#ifdef __cplusplus
 namespace tiny3d {
 
 // ---- lines beyond the report (src/lines/line_coverage.cpp, line_tabulated*.cpp, line_thin.cpp)
@@ -220,5 +226,6 @@ void draw_line_gradient(canvas_t *canvas, int x0, int y0, int x1, int y1, float 
 }  // namespace tiny3d
 
 #include "compat/lines_alias.h"  // the 7-argument draw_line_f other libtiny3d programs call
+#endif  // __cplusplus
 
 #endif

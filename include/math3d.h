@@ -14,33 +14,45 @@
 // programs expect; everything libtiny3d adds lives in namespace tiny3d. vec3_t, vec4_t,
 // mat4_t are plain aggregates so C-style code — (vec3_t){1, 2, 3}, {.x = 1},
 // mat4_t m = {0} — compiles as C++.
+//
+// C: this header compiles as C11 (strict -std=c11 too). A C program sees the types, M_PI,
+// the functions declared between TINY3D_C_BEGIN and TINY3D_C_END (C linkage under C++) and
+// the C part of compat/math_alias.h; the operators, the pointer overloads and namespace
+// tiny3d are C++ only.
 #ifndef TINY3D_MATH3D_H
 #define TINY3D_MATH3D_H
 
+#include "tiny3d_result.h"
+
+#ifdef __cplusplus
 #include <cmath>
 #include <cstddef>
 #include <span>
+#else
+#include <math.h>
+#endif
 
-#include "tiny3d_result.h"
-
+// Strict C11 and C++ do not define M_PI in <math.h>; the value is glibc's, token for token.
 #ifndef M_PI
 #define M_PI 3.14159265358979323846
 #endif
 
-// Members default to 0 so C idioms such as `vec3_t v = {0};` and `vec3_t v = {1};` compile
-// as C++ under -Wextra -Werror (no missing-initializer warning); the types stay aggregates.
+// Members default to 0 in C++ so C idioms such as `vec3_t v = {0};` and `vec3_t v = {1};`
+// compile as C++ under -Wextra -Werror (no missing-initializer warning); the types stay
+// aggregates with the same layout in C and C++.
 typedef struct vec3_t {
-    float x = 0, y = 0, z = 0;
+    float x TINY3D_DEFAULT(0), y TINY3D_DEFAULT(0), z TINY3D_DEFAULT(0);
 } vec3_t;
 
 typedef struct vec4_t {
-    float x = 0, y = 0, z = 0, w = 0;
+    float x TINY3D_DEFAULT(0), y TINY3D_DEFAULT(0), z TINY3D_DEFAULT(0), w TINY3D_DEFAULT(0);
 } vec4_t;
 
 typedef struct mat4_t {
     float m[16];  // column-major: m[col*4 + row]
 } mat4_t;
 
+#ifdef __cplusplus
 // ---- operators on vec3_t (C++ conveniences) ------------------------------------------
 inline vec3_t operator+(vec3_t a, vec3_t b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
 inline vec3_t operator-(vec3_t a, vec3_t b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
@@ -52,8 +64,10 @@ inline vec3_t &operator+=(vec3_t &a, vec3_t b) { return a = a + b; }
 inline vec3_t &operator-=(vec3_t &a, vec3_t b) { return a = a - b; }
 inline vec3_t &operator*=(vec3_t &a, float s) { return a = a * s; }
 inline bool operator==(vec3_t a, vec3_t b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+#endif  // __cplusplus
 
-// ---- the libtiny3d report's API --------------------------------------------------------
+// ---- the libtiny3d report's API (C linkage) -------------------------------------------
+TINY3D_C_BEGIN
 mat4_t mat4_identity(void);
 mat4_t mat4_multiply(mat4_t a, mat4_t b);               // a·b (b applied first)
 mat4_t mat4_translate(float tx, float ty, float tz);
@@ -99,9 +113,6 @@ void vec3_to_spherical(vec3_t v, float *r, float *theta, float *phi);
 // numbers they always saw; tiny3d::vec3_normalize (exact) and
 // tiny3d::vec3_normalize_fast_accurate (≤ 2e-7) are the better choices.
 vec3_t vec3_normalize_fast(vec3_t v);
-// Pointer form used by several other libtiny3d programs: *v = vec3_normalize_fast(*v).
-// A null pointer is ignored.
-void vec3_normalize_fast(vec3_t *v);
 
 // The report's slerp between directions a and b, kept as the faithful variant: inputs
 // normalised with vec3_normalize_fast (Quake), θ₀ = acos(a·b), linear interpolation +
@@ -117,6 +128,21 @@ void vec3_normalize_fast(vec3_t *v);
 // [0, 1]). t outside [0, 1] extrapolates as the report's formula does (its length then
 // drifts further: 0.9958 at t = 1.5 for a = b).
 vec3_t vec3_slerp(vec3_t a, vec3_t b, float t);
+
+// Rotations by `angle` radians, counter-clockwise looking from +axis toward the origin
+// (right-handed): rotate_z(π/2) maps +x to +y, rotate_x(π/2) maps +y to +z, rotate_y(π/2)
+// maps +z to +x. Global (C and C++), as other libtiny3d programs call them; also reachable
+// as tiny3d::mat4_rotate_x/y/z.
+mat4_t mat4_rotate_x(float angle);
+mat4_t mat4_rotate_y(float angle);
+mat4_t mat4_rotate_z(float angle);
+
+TINY3D_C_END
+
+#ifdef __cplusplus
+// Pointer form used by several other libtiny3d programs (C++ only: C has one function per
+// name, the report's): *v = vec3_normalize_fast(*v). A null pointer is ignored.
+void vec3_normalize_fast(vec3_t *v);
 
 namespace tiny3d {
 
@@ -174,12 +200,10 @@ vec3_t vec3_slerp_robust(vec3_t a, vec3_t b, float t);
 vec3_t vec3_any_perpendicular(vec3_t v);
 
 // ---- matrices --------------------------------------------------------------------------
-// Rotations by `angle` radians, counter-clockwise looking from +axis toward the origin
-// (right-handed): rotate_z(π/2) maps +x to +y, rotate_x(π/2) maps +y to +z, rotate_y(π/2)
-// maps +z to +x.
-mat4_t mat4_rotate_x(float angle);
-mat4_t mat4_rotate_y(float angle);
-mat4_t mat4_rotate_z(float angle);
+// The global rotations about one axis (above), under the namespace too.
+using ::mat4_rotate_x;
+using ::mat4_rotate_y;
+using ::mat4_rotate_z;
 // Rotation about an arbitrary axis (Rodrigues; the axis need not be unit length). A zero
 // or non-finite axis gives the identity.
 mat4_t mat4_rotate_axis(vec3_t axis, float angle);
@@ -259,6 +283,7 @@ vec3_t quat_rotate(quat q, vec3_t v);
 quat quat_slerp(quat a, quat b, float t);
 
 }  // namespace tiny3d
+#endif  // __cplusplus
 
 #include "compat/math_alias.h"  // other libtiny3d programs' names (mat4_mul, vec3, …)
 

@@ -13,6 +13,10 @@
 #ifndef TINY3D_MESH_H
 #define TINY3D_MESH_H
 
+#include "math3d.h"
+#include "tiny3d_result.h"
+
+#ifdef __cplusplus
 #include <array>
 #include <cstddef>
 #include <initializer_list>
@@ -21,9 +25,6 @@
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include "math3d.h"
-#include "tiny3d_result.h"
 
 namespace tiny3d {
 
@@ -297,20 +298,67 @@ result<mesh> load_ply(const std::string &path);
 result<loaded_mesh> load_mesh(const std::string &path, const load_options &options);
 result<mesh> load_mesh(const std::string &path);
 
+// The soccer ball of generate_soccer_ball (below) as plain arrays: returns true on success,
+// false (outputs NULL / 0 where given) when a pointer is NULL or memory runs out.
+bool soccer_ball_arrays(vec3_t **vertices, int *vertex_count, int (**edges)[2], int *edge_count);
+
 }  // namespace tiny3d
+#endif  // __cplusplus
 
-// ---- the libtiny3d report's generator (C-compatible) ----------------------------------
-
-// The report's soccer ball as plain arrays: on success *vertices holds 60 positions (the
-// ball of circumradius 1, same order as tiny3d::make_soccer_ball), *edges 90 pairs of
-// indices into them, counts in *vertex_count / *edge_count, and it returns 1. Both arrays
-// are malloc'd: free them with free_soccer_ball (or free()). Returns 0, with the outputs
-// set to NULL / 0 where given, when a pointer argument is NULL or memory runs out.
-// (The report wrote `int *edges[][2]`, which is not a usable out-parameter for an
-// `int edges[][2]` array; `int (**edges)[2]` is the closest form that is.)
-int generate_soccer_ball(vec3_t **vertices, int *vertex_count, int (**edges)[2], int *edge_count);
+// ---- the libtiny3d report's generator (C and C++) ------------------------------------
+//
+// generate_soccer_ball(&vertices, &vertex_count, &edges, &edge_count), with
+//     vec3_t *vertices; int vertex_count; int (*edges)[2]; int edge_count;
+// On success *vertices holds 60 positions (the ball of circumradius 1, same order as
+// tiny3d::make_soccer_ball), *edges 90 pairs of indices into them (each pair edges[i][0],
+// edges[i][1], ready for render_wireframe), and the counts. Memory: both arrays come from
+// malloc and belong to the caller, who frees them with free_soccer_ball(vertices, edges)
+// (or free() on each); every call allocates new ones. On failure (a NULL pointer argument,
+// no memory) the outputs are set to NULL / 0 where given and nothing is left allocated.
+//
+// The report printed its signature as
+//     void generate_soccer_ball(vec3_t **vertices, int *vertex_count, int *edges[][2],
+//                               int *edge_count)
+// where `int *edges[][2]` is, as a parameter, `int *(*edges)[2]`: no usable out-parameter
+// for an `int edges[][2]` array (its callers pass &edges as above). It is read here as what
+// its callers pass: the address of the caller's `int (*)[2]`, which receives the pairs.
+//  * C++: two overloads, ours returning 1 on success and 0 on failure, and the report's
+//    form (void). Both are templates, so a program's own generate_soccer_ball — any
+//    signature, static or not — is the one its calls reach.
+//  * C (one function per name): declared without a prototype (before C23), returning void,
+//    so both ways of writing the call compile, and so does a program's own definition of
+//    any form returning void with pointer or int parameters (the report's own
+//    demo/generate_soccer.c among them). Its success shows in *vertices != NULL. C23 has
+//    no declarations without a prototype: there it is declared with `int (**edges)[2]`.
+//  * The library's C symbol generate_soccer_ball is alone in its object file of the
+//    archive, so a program that defines its own never links the library's.
+TINY3D_C_BEGIN
 void free_soccer_ball(vec3_t *vertices, int (*edges)[2]);  // NULLs are ignored
+TINY3D_C_END
 
+#ifdef __cplusplus
+template <class = void>
+int generate_soccer_ball(vec3_t **vertices, int *vertex_count, int (**edges)[2], int *edge_count) {
+    return tiny3d::soccer_ball_arrays(vertices, vertex_count, edges, edge_count) ? 1 : 0;
+}
+// The report's printed form: `edges` is the address of the caller's int (*)[2] (above).
+template <class = void>
+void generate_soccer_ball(vec3_t **vertices, int *vertex_count, int *edges[][2], int *edge_count) {
+    tiny3d::soccer_ball_arrays(vertices, vertex_count, reinterpret_cast<int (**)[2]>(edges), edge_count);
+}
+#else
+#if defined(__STDC_VERSION__) && __STDC_VERSION__ >= 202311L
+void generate_soccer_ball(vec3_t **vertices, int *vertex_count, int (**edges)[2], int *edge_count);
+#else
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wstrict-prototypes"
+void generate_soccer_ball();
+#pragma GCC diagnostic pop
+#endif
+#endif
+
+#ifdef __cplusplus
 #include "compat/mesh_alias.h"  // other libtiny3d programs' name create_cube(…)
+#endif
 
 #endif

@@ -27,14 +27,17 @@
 #ifndef TINY3D_PIPELINE_H
 #define TINY3D_PIPELINE_H
 
-#include <array>
-
 #include "canvas.h"
 #include "math3d.h"
 #include "mesh.h"
 #include "tiny3d_result.h"
 
-// ---- the libtiny3d report's API ------------------------------------------------------
+#ifdef __cplusplus
+#include <array>
+#endif
+
+// ---- the libtiny3d report's API (C linkage; all a C program sees from this header) -----
+TINY3D_C_BEGIN
 
 // Transforms v by model, then by proj (two products, as the report), divides by w and
 // maps to the screen by the REPORT's viewport (above). Returns 1 and writes *x_out, *y_out in pixels when the point is in front of the
@@ -48,7 +51,9 @@ int project_vertex(vec3_t v, mat4_t model, mat4_t proj, int width, int height, f
 // (width/2, height/2), radius min(width, height)/2 — the report's circular viewport. False
 // for a null canvas or non-finite coordinates.
 bool clip_to_circular_viewport(canvas_t *c, float x, float y);
+TINY3D_C_END
 
+#ifdef __cplusplus
 namespace tiny3d {
 
 // ---- projection and viewport (src/pipeline/vertex_projection.cpp) ----------------------------
@@ -166,5 +171,6 @@ enum class cull_result { outside, intersecting, inside };
 cull_result cull_sphere(const frustum &f, const bounding_sphere &s);
 
 }  // namespace tiny3d
+#endif  // __cplusplus
 
 #endif

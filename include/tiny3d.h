@@ -12,10 +12,14 @@
 #include "lighting.h"
 #include "mesh.h"
 #include "pipeline.h"
+#ifdef __cplusplus  // C: the C parts of the headers above and renderer.h's
 #include "raster.h"
+#endif
 #include "wireframe.h"
+#ifdef __cplusplus
 #include "lab.h"
 #include "scene.h"
+#endif
 #include "renderer.h"  // the report's gathering header (its compat pins)
 
 #endif

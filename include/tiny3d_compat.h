@@ -24,6 +24,10 @@
 
 #include "tiny3d.h"
 
+#ifndef __cplusplus
+#error "tiny3d_compat.h is C++ (overloads); from C, canvas.h, math3d.h, renderer.h, lighting.h and animation.h give the C forms (documentation/compat.md)"
+#endif
+
 namespace tiny3d::compat_detail {
 inline mat4_t matrix_or_identity(const mat4_t *m) { return m ? *m : mat4_identity(); }
 inline vec3_t vector_or_zero(const vec3_t *v) { return v ? *v : vec3_t{0.0f, 0.0f, 0.0f}; }
@@ -32,8 +36,7 @@ inline void store(mat4_t *out, const mat4_t &value) {
 }
 }  // namespace tiny3d::compat_detail
 
-// ---- matrices: out-parameter builders (out first) --------------------------------------
-inline void mat4_identity(mat4_t *out) { tiny3d::compat_detail::store(out, mat4_identity()); }
+// ---- matrices: out-parameter builders (out first; mat4_identity(&m) is math3d.h's) -----
 inline void mat4_translate(mat4_t *out, float tx, float ty, float tz) {
     tiny3d::compat_detail::store(out, mat4_translate(tx, ty, tz));
 }
@@ -52,25 +55,14 @@ inline void mat4_frustum_asymmetric(mat4_t *out, float left, float right, float 
     tiny3d::compat_detail::store(out, mat4_frustum_asymmetric(left, right, bottom, top, near_plane, far_plane));
 }
 
-// mat4_frustum_asymmetric under its short name (glFrustum; bad arguments → identity).
-inline mat4_t mat4_frustum(float left, float right, float bottom, float top, float near_plane,
-                           float far_plane) {
-    return mat4_frustum_asymmetric(left, right, bottom, top, near_plane, far_plane);
-}
-
 // ---- matrices: pointer forms of the product (a·b, b applied first) ----------------------
+// (mat4_mul(&a, &b), mat4_mul(&out, &a, &b) and mat4_mul_vec3(&m, v) are math3d.h's.)
 inline mat4_t mat4_multiply(const mat4_t *a, const mat4_t *b) {
     return mat4_multiply(tiny3d::compat_detail::matrix_or_identity(a), tiny3d::compat_detail::matrix_or_identity(b));
 }
 // *out = a·b; out may be the same matrix as a or b.
 inline void mat4_multiply(mat4_t *out, const mat4_t *a, const mat4_t *b) {
     tiny3d::compat_detail::store(out, mat4_multiply(a, b));
-}
-inline mat4_t mat4_mul(const mat4_t *a, const mat4_t *b) { return mat4_multiply(a, b); }
-inline void mat4_mul(mat4_t *out, const mat4_t *a, const mat4_t *b) { mat4_multiply(out, a, b); }
-// apply_transform with the matrix by pointer (divides by w).
-inline vec3_t mat4_mul_vec3(const mat4_t *m, vec3_t v) {
-    return apply_transform(tiny3d::compat_detail::matrix_or_identity(m), v);
 }
 
 // ---- vectors ------------------------------------------------------------------------------
@@ -90,11 +82,10 @@ inline void vec3_update_spherical(vec3_t *v) { (void)v; }
 inline void vec3_update_cartesian(vec3_t *v) { (void)v; }
 
 // The small vector helpers many programs also define themselves (hence opt-in here).
+// (vec3_sub and vec3_length are math3d.h's.)
 inline vec3_t vec3_add(vec3_t a, vec3_t b) { return a + b; }
-inline vec3_t vec3_sub(vec3_t a, vec3_t b) { return a - b; }
 inline vec3_t vec3_scale(vec3_t v, float s) { return v * s; }
 inline float vec3_dot(vec3_t a, vec3_t b) { return tiny3d::vec3_dot(a, b); }
 inline vec3_t vec3_cross(vec3_t a, vec3_t b) { return tiny3d::vec3_cross(a, b); }  // right-handed
-inline float vec3_length(vec3_t v) { return tiny3d::vec3_length(v); }
 
 #endif

@@ -8,6 +8,26 @@
 #ifndef TINY3D_RESULT_H
 #define TINY3D_RESULT_H
 
+// ---- C and C++ from one header ----------------------------------------------------------
+// The report's API (canvas.h, math3d.h, renderer.h, lighting.h, animation.h) compiles as C11
+// and C++20. Its functions have C linkage: TINY3D_C_BEGIN / TINY3D_C_END wrap them in
+// extern "C" { } under C++ and are empty in C. TINY3D_DEFAULT(v) gives a struct member the
+// default initialiser `= v` in C++ (so `vec3_t v = {0};` stays warning-free under -Wextra)
+// and nothing in C; the layout is the same in both languages. Everything else in this file
+// (status, result) is C++ only.
+#ifdef __cplusplus
+#define TINY3D_C_BEGIN extern "C" {
+#define TINY3D_C_END }
+#define TINY3D_DEFAULT(...) = __VA_ARGS__
+#else
+#include <stdbool.h>
+#include <stddef.h>
+#define TINY3D_C_BEGIN
+#define TINY3D_C_END
+#define TINY3D_DEFAULT(...)
+#endif
+
+#ifdef __cplusplus
 #include <optional>
 #include <string>
 #include <utility>
@@ -73,5 +93,7 @@ private:
 };
 
 }  // namespace tiny3d
+
+#endif  // __cplusplus
 
 #endif

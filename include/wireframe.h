@@ -9,11 +9,13 @@
 #ifndef TINY3D_WIREFRAME_H
 #define TINY3D_WIREFRAME_H
 
+#ifdef __cplusplus
 #include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <span>
 #include <vector>
+#endif
 
 #include "canvas.h"
 #include "lines.h"
@@ -22,7 +24,8 @@
 #include "pipeline.h"
 #include "tiny3d_result.h"
 
-// ---- the libtiny3d report's API ------------------------------------------------------
+// ---- the libtiny3d report's API (C linkage; all a C program sees from this header) -----
+TINY3D_C_BEGIN
 
 // The report's wireframe: every edge (pairs of indices into vertices) transformed by
 // proj·model, clipped in clip space (cut at the near plane, never mirrored through w ≤ 0,
@@ -33,7 +36,9 @@
 // (nothing is printed). Allocates nothing.
 void render_wireframe(canvas_t *canvas, vec3_t *vertices, int vertex_count, int edges[][2],
                       int edge_count, mat4_t model, mat4_t proj);
+TINY3D_C_END
 
+#ifdef __cplusplus
 namespace tiny3d {
 
 // The depth buffer wireframe_options::depth_test reads (raster.h: the hidden-line test
@@ -153,5 +158,6 @@ status render_wireframe(canvas_t &canvas, const mesh &m, const mat4_t &model_vie
 bool depth_point_visible(const zbuffer &depth, float x, float y, float z, float bias = 1e-4f);
 
 }  // namespace tiny3d
+#endif  // __cplusplus
 
 #endif

@@ -80,12 +80,6 @@ void destroy_canvas(canvas_t *canvas) {
 
 void remove_canvas(canvas_t *canvas) { destroy_canvas(canvas); }
 
-void canvas_clear(canvas_t *canvas, float value) {
-    if (!canvas) return;
-    const float v = std::isnan(value) ? 0.0f : tiny3d::detail::clamp01(value);
-    std::fill(canvas->data, canvas->data + std::size_t(canvas->width) * std::size_t(canvas->height), v);
-}
-
 std::size_t canvas_count_differing(const canvas_t *canvas, float value) {
     if (!canvas) return 0;
     const float *begin = canvas->data, *end = canvas->data + std::size_t(canvas->width) * std::size_t(canvas->height);

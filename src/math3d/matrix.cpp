@@ -38,6 +38,10 @@ mat4_t mat4_scale(float sx, float sy, float sz) {
     return m;
 }
 
+mat4_t mat4_rotate_x(float angle) { return mat4_rotate_xyz(angle, 0.0f, 0.0f); }
+mat4_t mat4_rotate_y(float angle) { return mat4_rotate_xyz(0.0f, angle, 0.0f); }
+mat4_t mat4_rotate_z(float angle) { return mat4_rotate_xyz(0.0f, 0.0f, angle); }
+
 mat4_t mat4_rotate_xyz(float rx, float ry, float rz) {
     const float cx = std::cos(rx), sx = std::sin(rx);
     const float cy = std::cos(ry), sy = std::sin(ry);
@@ -67,10 +71,6 @@ vec4_t mat4_mul_vec4(mat4_t m, vec4_t v) {
 
 // ---- libtiny3d additions: rotations ------------------------------------------------------
 namespace tiny3d {
-
-mat4_t mat4_rotate_x(float angle) { return mat4_rotate_xyz(angle, 0.0f, 0.0f); }
-mat4_t mat4_rotate_y(float angle) { return mat4_rotate_xyz(0.0f, angle, 0.0f); }
-mat4_t mat4_rotate_z(float angle) { return mat4_rotate_xyz(0.0f, 0.0f, angle); }
 
 // Rodrigues: R = cos α·I + sin α·[k]× + (1 − cos α)·k kᵀ for the unit axis k.
 mat4_t mat4_rotate_axis(vec3_t axis, float angle) {

@@ -334,8 +334,8 @@ bool tiny3d::make_cube_arrays(vec3_t **vertices, int **edge_indices, int *vertex
     return copy_to_c_arrays(make_cube(1.0f), vertices, vertex_count, edge_indices, edge_count);
 }
 
-int generate_soccer_ball(vec3_t **vertices, int *vertex_count, int (**edges)[2], int *edge_count) {
-    return copy_to_c_arrays(tiny3d::make_soccer_ball(1.0f), vertices, vertex_count, edges, edge_count) ? 1 : 0;
+bool tiny3d::soccer_ball_arrays(vec3_t **vertices, int *vertex_count, int (**edges)[2], int *edge_count) {
+    return copy_to_c_arrays(make_soccer_ball(1.0f), vertices, vertex_count, edges, edge_count);
 }
 
 void free_soccer_ball(vec3_t *vertices, int (*edges)[2]) {
