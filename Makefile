@@ -145,7 +145,7 @@ include tests/compat/compat.mk
 # in the tree goes through src/simd_config.h (tests/check_simd_guards.sh) and that the
 # modules include each other one way (tests/check_header_layers.sh).
 PORTABLE_BUILD := $(BUILD)/portable
-plain-tests: $(TEST_BINS) $(DEMO_BINS) $(COMPAT_BINS)
+plain-tests: $(TEST_BINS) $(DEMO_BINS) $(COMPAT_BINS) $(COMPAT_C_BINS)
 test-portable:
 	@bash tests/check_simd_guards.sh
 	@bash tests/check_header_layers.sh

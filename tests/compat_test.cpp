@@ -2,7 +2,8 @@
 // implementations.
 //
 // The user-style programs tests/compat/*.c are compiled as C++ by `make tests` (g++
-// -std=c++20 -Wall -Wextra -Werror) into $BUILD/compat/ (BUILD from the environment,
+// -std=c++20 -Wall -Wextra -Werror) into $BUILD/compat/, and the C ones (report_demo,
+// lit_bezier, own_helpers) as C too, into $BUILD/compat/c11/ and gnu/ (BUILD from the environment,
 // default "build"); that they compile at all is half of the test (own_helpers.c defines its
 // own vec3_normalize & co. against the normal headers). This program runs each of them and
 // checks what they print against values computed here independently in double precision,
@@ -198,86 +199,92 @@ const dvec3 kLightDirection = {1, 1, 0.5};
 }  // namespace
 
 TEST(lit_bezier_positions_and_edge_lighting_match_double) {
-    scratch_dir dir;
-    const program_run r = run_program("lit_bezier", dir);
-    const auto frames = rows_of(r, "frame", 5);
-    CHECK_EQ(frames.size(), std::size_t(kBezierFrames + 1));
-    for (const auto &v : frames) {
-        check_near3(v, 2, bezier_ref(kP0, kP1, kP2, kP3, v[1]), kFloatTolerance * 4);
-    }
-    // The loop closes exactly: B(1) = p3 = p0 = B(0).
-    if (frames.size() == std::size_t(kBezierFrames + 1)) {
-        CHECK_EQ(frames.front()[2], frames.back()[2]);
-        CHECK_EQ(frames.front()[3], frames.back()[3]);
-    }
+    for (const std::string &program : c_and_cxx_builds("lit_bezier")) {
+        scratch_dir dir;
+        const program_run r = run_program(program, dir);
+        const auto frames = rows_of(r, "frame", 5);
+        CHECK_EQ(frames.size(), std::size_t(kBezierFrames + 1));
+        for (const auto &v : frames) {
+            check_near3(v, 2, bezier_ref(kP0, kP1, kP2, kP3, v[1]), kFloatTolerance * 4);
+        }
+        // The loop closes exactly: B(1) = p3 = p0 = B(0).
+        if (frames.size() == std::size_t(kBezierFrames + 1)) {
+            CHECK_EQ(frames.front()[2], frames.back()[2]);
+            CHECK_EQ(frames.front()[3], frames.back()[3]);
+        }
 
-    // Lit edge = intensity · clamp01(unit(b − a) · unit(L)) (the report's per-edge Lambert).
-    const auto edges = rows_of(r, "edge", 9);
-    CHECK_EQ(edges.size(), std::size_t(4 * (kBezierFrames + 1)));
-    int lit = 0, dark = 0;
-    for (const auto &v : edges) {
-        const double cosine = dot(unit(row3(v, 5) - row3(v, 2)), unit(kLightDirection));
-        const double expected = kLightIntensity * std::fmin(1.0, std::fmax(0.0, cosine));
-        CHECK_NEAR(v[8], expected, kFloatTolerance);
-        (expected > 0 ? lit : dark) += 1;
+        // Lit edge = intensity · clamp01(unit(b − a) · unit(L)) (the report's per-edge Lambert).
+        const auto edges = rows_of(r, "edge", 9);
+        CHECK_EQ(edges.size(), std::size_t(4 * (kBezierFrames + 1)));
+        int lit = 0, dark = 0;
+        for (const auto &v : edges) {
+            const double cosine = dot(unit(row3(v, 5) - row3(v, 2)), unit(kLightDirection));
+            const double expected = kLightIntensity * std::fmin(1.0, std::fmax(0.0, cosine));
+            CHECK_NEAR(v[8], expected, kFloatTolerance);
+            (expected > 0 ? lit : dark) += 1;
+        }
+        CHECK(lit > 0 && dark > 0);  // both branches of the clamp are exercised
     }
-    CHECK(lit > 0 && dark > 0);  // both branches of the clamp are exercised
 }
 
 TEST(lit_bezier_image_stays_in_the_circular_viewport) {
-    scratch_dir dir;
-    const program_run r = run_program("lit_bezier", dir);
-    const gray_image img = read_image(dir.file("lit_bezier.pgm"));
-    CHECK_EQ(img.width, int(kBezierSize));
-    if (img.width != int(kBezierSize)) return;
-    const double centre = kBezierSize / 2, radius = kBezierSize / 2;
-    // Segments join points inside the circle (convex), 1.5 px thick, splats reach 1 px more.
-    const double reach = 0.75 + 1.0 + 0.71;  // + half a pixel diagonal (pixel centres)
-    int ink_outside = 0;
-    for (int y = 0; y < img.height; ++y)
-        for (int x = 0; x < img.width; ++x)
-            if (std::hypot(x + 0.5 - centre, y + 0.5 - centre) > radius + reach) ink_outside += img.at(x, y) != 0;
-    CHECK_EQ(ink_outside, 0);
+    for (const std::string &program : c_and_cxx_builds("lit_bezier")) {
+        scratch_dir dir;
+        const program_run r = run_program(program, dir);
+        const gray_image img = read_image(dir.file("lit_bezier.pgm"));
+        CHECK_EQ(img.width, int(kBezierSize));
+        if (img.width != int(kBezierSize)) return;
+        const double centre = kBezierSize / 2, radius = kBezierSize / 2;
+        // Segments join points inside the circle (convex), 1.5 px thick, splats reach 1 px more.
+        const double reach = 0.75 + 1.0 + 0.71;  // + half a pixel diagonal (pixel centres)
+        int ink_outside = 0;
+        for (int y = 0; y < img.height; ++y)
+            for (int x = 0; x < img.width; ++x)
+                if (std::hypot(x + 0.5 - centre, y + 0.5 - centre) > radius + reach) ink_outside += img.at(x, y) != 0;
+        CHECK_EQ(ink_outside, 0);
 
-    // Every frame position well inside the circle is inked (its own splat puts ≥ 1/4 there);
-    // some positions are outside, so the viewport test above is not vacuous.
-    int outside = 0;
-    for (int k = 0; k <= kBezierFrames; ++k) {
-        const dvec3 p = bezier_ref(kP0, kP1, kP2, kP3, double(k) / kBezierFrames);
-        const double sx = centre + kBezierScale * p.x, sy = centre - kBezierScale * p.y;
-        const double d = std::hypot(sx - centre, sy - centre);
-        if (d > radius) ++outside;
-        if (d < radius - 1) CHECK_MSG(img.at(int(sx), int(sy)) > 0, "frame " + std::to_string(k));
+        // Every frame position well inside the circle is inked (its own splat puts ≥ 1/4 there);
+        // some positions are outside, so the viewport test above is not vacuous.
+        int outside = 0;
+        for (int k = 0; k <= kBezierFrames; ++k) {
+            const dvec3 p = bezier_ref(kP0, kP1, kP2, kP3, double(k) / kBezierFrames);
+            const double sx = centre + kBezierScale * p.x, sy = centre - kBezierScale * p.y;
+            const double d = std::hypot(sx - centre, sy - centre);
+            if (d > radius) ++outside;
+            if (d < radius - 1) CHECK_MSG(img.at(int(sx), int(sy)) > 0, "frame " + std::to_string(k));
+        }
+        CHECK(outside >= 3);
     }
-    CHECK(outside >= 3);
 }
 
 // ---- a program with its own vec3_normalize & co. ----------------------------------------------------
 
 TEST(own_helpers_program_compiles_and_reads_pixels_directly) {
-    scratch_dir dir;
-    const program_run r = run_program("own_helpers", dir);
-    if (const auto v = single_row(r, "own_normalize", 6); !v.empty()) check_near3(v, 3, {0.6, 0.8, 0}, 1e-7);
-    // Its own normalize leaves vectors shorter than 1e-6 alone (the library's would give
-    // (1, 0, 0)), and its own save writes ASCII P2 (the library's: binary P5).
-    if (const auto v = single_row(r, "own_normalize_tiny", 3); !v.empty())
-        CHECK(float(v[0]) == 1e-7f && v[1] == 0 && v[2] == 0);  // %.9g round-trips a float
-    CHECK(single_row(r, "own_cross", 9) == (std::vector<double>{1, 0, 0, 0, 1, 0, 0, 0, 1}));
-    CHECK(single_row(r, "own_dot", 7) == (std::vector<double>{1, 2, 3, 4, 5, 6, 32}));
-    CHECK(single_row(r, "own_add_scale", 3) == (std::vector<double>{2.5, 2, 1}));
-    if (const auto v = single_row(r, "library_normalize_fast", 6); !v.empty())
-        check_near3(v, 3, {0.6, 0.8, 0}, kQuakeTolerance);
+    for (const std::string &program : c_and_cxx_builds("own_helpers")) {
+        scratch_dir dir;
+        const program_run r = run_program(program, dir);
+        if (const auto v = single_row(r, "own_normalize", 6); !v.empty()) check_near3(v, 3, {0.6, 0.8, 0}, 1e-7);
+        // Its own normalize leaves vectors shorter than 1e-6 alone (the library's would give
+        // (1, 0, 0)), and its own save writes ASCII P2 (the library's: binary P5).
+        if (const auto v = single_row(r, "own_normalize_tiny", 3); !v.empty())
+            CHECK(float(v[0]) == 1e-7f && v[1] == 0 && v[2] == 0);  // %.9g round-trips a float
+        CHECK(single_row(r, "own_cross", 9) == (std::vector<double>{1, 0, 0, 0, 1, 0, 0, 0, 1}));
+        CHECK(single_row(r, "own_dot", 7) == (std::vector<double>{1, 2, 3, 4, 5, 6, 32}));
+        CHECK(single_row(r, "own_add_scale", 3) == (std::vector<double>{2.5, 2, 1}));
+        if (const auto v = single_row(r, "library_normalize_fast", 6); !v.empty())
+            check_near3(v, 3, {0.6, 0.8, 0}, kQuakeTolerance);
 
-    // The program's own P2 writer: set_pixel_f at a pixel centre (integer coordinates, the
-    // report's convention) lands on that pixel only,
-    // so row 3 holds (int)(x/15·255 + 0.5) and every other row 0.
-    CHECK(file_bytes(dir.file("own_helpers.pgm")).rfind("P2\n16 8\n255\n", 0) == 0);
-    const gray_image img = read_image(dir.file("own_helpers.pgm"));
-    CHECK_EQ(img.width, 16);
-    CHECK_EQ(img.height, 8);
-    if (img.width != 16 || img.height != 8) return;
-    for (int y = 0; y < 8; ++y)
-        for (int x = 0; x < 16; ++x) CHECK_EQ(img.at(x, y), y == 3 ? int(x / 15.0f * 255 + 0.5f) : 0);
+        // The program's own P2 writer: set_pixel_f at a pixel centre (integer coordinates, the
+        // report's convention) lands on that pixel only,
+        // so row 3 holds (int)(x/15·255 + 0.5) and every other row 0.
+        CHECK(file_bytes(dir.file("own_helpers.pgm")).rfind("P2\n16 8\n255\n", 0) == 0);
+        const gray_image img = read_image(dir.file("own_helpers.pgm"));
+        CHECK_EQ(img.width, 16);
+        CHECK_EQ(img.height, 8);
+        if (img.width != 16 || img.height != 8) return;
+        for (int y = 0; y < 8; ++y)
+            for (int x = 0; x < 16; ++x) CHECK_EQ(img.at(x, y), y == 3 ? int(x / 15.0f * 255 + 0.5f) : 0);
+    }
 }
 
 // ---- the opt-in header --------------------------------------------------------------------------------
@@ -342,46 +349,48 @@ TEST(compat_header_program_matches_double_and_saves_identical_files) {
 // ---- the report's own demo flow, with the report's names ---------------------------------------------
 
 TEST(report_demo_soccer_ball_camera_lighting_match_hand_computed_values) {
-    scratch_dir dir;
-    const program_run r = run_program("report_demo", dir);
-    CHECK(single_row(r, "soccer_counts", 2) == (std::vector<double>{60, 90}));
-    // A truncated icosahedron of circumradius R has edge a = 4R / √(58 + 18√5) (R ≈ 2.478 a).
-    const double edge = 4.0 / std::sqrt(58.0 + 18.0 * std::sqrt(5.0));
-    for (double v : single_row(r, "soccer_radius", 2)) CHECK_NEAR(v, 1.0, kFloatTolerance);
-    for (double v : single_row(r, "soccer_edge", 2)) CHECK_NEAR(v, edge, kFloatTolerance);
-    // glFrustum(−1, 1, −1, 1, 1, 10) at z = −2.5: NDC z = ((f+n)/(f−n)·2.5 − 2fn/(f−n)) / 2.5 = 1/3.
-    if (const auto v = single_row(r, "centre_ndc", 3); !v.empty()) check_near3(v, 0, {0, 0, 1.0 / 3.0}, kFloatTolerance);
+    for (const std::string &program : c_and_cxx_builds("report_demo")) {
+        scratch_dir dir;
+        const program_run r = run_program(program, dir);
+        CHECK(single_row(r, "soccer_counts", 2) == (std::vector<double>{60, 90}));
+        // A truncated icosahedron of circumradius R has edge a = 4R / √(58 + 18√5) (R ≈ 2.478 a).
+        const double edge = 4.0 / std::sqrt(58.0 + 18.0 * std::sqrt(5.0));
+        for (double v : single_row(r, "soccer_radius", 2)) CHECK_NEAR(v, 1.0, kFloatTolerance);
+        for (double v : single_row(r, "soccer_edge", 2)) CHECK_NEAR(v, edge, kFloatTolerance);
+        // glFrustum(−1, 1, −1, 1, 1, 10) at z = −2.5: NDC z = ((f+n)/(f−n)·2.5 − 2fn/(f−n)) / 2.5 = 1/3.
+        if (const auto v = single_row(r, "centre_ndc", 3); !v.empty()) check_near3(v, 0, {0, 0, 1.0 / 3.0}, kFloatTolerance);
 
-    // The ball (radius 1, centre 2.5 in front of the camera) projects inside the circle of
-    // NDC radius tan(asin(R/d)) = R/√(d² − R²) around the canvas centre; its silhouette
-    // vertices lie on the sphere, so ink reaches that circle to within a few pixels.
-    const gray_image img = read_image(dir.file("report_soccer.pgm"));
-    CHECK_EQ(img.width, 200);
-    if (img.width != 200 || img.height != 200) return;
-    const double silhouette_px = 100.0 / std::sqrt(2.5 * 2.5 - 1.0);
-    const double reach = 0.5 + 1.0 + 0.71;  // disc of thickness 1, splat, pixel-centre slack
-    double farthest_ink = 0;
-    for (int y = 0; y < 200; ++y)
-        for (int x = 0; x < 200; ++x)
-            if (img.at(x, y) != 0) farthest_ink = std::fmax(farthest_ink, std::hypot(x + 0.5 - 100, y + 0.5 - 100));
-    CHECK(farthest_ink <= silhouette_px + reach);
-    CHECK(farthest_ink >= silhouette_px - 3.0);
+        // The ball (radius 1, centre 2.5 in front of the camera) projects inside the circle of
+        // NDC radius tan(asin(R/d)) = R/√(d² − R²) around the canvas centre; its silhouette
+        // vertices lie on the sphere, so ink reaches that circle to within a few pixels.
+        const gray_image img = read_image(dir.file("report_soccer.pgm"));
+        CHECK_EQ(img.width, 200);
+        if (img.width != 200 || img.height != 200) return;
+        const double silhouette_px = 100.0 / std::sqrt(2.5 * 2.5 - 1.0);
+        const double reach = 0.5 + 1.0 + 0.71;  // disc of thickness 1, splat, pixel-centre slack
+        double farthest_ink = 0;
+        for (int y = 0; y < 200; ++y)
+            for (int x = 0; x < 200; ++x)
+                if (img.at(x, y) != 0) farthest_ink = std::fmax(farthest_ink, std::hypot(x + 0.5 - 100, y + 0.5 - 100));
+        CHECK(farthest_ink <= silhouette_px + reach);
+        CHECK(farthest_ink >= silhouette_px - 3.0);
 
-    if (const auto v = single_row(r, "light", 6); !v.empty()) {
-        check_near3(v, 0, {std::sin(double(0.25f)), 0, std::cos(double(0.25f))}, kFloatTolerance);
-        check_near3(v, 3, {1, 0, 0.25}, kFloatTolerance);
-    }
-    const dvec3 light = {std::sin(double(0.25f)), 0, std::cos(double(0.25f))};
-    const auto lit = rows_of(r, "lit_edge", 8);
-    CHECK_EQ(lit.size(), std::size_t(5));
-    for (const auto &v : lit)  // Lambert of an edge does not depend on where it has moved
-        CHECK_NEAR(v[7], std::fmax(0.0, dot(unit(row3(v, 4) - row3(v, 1)), light)), kFloatTolerance);
-    const auto path = rows_of(r, "bezier", 4);
-    CHECK_EQ(path.size(), std::size_t(5));
-    for (const auto &v : path) check_near3(v, 1, bezier_ref({0, 0, 0}, {1, 2, 0}, {3, 2, 1}, {4, 0, 0}, v[0]), kFloatTolerance * 4);
-    if (const auto v = single_row(r, "normalize_slerp", 6); !v.empty()) {
-        check_near3(v, 0, {0, 0, 1}, kQuakeTolerance);
-        check_near3(v, 3, {std::sqrt(0.5), 0, std::sqrt(0.5)}, kQuakeTolerance);
+        if (const auto v = single_row(r, "light", 6); !v.empty()) {
+            check_near3(v, 0, {std::sin(double(0.25f)), 0, std::cos(double(0.25f))}, kFloatTolerance);
+            check_near3(v, 3, {1, 0, 0.25}, kFloatTolerance);
+        }
+        const dvec3 light = {std::sin(double(0.25f)), 0, std::cos(double(0.25f))};
+        const auto lit = rows_of(r, "lit_edge", 8);
+        CHECK_EQ(lit.size(), std::size_t(5));
+        for (const auto &v : lit)  // Lambert of an edge does not depend on where it has moved
+            CHECK_NEAR(v[7], std::fmax(0.0, dot(unit(row3(v, 4) - row3(v, 1)), light)), kFloatTolerance);
+        const auto path = rows_of(r, "bezier", 4);
+        CHECK_EQ(path.size(), std::size_t(5));
+        for (const auto &v : path) check_near3(v, 1, bezier_ref({0, 0, 0}, {1, 2, 0}, {3, 2, 1}, {4, 0, 0}, v[0]), kFloatTolerance * 4);
+        if (const auto v = single_row(r, "normalize_slerp", 6); !v.empty()) {
+            check_near3(v, 0, {0, 0, 1}, kQuakeTolerance);
+            check_near3(v, 3, {std::sqrt(0.5), 0, std::sqrt(0.5)}, kQuakeTolerance);
+        }
     }
 }
 

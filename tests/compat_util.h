@@ -47,6 +47,13 @@ inline program_run run_program(const std::string &name, const scratch_dir &dir) 
     return r;
 }
 
+// The builds `make tests` makes of one program: as C++ (NAME) and, for the C programs
+// (COMPAT_C_NAMES in tests/compat/compat.mk), as strict C11 (c11/NAME) and in gcc's default
+// C (gnu/NAME). A test case that checks a C program runs each of the three.
+inline std::vector<std::string> c_and_cxx_builds(const std::string &name) {
+    return {name, "c11/" + name, "gnu/" + name};
+}
+
 // The numbers of every line that starts with `key` (the key itself and "->" skipped).
 inline std::vector<std::vector<double>> numbers_after(const program_run &r, const std::string &key) {
     std::vector<std::vector<double>> rows;

@@ -24,4 +24,29 @@ $(BUILD)/compat/$(1): $(patsubst tests/compat/%.c,$(BUILD)/compat/obj/%.o,$(sort
 endef
 $(foreach d,$(COMPAT_DIRS),$(eval $(call compat-folder-program,$(d))))
 
-tests: $(COMPAT_BINS)
+# ---- the same programs as C ----
+COMPAT_C_NAMES := c_names lit_bezier own_forms own_helpers report_demo
+COMPAT_CC      ?= gcc
+COMPAT_C_FLAGS_c11 := -std=c11 -Wall -Wextra -Wpedantic -Werror
+COMPAT_C_FLAGS_gnu := -Wall -Wextra -Werror
+COMPAT_C_LIBS  := -lstdc++ -lm -pthread
+COMPAT_C_BINS  := $(foreach v,c11 gnu,$(COMPAT_C_NAMES:%=$(BUILD)/compat/$(v)/%))
+
+define compat-c-variant
+$(BUILD)/compat/$(1)/%: tests/compat/%.c $(LIB)
+	@mkdir -p $$(@D)
+	$(COMPAT_CC) $(COMPAT_C_FLAGS_$(1)) $$(CPPFLAGS) -MF $$@.d -MT $$@ $$< $(LIB) -o $$@ $(COMPAT_C_LIBS)
+
+$(BUILD)/compat/$(1)/obj/%.o: tests/compat/%.c
+	@mkdir -p $$(@D)
+	$(COMPAT_CC) $(COMPAT_C_FLAGS_$(1)) $$(CPPFLAGS) -MF $$@.d -MT $$@ -c $$< -o $$@
+endef
+$(foreach v,c11 gnu,$(eval $(call compat-c-variant,$(v))))
+
+define compat-c-folder-program
+$(BUILD)/compat/$(2)/$(1): $(patsubst tests/compat/%.c,$(BUILD)/compat/$(2)/obj/%.o,$(sort $(wildcard tests/compat/$(1)/*.c))) $(LIB)
+	$(COMPAT_CC) $$(filter %.o,$$^) $(LIB) -o $$@ $(COMPAT_C_LIBS)
+endef
+$(foreach v,c11 gnu,$(foreach d,$(filter $(COMPAT_DIRS),$(COMPAT_C_NAMES)),$(eval $(call compat-c-folder-program,$(d),$(v)))))
+
+tests: $(COMPAT_BINS) $(COMPAT_C_BINS)

@@ -22,7 +22,10 @@ int main(int argc, char **argv) {
     vec3_t *vertices = NULL;
     int (*edges)[2] = NULL;
     int vertex_count = 0, edge_count = 0;
-    if (!generate_soccer_ball(&vertices, &vertex_count, &edges, &edge_count)) {
+    /* the report's generate_soccer_ball returns nothing: success shows in the arrays
+     * (also built as C, where that is the form declared) */
+    generate_soccer_ball(&vertices, &vertex_count, &edges, &edge_count);
+    if (!vertices || !edges) {
         fprintf(stderr, "soccer ball generation failed\n");
         return 1;
     }
