@@ -212,6 +212,8 @@ fuzz: $(FUZZ_BINS)
 # Headers go to $(INCLUDEDIR)/tiny3d/ (compile with -I that folder: #include "tiny3d.h"),
 # the library to $(LIBDIR), tiny3d.pc to $(PKGCONFIGDIR). The .pc names the final paths
 # (PREFIX); DESTDIR only prefixes where the files are copied (packaging, staged installs).
+# The flags serve C and C++ programs alike: no -std= in Cflags (C++ programs add -std=c++20),
+# and Libs name the C++ runtime, libm and threads, which a C program linked by gcc needs.
 PREFIX       ?= /usr/local
 LIBDIR       ?= $(PREFIX)/lib
 INCLUDEDIR   ?= $(PREFIX)/include
@@ -225,9 +227,9 @@ install: $(LIB)
 	for h in $(PUBLIC_HEADERS); do install -D -m 644 include/$$h $(DESTDIR)$(INCLUDEDIR)/tiny3d/$$h || exit 1; done
 	install -m 644 $(LIB) $(DESTDIR)$(LIBDIR)/libtiny3d.a
 	printf '%s\n' 'prefix=$(PREFIX)' 'libdir=$(LIBDIR)' 'includedir=$(INCLUDEDIR)' '' \
-	  'Name: tiny3d' 'Description: libtiny3d, a small C++20 software 3D renderer (static library)' \
-	  'Version: $(TINY3D_VERSION)' 'Cflags: -std=c++20 -I$${includedir}/tiny3d' \
-	  'Libs: -L$${libdir} -ltiny3d -pthread' > $(DESTDIR)$(PKGCONFIGDIR)/tiny3d.pc
+	  'Name: tiny3d' 'Description: libtiny3d, a small software 3D renderer with a C and a C++20 API (static library)' \
+	  'Version: $(TINY3D_VERSION)' 'Cflags: -I$${includedir}/tiny3d' \
+	  'Libs: -L$${libdir} -ltiny3d -lstdc++ -lm -pthread' > $(DESTDIR)$(PKGCONFIGDIR)/tiny3d.pc
 
 uninstall:
 	rm -rf $(DESTDIR)$(INCLUDEDIR)/tiny3d

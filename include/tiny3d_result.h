@@ -15,6 +15,9 @@
 // default initialiser `= v` in C++ (so `vec3_t v = {0};` stays warning-free under -Wextra)
 // and nothing in C; the layout is the same in both languages. Everything else in this file
 // (status, result) is C++ only.
+#if defined(__cplusplus) && __cplusplus < 202002L
+#error "libtiny3d's C++ API needs C++20: compile with -std=c++20 (C programs: any C11 compiler)"
+#endif
 #ifdef __cplusplus
 #define TINY3D_C_BEGIN extern "C" {
 #define TINY3D_C_END }
