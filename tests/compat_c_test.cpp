@@ -19,6 +19,7 @@
 //    own every time.
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,11 @@ TEST(c_names_values_match_double_formulas_in_c11_gnu_c_and_cxx) {
         if (first_output.empty()) first_output = r.lines;
         CHECK_MSG(r.lines == first_output, program + " printed other lines than the C++ build");
 
+        // The types' layout: the same in C as in C++ (this test's sizes).
+        CHECK(single_row(r, "layout", 7) ==
+              (std::vector<double>{double(sizeof(vec3_t)), double(sizeof(vec4_t)), double(sizeof(mat4_t)),
+                                   double(sizeof(canvas_t)), double(offsetof(canvas_t, pixels)),
+                                   double(sizeof(light_t)), double(offsetof(light_t, position))}));
         const double angle = double(float(M_PI / 5));  // the program's float angle
         if (const auto v = single_row(r, "angle", 1); !v.empty()) CHECK_EQ(float(v[0]), float(angle));  // %.9g: exact
         const dvec3 p{1, 2, 3};

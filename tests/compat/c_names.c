@@ -6,17 +6,23 @@
  * from math3d.h (also under strict -std=c11), compound literals and designated
  * initialisers. Built as strict C11, as gcc's default C and as C++ (tests/compat/compat.mk).
  * usage: c_names OUTDIR   (writes OUTDIR/c_names.pgm and OUTDIR/c_names_<name>.ppm) */
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 
 #include "animation.h"
 #include "canvas.h"
+#include "lighting.h"
 #include "math3d.h"
 
 static void print_vec(const char *label, vec3_t v) { printf("%s %.9g %.9g %.9g\n", label, v.x, v.y, v.z); }
 
 int main(int argc, char **argv) {
     const char *dir = argc > 1 ? argv[1] : ".";
+
+    /* the types' layout, which the C and C++ builds must share */
+    printf("layout %d %d %d %d %d %d %d\n", (int)sizeof(vec3_t), (int)sizeof(vec4_t), (int)sizeof(mat4_t),
+           (int)sizeof(canvas_t), (int)offsetof(canvas_t, pixels), (int)sizeof(light_t), (int)offsetof(light_t, position));
 
     /* rotations about each axis, by pi/5, of (1, 2, 3) */
     vec3_t p = vec3_from_cartesian(1, 2, 3);
