@@ -3,7 +3,7 @@
 //
 //   render FILE.obj|FILE.ply [--mode flat|gouraud|phong|wireframe|hidden-line]
 //          [--texture FILE.pgm] [--turntable N] [--eye X,Y,Z] [--target X,Y,Z] [--up X,Y,Z]
-//          [--fov DEG] [--ortho] [--light X,Y,Z[,I]]... [--ambient X] [--aa N] [--info] + the common
+//          [--fov DEG] [--ortho] [--light X,Y,Z[,I]]... [--ambient X] [--crease DEG] [--aa N] [--info] + the common
 //          options (--out, --frames, --size, --threads, --png); render --help explains each.
 //
 // The scene: the mesh turns about the up axis through its bounding sphere's centre, one
@@ -37,6 +37,7 @@ constexpr float kElevation = 0.35f;       // radians above the horizon (20°)
 constexpr float kFill = 0.85f;            // the bounding sphere spans this much of the view
 constexpr float kBackground = 0.04f;
 constexpr float kAmbient = 0.1f;
+constexpr double kDefaultCrease = 60.0;   // degrees: sharper edges stay sharp
 constexpr float kLightTotal = 0.85f;      // split evenly among the lights without an intensity
 constexpr float kEdgeThickness = 1.2f;    // px, wireframe modes
 constexpr float kFarInk = 0.35f;          // wireframe depth cue
@@ -50,6 +51,8 @@ struct settings {
     double fov_degrees = kDefaultFovDegrees;
     bool ortho = false, info = false;
     float ambient = kAmbient;
+    double crease = kDefaultCrease;
+    bool crease_given = false;
     std::vector<light_t> lights;  // camera frame; intensity < 0 = "split the rest evenly"
 };
 
@@ -218,6 +221,14 @@ int main(int argc, char **argv) {
                "intensity I (default: 0.85 shared by the lights without one); replaces the default two",
                [&s](const std::string &v) { return parse_light(v, s.lights); }, true);
     cli.number("--ambient", s.ambient, 0.0f, 1.0f, "ambient light 0..1 (default 0.1)");
+    cli.custom("--crease", "DEG",
+               "normals smooth across edges whose faces meet at up to DEG degrees and stay sharp across "
+               "sharper ones (default 60; 180 = smooth everywhere, 0 = flat faces); vertices at the same "
+               "position count as one. The mesh's own normals (OBJ vn, PLY nx,ny,nz) are used unless this is given",
+               [&s](const std::string &v) {
+                   s.crease_given = true;
+                   return demo::parse_number("--crease", v, 0.0, 180.0, s.crease);
+               });
     cli.flag("--info", s.info, "print the mesh's counts, bounds and loader warnings; render nothing");
     if (const int status = cli.parse(argc, argv); status >= 0) return status;
     if (s.up_given && !(tiny3d::vec3_length(s.up) > 0.0f)) return cli.usage_error("--up must not be zero, got '0,0,0'");
@@ -252,8 +263,8 @@ int main(int argc, char **argv) {
         if (!t) return cli.fail(t.message());
         tex = std::move(*t);
     }
-    auto shape = tiny3d::make_raster_mesh(m, m.corner_normals.empty() ? tiny3d::mesh_vertex_normals(m)
-                                                                       : std::vector<vec3_t>{});
+    if (m.corner_normals.empty() || s.crease_given) m.corner_normals = tiny3d::mesh_crease_normals(m, float(s.crease));
+    auto shape = tiny3d::make_raster_mesh(m, {});
     if (!shape) return cli.fail(shape.message());
     auto canvas = tiny3d::make_canvas(o.width, o.height);
     if (!canvas) return cli.fail(canvas.message());

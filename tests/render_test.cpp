@@ -3,8 +3,10 @@
 // projection, lit by a light given on the command line), textures, the auto-framed
 // turntable keeping a mesh inside every frame, hidden-line against wireframe, --info's
 // counts, and bad command lines (exit 2) and bad files (exit 1) writing nothing.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -12,6 +14,7 @@
 #include "program_runner.h"
 #include "math3d.h"
 #include "mesh.h"
+#include "seam_split.h"
 
 using namespace program_runner;
 
@@ -67,7 +70,111 @@ std::vector<std::string> with(std::vector<std::string> a, const std::vector<std:
     return a;
 }
 
+// m as OBJ text with one normal per position (vn, written to round-trip exactly).
+std::string obj_text_with_normals(const tiny3d::mesh &m, const std::vector<vec3_t> &normals) {
+    std::string text;
+    char line[128];
+    for (std::size_t i = 0; i < m.positions.size(); ++i) {
+        std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\nvn %.9g %.9g %.9g\n", m.positions[i].x, m.positions[i].y,
+                      m.positions[i].z, normals[i].x, normals[i].y, normals[i].z);
+        text += line;
+    }
+    for (std::size_t f = 0; f < m.face_count(); ++f) {
+        text += "f";
+        for (std::uint32_t k = m.face_start[f]; k < m.face_start[f + 1]; ++k)
+            text += " " + std::to_string(m.indices[k] + 1) + "//" + std::to_string(m.indices[k] + 1);
+        text += "\n";
+    }
+    return text;
+}
+
+// Renders the OBJ text `obj` as one frame with `args`; the frame, or an empty image.
+pgm_image render_text(const std::string &obj, std::vector<std::string> args) {
+    temp_dir dir;
+    write_file(dir.path / "mesh.obj", obj);
+    args.insert(args.begin(), (dir.path / "mesh.obj").string());
+    const run_result r = render(dir, with(args, {"--turntable", "1"}));
+    CHECK_MSG(r.exit_code == 0, r.err);
+    return r.exit_code == 0 ? frame(dir, "frame_000.pgm") : pgm_image{};
+}
+
+struct image_difference {
+    double mean = 1e9;
+    int worst = 255, over_8 = 0;
+};
+image_difference compare(const pgm_image &a, const pgm_image &b) {
+    image_difference d;
+    if (a.pixels.empty() || a.pixels.size() != b.pixels.size()) return d;
+    double sum = 0;
+    d.worst = 0;
+    for (std::size_t i = 0; i < a.pixels.size(); ++i) {
+        const int e = std::abs(int(a.pixels[i]) - int(b.pixels[i]));
+        sum += e;
+        d.worst = std::max(d.worst, e);
+        d.over_8 += e > 8;
+    }
+    d.mean = sum / double(a.pixels.size());
+    return d;
+}
+
 }  // namespace
+
+TEST(repeated_seam_vertices_render_as_the_welded_mesh) {
+    if (!render_built()) return;
+    // The teapot's case (its patches repeat the vertices of their seams), on a torus cut into
+    // patches of 37 faces: rendered as the welded torus. The same patched mesh with its
+    // per-position normals given as vn (what render drew before crease normals) shows seams.
+    const tiny3d::mesh whole = tiny3d::make_torus(1.0f, 0.4f, 48, 24);
+    const tiny3d::mesh patched = seam_split::split_into_patches(whole, 37);
+    const std::vector<std::string> view = {"--size", "512x512", "--eye", "1,-3.5,3.5"};
+    const pgm_image welded = render_text(obj_text(whole), view);
+    const pgm_image seamed = render_text(obj_text(patched), view);
+    const image_difference d = compare(welded, seamed);
+    CHECK_MSG(d.mean <= 0.05 && d.worst <= 8,
+              "mean " + std::to_string(d.mean) + ", worst " + std::to_string(d.worst));
+    const image_difference old =
+        compare(welded, render_text(obj_text_with_normals(patched, tiny3d::mesh_vertex_normals(patched)), view));
+    CHECK_MSG(old.over_8 > 100, std::to_string(old.over_8) + " pixels off by more than 8");
+}
+
+TEST(a_cube_of_eight_shared_corners_shows_flat_faces) {
+    if (!render_built()) return;
+    // Orthographic, directional lights, flat normals: every face one grey level. Pixels whose
+    // 5×5 neighbourhood is all ink (away from the silhouette) fall in at most 3 levels ±1
+    // (3 faces visible), bar the blended 1-pixel lines where faces meet. Smooth normals
+    // (--crease 180) shade a gradient across each face, which this test tells apart.
+    for (const char *crease : {"60", "180"}) {
+        const pgm_image img = render_text(obj_text(tiny3d::make_cube(1.0f)),
+                                          {"--size", "128x128", "--ortho", "--eye", "3,2,4", "--crease", crease});
+        if (img.pixels.empty()) continue;
+        std::map<int, int> levels;
+        int interior = 0;
+        for (int y = 2; y < img.height - 2; ++y)
+            for (int x = 2; x < img.width - 2; ++x) {
+                bool inked = true;
+                for (int dy = -2; dy <= 2; ++dy)
+                    for (int dx = -2; dx <= 2; ++dx) inked = inked && img.at(x + dx, y + dy) != background;
+                if (!inked) continue;
+                ++interior;
+                ++levels[img.at(x, y)];
+            }
+        // The three most common levels, each with its ±1 neighbours.
+        std::vector<std::pair<int, int>> by_count;
+        for (const auto &[v, n] : levels) by_count.push_back({n, v});
+        std::sort(by_count.rbegin(), by_count.rend());
+        int covered = 0;
+        for (const auto &[v, n] : levels)
+            for (std::size_t i = 0; i < std::min<std::size_t>(3, by_count.size()); ++i)
+                if (std::abs(v - by_count[i].second) <= 1) {
+                    covered += n;
+                    break;
+                }
+        const double fraction = interior > 0 ? double(covered) / interior : 0.0;
+        if (std::string(crease) == "60") CHECK_MSG(fraction > 0.96, std::to_string(fraction));
+        else CHECK_MSG(fraction < 0.5, std::to_string(fraction));
+        CHECK(interior > 128 * 128 / 5);
+    }
+}
 
 TEST(default_turntable_writes_36_frames_of_the_default_size) {
     if (!render_built()) return;
