@@ -3,7 +3,8 @@
 //
 //   render FILE.obj|FILE.ply [--mode flat|gouraud|phong|wireframe|hidden-line]
 //          [--texture FILE.pgm] [--turntable N] [--eye X,Y,Z] [--target X,Y,Z] [--up X,Y,Z]
-//          [--fov DEG] [--ortho] [--light X,Y,Z[,I]]... [--ambient X] [--crease DEG] [--aa N] [--info] + the common
+//          [--fov DEG] [--ortho] [--light X,Y,Z[,I]]... [--ambient X] [--specular KS] [--shininess S]
+//          [--crease DEG] [--aa N] [--info] + the common
 //          options (--out, --frames, --size, --threads, --png); render --help explains each.
 //
 // The scene: the mesh turns about the up axis through its bounding sphere's centre, one
@@ -38,6 +39,8 @@ constexpr float kFill = 0.85f;            // the bounding sphere spans this much
 constexpr float kBackground = 0.04f;
 constexpr float kAmbient = 0.1f;
 constexpr double kDefaultCrease = 60.0;   // degrees: sharper edges stay sharp
+constexpr float kSpecular = 0.25f;        // a modest plastic highlight (Blinn-Phong ks)
+constexpr float kShininess = 40.0f;       // its sharpness (exponent s)
 constexpr float kLightTotal = 0.85f;      // split evenly among the lights without an intensity
 constexpr float kEdgeThickness = 1.2f;    // px, wireframe modes
 constexpr float kFarInk = 0.35f;          // wireframe depth cue
@@ -52,6 +55,7 @@ struct settings {
     bool ortho = false, info = false;
     float ambient = kAmbient;
     double crease = kDefaultCrease;
+    float specular = kSpecular, shininess = kShininess;
     bool crease_given = false;
     std::vector<light_t> lights;  // camera frame; intensity < 0 = "split the rest evenly"
 };
@@ -221,6 +225,10 @@ int main(int argc, char **argv) {
                "intensity I (default: 0.85 shared by the lights without one); replaces the default two",
                [&s](const std::string &v) { return parse_light(v, s.lights); }, true);
     cli.number("--ambient", s.ambient, 0.0f, 1.0f, "ambient light 0..1 (default 0.1)");
+    cli.number("--specular", s.specular, 0.0f, 10.0f,
+               "Blinn-Phong highlight strength ks (default 0.25, a modest plastic; 0 = diffuse only)");
+    cli.number("--shininess", s.shininess, 1.0f, 10000.0f,
+               "highlight sharpness s: its size shrinks about as 1/s (default 40)");
     cli.custom("--crease", "DEG",
                "normals smooth across edges whose faces meet at up to DEG degrees and stay sharp across "
                "sharper ones (default 60; 180 = smooth everywhere, 0 = flat faces); vertices at the same "
@@ -277,6 +285,8 @@ int main(int argc, char **argv) {
     tiny3d::draw_params params;
     params.view_projection = view_projection;
     params.lights = *rig;
+    params.surface.specular = s.specular;
+    params.surface.shininess = s.shininess;
     params.shade = shading_named(s.mode);
     params.cull = cull_named(s.cull);
     params.tex = s.texture_path.empty() ? nullptr : &tex;

@@ -35,6 +35,7 @@
 
 #include "canvas.h"
 #include "lighting.h"
+#include "material.h"
 #include "math3d.h"
 #include "mesh.h"
 #include "tiny3d_result.h"
@@ -292,6 +293,11 @@ enum class shading { flat, gouraud, phong };
 //   flat:    shade_flat of the world-space triangle, once per triangle;
 //   gouraud: shade_gouraud_vertex per vertex, interpolated (screen-affine, like Scene S);
 //   phong:   normal and position interpolated per pixel, shade_phong_pixel.
+// With a material other than the default (material.h: kd = 1, ks = 0), every level lights
+// with its Blinn-Phong model instead, V towards the eye of view_projection (viewer_of): at
+// the triangle's centroid (flat), per vertex (gouraud) or per pixel (phong). The choice is
+// made once per draw; the default material takes the diffuse-only code above unchanged.
+// A material that fails check_material draws nothing.
 // With a texture, the shaded intensity is multiplied by the sampled texel (uv interpolated
 // perspective-correct or affine). alpha < 1: the triangles are queued and drawn at
 // end_frame(), after every opaque one, sorted back to front by mean depth (stable), blended
@@ -300,6 +306,7 @@ struct draw_params {
     mat4_t model;            // object → world
     mat4_t view_projection;  // world → clip (projection · view)
     light_rig lights;        // make_light_rig(...)
+    material surface;        // diffuse / specular / shininess (default: Lambert, no highlight)
     shading shade = shading::gouraud;
     cull_mode cull = cull_mode::back;
     depth_func depth = depth_func::less;

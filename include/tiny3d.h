@@ -10,6 +10,7 @@
 #include "canvas.h"
 #include "lines.h"
 #include "lighting.h"
+#include "material.h"
 #include "mesh.h"
 #include "pipeline.h"
 #include "raster.h"

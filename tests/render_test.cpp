@@ -62,8 +62,9 @@ void write_file(const fs::path &path, const std::string &bytes) {
 }
 
 // The cube's +z face head-on: eye on +z, orthographic, one frame.
+// Diffuse only (--specular 0): the values are Lambert's.
 const std::vector<std::string> head_on = {cube_obj, "--eye", "0,0,10", "--target", "0,0,0", "--ortho", "--turntable", "1",
-                                          "--size", "64x64"};
+                                          "--size", "64x64", "--specular", "0"};
 
 std::vector<std::string> with(std::vector<std::string> a, const std::vector<std::string> &more) {
     a.insert(a.end(), more.begin(), more.end());
@@ -145,7 +146,7 @@ TEST(a_cube_of_eight_shared_corners_shows_flat_faces) {
     // (--crease 180) shade a gradient across each face, which this test tells apart.
     for (const char *crease : {"60", "180"}) {
         const pgm_image img = render_text(obj_text(tiny3d::make_cube(1.0f)),
-                                          {"--size", "128x128", "--ortho", "--eye", "3,2,4", "--crease", crease});
+                                          {"--size", "128x128", "--ortho", "--eye", "3,2,4", "--crease", crease, "--specular", "0"});
         if (img.pixels.empty()) continue;
         std::map<int, int> levels;
         int interior = 0;
@@ -210,6 +211,30 @@ TEST(flat_gouraud_phong_give_the_lambert_value_on_a_face_seen_head_on) {
             for (const int p : {24, 32, 40}) CHECK_EQ(int(img.at(p, 32)), c.expected);
             CHECK_EQ(int(img.at(0, 0)), background);
             CHECK_EQ(int(img.at(63, 63)), background);
+        }
+}
+
+TEST(specular_adds_the_blinn_phong_highlight_by_hand) {
+    if (!render_built()) return;
+    // Orthographic, so V = +z everywhere; n = +z. I = 0.25 + 0.5·(n·L + ks·(n·h)^s):
+    //  render's default (ks 0.25, s 40), light along the view: h = n, 0.25 + 0.5·1.25 = 0.875 → 223;
+    //  ks 1, s 10, light 45° to the right: n·h = cos 22.5°, 0.25 + 0.5·(0.70711 + 0.45285) = 0.82998 → 212;
+    //  the same light behind the face: no diffuse, no highlight: 0.25 → 64.
+    const struct {
+        std::vector<std::string> args;
+        int expected;
+    } cases[] = {{{"--light", "0,0,1,0.5"}, 223},
+                 {{"--light", "1,0,1,0.5", "--specular", "1", "--shininess", "10"}, 212},
+                 {{"--light", "1,0,-1,0.5", "--specular", "1", "--shininess", "10"}, 64}};
+    std::vector<std::string> lit(head_on.begin(), head_on.end() - 2);  // without --specular 0
+    for (const char *mode : {"flat", "gouraud", "phong"})
+        for (const auto &c : cases) {
+            temp_dir dir;
+            const run_result r = render(dir, with(with(lit, {"--mode", mode, "--ambient", "0.25"}), c.args));
+            CHECK_MSG(r.exit_code == 0, r.err);
+            const pgm_image img = frame(dir, "frame_000.pgm");
+            if (img.width != 64) continue;
+            for (const int p : {24, 32, 40}) CHECK_EQ(int(img.at(p, 32)), c.expected);
         }
 }
 

@@ -27,10 +27,18 @@ struct pixel_shader {
     const draw_params &p;
     const generic_triangle &g;
     bool trilinear;
+    // How the shade is found, chosen once per triangle: interpolated (flat, Gouraud), Phong
+    // diffuse-only (the default material), or Phong with the material's Blinn-Phong model.
+    enum class source { interpolated, phong, phong_material } from;
+    viewer eye;
     uv_derivatives uv_d;
 
     pixel_shader(const draw_params &params, const generic_triangle &tri)
-        : p(params), g(tri), trilinear(params.tex && params.filter == texture_filter::trilinear) {
+        : p(params), g(tri), trilinear(params.tex && params.filter == texture_filter::trilinear),
+          from(params.shade != shading::phong          ? source::interpolated
+               : material_is_lambert(params.surface) ? source::phong
+                                                       : source::phong_material),
+          eye(from == source::phong_material ? viewer_of(params.view_projection) : viewer{}) {
         if (trilinear) {
             float texel_u[3], texel_v[3];  // the vertices' (u, v) in texels
             for (int k = 0; k < 3; ++k) {
@@ -52,9 +60,12 @@ struct pixel_shader {
         if (p.perspective_correct) w0 *= inv_b, w1 *= inv_b, w2 *= inv_b;
         auto lerp = [&](int slot) { return w0 * g.attr[0][slot] + w1 * g.attr[1][slot] + w2 * g.attr[2][slot]; };
         float shade;
-        if (p.shade == shading::phong)
+        if (from == source::phong)
             shade = shade_phong_pixel(p.lights, {lerp(ATTR_PX), lerp(ATTR_PY), lerp(ATTR_PZ)},
                                       {lerp(ATTR_NX), lerp(ATTR_NY), lerp(ATTR_NZ)});
+        else if (from == source::phong_material)
+            shade = shade_point_material(p.lights, p.surface, eye, {lerp(ATTR_PX), lerp(ATTR_PY), lerp(ATTR_PZ)},
+                                         unit_or_zero({lerp(ATTR_NX), lerp(ATTR_NY), lerp(ATTR_NZ)}));
         else shade = lerp(ATTR_SHADE);
         if (trilinear) shade *= texture_sample_trilinear(*p.tex, lerp(ATTR_U), lerp(ATTR_V), lod, p.wrap);
         else if (p.tex) shade *= texture_sample(*p.tex, lerp(ATTR_U), lerp(ATTR_V), p.filter, p.wrap);
