@@ -2,7 +2,7 @@
 // turntable (the default) or from a camera given on the command line.
 //
 //   render FILE.obj|FILE.ply [--mode flat|gouraud|phong|wireframe|hidden-line]
-//          [--texture FILE.pgm] [--turntable N] [--eye X,Y,Z] [--target X,Y,Z] [--up X,Y,Z]
+//          [--texture FILE.pgm [--filter nearest|bilinear|trilinear|anisotropic] [--anisotropy N]] [--turntable N] [--eye X,Y,Z] [--target X,Y,Z] [--up X,Y,Z]
 //          [--fov DEG] [--ortho] [--light X,Y,Z[,I]]... [--ambient X] [--specular KS] [--shininess S]
 //          [--crease DEG] [--aa N] [--info] + the common
 //          options (--out, --frames, --size, --threads, --png); render --help explains each.
@@ -47,7 +47,8 @@ constexpr float kFarInk = 0.35f;          // wireframe depth cue
 constexpr double kPi = 3.14159265358979323846;
 
 struct settings {
-    std::string path, mode = "phong", texture_path, lines = "coverage", cull = "back";
+    std::string path, mode = "phong", texture_path, lines = "coverage", cull = "back", filter = "trilinear";
+    int anisotropy = 8;
     int turntable = kDefaultTurntable;
     vec3_t eye{}, target{}, up{0, 1, 0};
     bool eye_given = false, target_given = false, up_given = false;
@@ -211,6 +212,11 @@ int main(int argc, char **argv) {
                "draws only the edges the mesh's own surface does not hide (back-facing and depth-tested)");
     cli.text("--texture", "FILE.pgm", s.texture_path,
              "multiply the shading by a grey PGM texture (the mesh needs texture coordinates)");
+    cli.choice("--filter", s.filter, {"nearest", "bilinear", "trilinear", "anisotropic"},
+               "the texture filter: trilinear (default: mipmaps, blended between levels), anisotropic (up to "
+               "--anisotropy trilinear taps along the pixel's footprint: sharp at grazing angles), bilinear or "
+               "nearest (the base level only)");
+    cli.integer("--anisotropy", s.anisotropy, 1, 64, "most taps of --filter anisotropic (default 8)");
     cli.choice("--lines", s.lines, {"coverage", "tabulated", "faithful"},
                "the line in the edge modes: exact coverage (default), tabulated or the report's draw_line_f");
     cli.choice("--cull", s.cull, {"back", "none", "front"}, "which faces to skip (default back)");
@@ -290,6 +296,11 @@ int main(int argc, char **argv) {
     params.shade = shading_named(s.mode);
     params.cull = cull_named(s.cull);
     params.tex = s.texture_path.empty() ? nullptr : &tex;
+    params.filter = s.filter == "nearest"       ? tiny3d::texture_filter::nearest
+                    : s.filter == "bilinear"    ? tiny3d::texture_filter::bilinear
+                    : s.filter == "anisotropic" ? tiny3d::texture_filter::anisotropic
+                                                : tiny3d::texture_filter::trilinear;
+    params.anisotropy = s.anisotropy;
     tiny3d::render_context ctx(o.threads);
 
     tiny3d::wireframe_options wire;

@@ -289,6 +289,39 @@ TEST(texture_multiplies_the_shading) {
     CHECK_EQ(int(img.at(40, 32)), 191);  // 0.75 · 1
 }
 
+TEST(texture_filters_minify_a_fine_checker_to_its_mean) {
+    if (!render_built()) return;
+    temp_dir dir;
+    // A 256² checker of single texels (0 and 1) on the head-on face, ~32 px across: 8 texels
+    // per pixel. Its mean is 0.5 at every mipmap level from 1 up, so trilinear (render's
+    // default) and anisotropic give 0.75 · 0.5 → 96 everywhere inside the face; bilinear
+    // and nearest read the base level and alias (values far from 96).
+    std::string pgm = "P5\n256 256\n255\n";
+    for (int j = 0; j < 256; ++j)
+        for (int i = 0; i < 256; ++i) pgm += char((i + j) % 2 ? 255 : 0);
+    write_file(dir.path / "checker.pgm", pgm);
+    const std::vector<std::string> base = with(head_on, {"--mode", "flat", "--light", "0,0,1,0.5", "--ambient", "0.25",
+                                                         "--texture", (dir.path / "checker.pgm").string()});
+    for (const char *filter : {"", "trilinear", "anisotropic", "bilinear", "nearest"}) {
+        const run_result r = render(dir, std::string(filter).empty() ? base : with(base, {"--filter", filter}));
+        CHECK_MSG(r.exit_code == 0, r.err);
+        const pgm_image img = frame(dir, "frame_000.pgm");
+        if (img.width != 64) continue;
+        int worst = 0;
+        for (int y = 20; y < 44; ++y)
+            for (int x = 20; x < 44; ++x) worst = std::max(worst, std::abs(int(img.at(x, y)) - 96));
+        const bool mipmapped = std::string(filter).empty() || std::string(filter) == "trilinear" ||
+                               std::string(filter) == "anisotropic";
+        if (mipmapped) CHECK_MSG(worst <= 2, std::string(filter) + ": " + std::to_string(worst));
+        else CHECK_MSG(worst > 30, std::string(filter) + ": " + std::to_string(worst));
+    }
+    for (const std::vector<std::string> &bad : {std::vector<std::string>{"--filter", "cubic"},
+                                                std::vector<std::string>{"--anisotropy", "0"}}) {
+        const run_result r = render(dir, with(base, bad));
+        CHECK_EQ(r.exit_code, 2);
+    }
+}
+
 TEST(auto_framing_keeps_the_mesh_inside_every_frame) {
     if (!render_built()) return;
     temp_dir dir;
