@@ -2,7 +2,8 @@
 // turntable (the default) or from a camera given on the command line.
 //
 //   render FILE.obj|FILE.ply [--mode flat|gouraud|phong|wireframe|hidden-line]
-//          [--texture FILE.pgm [--filter nearest|bilinear|trilinear|anisotropic] [--anisotropy N]] [--turntable N] [--eye X,Y,Z] [--target X,Y,Z] [--up X,Y,Z]
+//          [--texture FILE.pgm] [--filter nearest|bilinear|trilinear|anisotropic] [--anisotropy N]
+//          [--turntable N] [--eye X,Y,Z] [--target X,Y,Z] [--up X,Y,Z]
 //          [--fov DEG] [--ortho] [--light X,Y,Z[,I]]... [--ambient X] [--specular KS] [--shininess S]
 //          [--crease DEG] [--aa N] [--info] + the common
 //          options (--out, --frames, --size, --threads, --png); render --help explains each.
