@@ -1,5 +1,5 @@
 // material.h — surface materials with a Blinn-Phong highlight, and where the viewer is.
-// Implementations: src/lighting/material.cpp.
+// Implementations: src/material/material.cpp (the flat normal shared with src/lighting/).
 //
 // Model (Blinn 1977), for a point p with unit normal n, lights and ambient from a light_rig
 // (lighting.h: L_k towards light k, unit), V the unit vector from p towards the eye:

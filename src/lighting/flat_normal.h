@@ -1,5 +1,5 @@
 // flat_normal.h — the geometric normal flat shading lights (shared by lighting.cpp and
-// material.cpp; not installed).
+// src/material/material.cpp; not installed).
 #ifndef TINY3D_FLAT_NORMAL_H
 #define TINY3D_FLAT_NORMAL_H
 

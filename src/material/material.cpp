@@ -5,7 +5,7 @@
 #include <cmath>
 #include <string>
 
-#include "flat_normal.h"
+#include "../lighting/flat_normal.h"
 
 namespace tiny3d {
 
