@@ -132,7 +132,7 @@ int main(int argc, char **argv) {
     const demo::common_options &o = cli.common;
 
     tiny3d::scene scene;
-    scene.cam.eye = {0.0f, 0.6f, 9.0f};
+    scene.cam.eye = {0.0f, 0.6f, 10.5f};
     scene.cam.fov_y = 0.75f;
     scene.ambient = AMBIENT;
     scene.samples = o.samples;

@@ -2,8 +2,10 @@
 // turntable (the default) or from a camera given on the command line.
 //
 //   render FILE.obj|FILE.ply [--mode flat|gouraud|phong|wireframe|hidden-line]
-//          [--texture FILE.pgm] [--turntable N] [--eye X,Y,Z] [--target X,Y,Z] [--up X,Y,Z]
-//          [--fov DEG] [--ortho] [--light X,Y,Z[,I]]... [--ambient X] [--aa N] [--info] + the common
+//          [--texture FILE.pgm] [--filter nearest|bilinear|trilinear|anisotropic] [--anisotropy N]
+//          [--turntable N] [--eye X,Y,Z] [--target X,Y,Z] [--up X,Y,Z]
+//          [--fov DEG] [--ortho] [--light X,Y,Z[,I]]... [--ambient X] [--specular KS] [--shininess S]
+//          [--crease DEG] [--aa N] [--info] + the common
 //          options (--out, --frames, --size, --threads, --png); render --help explains each.
 //
 // The scene: the mesh turns about the up axis through its bounding sphere's centre, one
@@ -37,19 +39,26 @@ constexpr float kElevation = 0.35f;       // radians above the horizon (20°)
 constexpr float kFill = 0.85f;            // the bounding sphere spans this much of the view
 constexpr float kBackground = 0.04f;
 constexpr float kAmbient = 0.1f;
+constexpr double kDefaultCrease = 60.0;   // degrees: sharper edges stay sharp
+constexpr float kSpecular = 0.25f;        // a modest plastic highlight (Blinn-Phong ks)
+constexpr float kShininess = 40.0f;       // its sharpness (exponent s)
 constexpr float kLightTotal = 0.85f;      // split evenly among the lights without an intensity
 constexpr float kEdgeThickness = 1.2f;    // px, wireframe modes
 constexpr float kFarInk = 0.35f;          // wireframe depth cue
 constexpr double kPi = 3.14159265358979323846;
 
 struct settings {
-    std::string path, mode = "phong", texture_path, lines = "coverage", cull = "back";
+    std::string path, mode = "phong", texture_path, lines = "coverage", cull = "back", filter = "trilinear";
+    int anisotropy = 8;
     int turntable = kDefaultTurntable;
     vec3_t eye{}, target{}, up{0, 1, 0};
     bool eye_given = false, target_given = false, up_given = false;
     double fov_degrees = kDefaultFovDegrees;
     bool ortho = false, info = false;
     float ambient = kAmbient;
+    double crease = kDefaultCrease;
+    float specular = kSpecular, shininess = kShininess;
+    bool crease_given = false;
     std::vector<light_t> lights;  // camera frame; intensity < 0 = "split the rest evenly"
 };
 
@@ -204,6 +213,11 @@ int main(int argc, char **argv) {
                "draws only the edges the mesh's own surface does not hide (back-facing and depth-tested)");
     cli.text("--texture", "FILE.pgm", s.texture_path,
              "multiply the shading by a grey PGM texture (the mesh needs texture coordinates)");
+    cli.choice("--filter", s.filter, {"nearest", "bilinear", "trilinear", "anisotropic"},
+               "the texture filter: trilinear (default: mipmaps, blended between levels), anisotropic (up to "
+               "--anisotropy trilinear taps along the pixel's footprint: sharp at grazing angles), bilinear or "
+               "nearest (the base level only)");
+    cli.integer("--anisotropy", s.anisotropy, 1, 64, "most taps of --filter anisotropic (default 8)");
     cli.choice("--lines", s.lines, {"coverage", "tabulated", "faithful"},
                "the line in the edge modes: exact coverage (default), tabulated or the report's draw_line_f");
     cli.choice("--cull", s.cull, {"back", "none", "front"}, "which faces to skip (default back)");
@@ -218,6 +232,18 @@ int main(int argc, char **argv) {
                "intensity I (default: 0.85 shared by the lights without one); replaces the default two",
                [&s](const std::string &v) { return parse_light(v, s.lights); }, true);
     cli.number("--ambient", s.ambient, 0.0f, 1.0f, "ambient light 0..1 (default 0.1)");
+    cli.number("--specular", s.specular, 0.0f, 10.0f,
+               "Blinn-Phong highlight strength ks (default 0.25, a modest plastic; 0 = diffuse only)");
+    cli.number("--shininess", s.shininess, 1.0f, 10000.0f,
+               "highlight sharpness s: its size shrinks about as 1/s (default 40)");
+    cli.custom("--crease", "DEG",
+               "normals smooth across edges whose faces meet at up to DEG degrees and stay sharp across "
+               "sharper ones (default 60; 180 = smooth everywhere, 0 = flat faces); vertices at the same "
+               "position count as one. The mesh's own normals (OBJ vn, PLY nx,ny,nz) are used unless this is given",
+               [&s](const std::string &v) {
+                   s.crease_given = true;
+                   return demo::parse_number("--crease", v, 0.0, 180.0, s.crease);
+               });
     cli.flag("--info", s.info, "print the mesh's counts, bounds and loader warnings; render nothing");
     if (const int status = cli.parse(argc, argv); status >= 0) return status;
     if (s.up_given && !(tiny3d::vec3_length(s.up) > 0.0f)) return cli.usage_error("--up must not be zero, got '0,0,0'");
@@ -252,8 +278,8 @@ int main(int argc, char **argv) {
         if (!t) return cli.fail(t.message());
         tex = std::move(*t);
     }
-    auto shape = tiny3d::make_raster_mesh(m, m.corner_normals.empty() ? tiny3d::mesh_vertex_normals(m)
-                                                                       : std::vector<vec3_t>{});
+    if (m.corner_normals.empty() || s.crease_given) m.corner_normals = tiny3d::mesh_crease_normals(m, float(s.crease));
+    auto shape = tiny3d::make_raster_mesh(m, {});
     if (!shape) return cli.fail(shape.message());
     auto canvas = tiny3d::make_canvas(o.width, o.height);
     if (!canvas) return cli.fail(canvas.message());
@@ -266,9 +292,16 @@ int main(int argc, char **argv) {
     tiny3d::draw_params params;
     params.view_projection = view_projection;
     params.lights = *rig;
+    params.surface.specular = s.specular;
+    params.surface.shininess = s.shininess;
     params.shade = shading_named(s.mode);
     params.cull = cull_named(s.cull);
     params.tex = s.texture_path.empty() ? nullptr : &tex;
+    params.filter = s.filter == "nearest"       ? tiny3d::texture_filter::nearest
+                    : s.filter == "bilinear"    ? tiny3d::texture_filter::bilinear
+                    : s.filter == "anisotropic" ? tiny3d::texture_filter::anisotropic
+                                                : tiny3d::texture_filter::trilinear;
+    params.anisotropy = s.anisotropy;
     tiny3d::render_context ctx(o.threads);
 
     tiny3d::wireframe_options wire;

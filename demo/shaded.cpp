@@ -68,7 +68,7 @@ int main(int argc, char **argv) {
     if (!rig) return cli.fail(rig.message());
     const float aspect = static_cast<float>(o.width) / static_cast<float>(o.height);
     const mat4_t view_projection = mat4_multiply(tiny3d::mat4_perspective(radians(45), aspect, 0.1f, 100.0f),
-                                                 tiny3d::mat4_look_at({0, 0, 9.5f}, {0, 0, 0}, {0, 1, 0}));
+                                                 tiny3d::mat4_look_at({0, 0, 11.5f}, {0, 0, 0}, {0, 1, 0}));
     tiny3d::render_context ctx(o.threads);
     demo::progress timer("shaded", o.frames_to_render());
     for (int frame = o.first_frame; frame <= o.last_frame; ++frame) {

@@ -91,6 +91,19 @@ std::vector<vec3_t> mesh_face_normals(const mesh &m);
 // face uses, or whose weighted sum vanishes, get (0, 0, 0).
 std::vector<vec3_t> mesh_vertex_normals(const mesh &m);
 
+// Unit normal per CORNER (parallel to m.indices, ready for m.corner_normals) that keeps
+// creases: corners at the same position — compared by value, so a mesh whose patches repeat
+// their seam vertices is smoothed across the seams as if welded — share the angle-weighted
+// normal (as mesh_vertex_normals) of those faces there whose unit normal is within
+// crease_degrees of the corner's own face's normal, and no other. So edges sharper than
+// the crease stay sharp and smoother ones are shaded smooth. crease_degrees ≥ 180 (or NaN)
+// smooths everywhere: the corner gets exactly mesh_vertex_normals' value when no two
+// positions coincide; 0 gives each face its own normal (coplanar faces still share). A
+// corner of a degenerate face (zero normal) takes every face at its position. Corners of
+// faces with out-of-range indices, or a malformed face_start, get (0, 0, 0). Sort-based
+// weld, then O(Σ valence²) over the welded positions.
+std::vector<vec3_t> mesh_crease_normals(const mesh &m, float crease_degrees);
+
 // Which faces border each edge of m.edges, in compressed rows: the faces of edge e are
 // faces[start[e]] .. faces[start[e + 1] − 1] (a closed 2-manifold gives exactly 2 each;
 // boundary edges 1; non-manifold edges more). Needs m.edges derived by mesh_derive_edges

@@ -35,6 +35,7 @@
 
 #include "canvas.h"
 #include "lighting.h"
+#include "material.h"
 #include "math3d.h"
 #include "mesh.h"
 #include "tiny3d_result.h"
@@ -157,7 +158,11 @@ void fill_triangle_scanline(canvas_t &canvas, zbuffer *depth, const screen_verte
 // render context computes the level of detail per pixel from the screen-space
 // derivatives of (u, v) (texture_lod); texture_sample, which has no derivatives, treats
 // trilinear as bilinear.
-enum class texture_filter { nearest, bilinear, trilinear };
+// anisotropic: up to draw_params::anisotropy trilinear lookups spread along the major axis
+// of the pixel's footprint in texture space, the level chosen from the minor axis
+// (texture_sample_anisotropic): sharp where trilinear blurs a surface seen at a grazing
+// angle. texture_sample treats it as bilinear too.
+enum class texture_filter { nearest, bilinear, trilinear, anisotropic };
 enum class texture_wrap { repeat, clamp };
 
 // One mipmap level: width × height texels, the same layout as the base level.
@@ -204,6 +209,16 @@ float texture_sample_trilinear(const texture &tex, float u, float v, float lod, 
 // Samples at (u, v) (1 = the full texture) in the base level. repeat wraps u, v modulo 1;
 // clamp holds the edge texels. Non-finite u or v returns 0.
 float texture_sample(const texture &tex, float u, float v, texture_filter filter, texture_wrap wrap);
+
+// Anisotropic lookup at (u, v) for a pixel whose screen steps move (u, v) by (du_dx, dv_dx)
+// and (du_dy, dv_dy) (texture units per pixel, as texture_lod): the footprint's axes in
+// texels have lengths P_major ≥ P_minor (EXT_texture_filter_anisotropic); N = ⌈P_major /
+// P_minor⌉ taps, clamped to 1..max_taps (max_taps clamped to 1..64), at level of detail
+// log2(P_major / N), spaced evenly along the major axis across the footprint and averaged.
+// An isotropic footprint gives one tap: texture_sample_trilinear. Non-finite u or v returns
+// 0; non-finite derivatives give one lookup at the base level.
+float texture_sample_anisotropic(const texture &tex, float u, float v, float du_dx, float dv_dx, float du_dy,
+                                 float dv_dy, int max_taps, texture_wrap wrap);
 
 // ---- meshes prepared for rasterization and the render context --------------------------
 
@@ -292,6 +307,11 @@ enum class shading { flat, gouraud, phong };
 //   flat:    shade_flat of the world-space triangle, once per triangle;
 //   gouraud: shade_gouraud_vertex per vertex, interpolated (screen-affine, like Scene S);
 //   phong:   normal and position interpolated per pixel, shade_phong_pixel.
+// With a material other than the default (material.h: kd = 1, ks = 0), every level lights
+// with its Blinn-Phong model instead, V towards the eye of view_projection (viewer_of): at
+// the triangle's centroid (flat), per vertex (gouraud) or per pixel (phong). The choice is
+// made once per draw; the default material takes the diffuse-only code above unchanged.
+// A material that fails check_material draws nothing.
 // With a texture, the shaded intensity is multiplied by the sampled texel (uv interpolated
 // perspective-correct or affine). alpha < 1: the triangles are queued and drawn at
 // end_frame(), after every opaque one, sorted back to front by mean depth (stable), blended
@@ -300,12 +320,14 @@ struct draw_params {
     mat4_t model;            // object → world
     mat4_t view_projection;  // world → clip (projection · view)
     light_rig lights;        // make_light_rig(...)
+    material surface;        // diffuse / specular / shininess (default: Lambert, no highlight)
     shading shade = shading::gouraud;
     cull_mode cull = cull_mode::back;
     depth_func depth = depth_func::less;
     float alpha = 1.0f;                            // < 1: translucent
     const texture *tex = nullptr;                  // optional, must outlive end_frame()
     texture_filter filter = texture_filter::bilinear;
+    int anisotropy = 8;                            // most taps of texture_filter::anisotropic
     texture_wrap wrap = texture_wrap::repeat;
     bool perspective_correct = true;               // uv / normal interpolation
     // Optional, from make_raster_clusters(mesh); must outlive the draw call. Used for opaque

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Checks that the modules depend on each other one way (run by `make test-portable`). The
 # modules, lowest first; a module may include only modules before it:
-LAYERS="tiny3d_result math3d animation canvas lines lighting mesh pipeline parallel raster wireframe lab scene"
+LAYERS="tiny3d_result math3d animation canvas lines lighting material mesh pipeline parallel raster wireframe lab scene"
 # Checked: every include/<module>.h and every file under src/<module>/ (its "<module>.h"
 # includes and its "../<folder>/…" includes). The compat layer's two documented exceptions
 # are not module headers: include/compat/canvas_alias.h pulls in lines.h (the report's

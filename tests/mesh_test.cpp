@@ -10,6 +10,7 @@
 #include "harness.h"
 #include "math3d.h"
 #include "mesh.h"
+#include "seam_split.h"
 
 using namespace tiny3d;
 
@@ -220,6 +221,84 @@ TEST(vertex_normals_angle_weighted) {
     flat.add_face({0, 1, 2});
     const vec3_t z = mesh_face_normals(flat)[0];
     CHECK(z.x == 0 && z.y == 0 && z.z == 0);
+}
+
+TEST(crease_normals_at_180_are_the_vertex_normals_bit_for_bit) {
+    // No repeated positions: a full crease gives every corner its position's normal exactly.
+    for (const mesh &m : {make_icosphere(2), make_torus(1.0f, 0.4f, 24, 12), make_cube(1.0f)}) {
+        const std::vector<vec3_t> per_position = mesh_vertex_normals(m);
+        for (float crease : {180.0f, 400.0f, NAN}) {
+            const std::vector<vec3_t> per_corner = mesh_crease_normals(m, crease);
+            CHECK_EQ(per_corner.size(), m.indices.size());
+            int differing = 0;
+            for (std::size_t k = 0; k < m.indices.size(); ++k) {
+                const vec3_t a = per_corner[k], b = per_position[m.indices[k]];
+                differing += a.x != b.x || a.y != b.y || a.z != b.z;
+            }
+            CHECK_EQ(differing, 0);
+        }
+    }
+}
+
+TEST(crease_normals_keep_a_cubes_edges_sharp) {
+    // 8 shared corners, faces at 90°: any crease below 90° gives each corner its face's normal
+    // (quads or their triangles alike); 90° and more blend the three faces, as (1,1,1)/√3.
+    const mesh cube = make_cube(1.0f);
+    const std::vector<vec3_t> face = mesh_face_normals(cube);
+    for (float crease : {0.0f, 30.0f, 60.0f, 89.0f}) {
+        const std::vector<vec3_t> n = mesh_crease_normals(cube, crease);
+        for (std::size_t f = 0; f < cube.face_count(); ++f)
+            for (std::uint32_t k = cube.face_start[f]; k < cube.face_start[f + 1]; ++k)
+                CHECK_NEAR(dot_d(n[k], face[f]), 1.0, 1e-6);
+    }
+    const std::vector<vec3_t> smooth = mesh_crease_normals(cube, 91.0f);
+    for (std::size_t k = 0; k < cube.indices.size(); ++k) {
+        const vec3_t p = cube.positions[cube.indices[k]];  // corner (±1, ±1, ±1)
+        CHECK_NEAR(dot_d(smooth[k], p), std::sqrt(3.0), 1e-5);
+    }
+}
+
+TEST(crease_normals_smooth_across_repeated_seam_vertices) {
+    // A torus cut into patches of 37 faces (the teapot's case: seams repeat their vertices).
+    // Per-position normals crease along the seams; crease normals are the welded mesh's.
+    const mesh whole = make_torus(1.0f, 0.4f, 32, 16);
+    const mesh patched = seam_split::split_into_patches(whole, 37);
+    CHECK(patched.positions.size() > whole.positions.size() + 100);
+    const std::vector<vec3_t> welded = mesh_crease_normals(whole, 60.0f);
+    const std::vector<vec3_t> seamed = mesh_crease_normals(patched, 60.0f);
+    const std::vector<vec3_t> old_style = mesh_vertex_normals(patched);
+    double worst = 0, worst_old = 0;
+    for (std::size_t k = 0; k < whole.indices.size(); ++k) {
+        worst = std::max(worst, 1.0 - dot_d(welded[k], seamed[k]));
+        worst_old = std::max(worst_old, 1.0 - dot_d(welded[k], old_style[patched.indices[k]]));
+    }
+    CHECK(worst < 1e-7);
+    CHECK(worst_old > 1e-3);  // the seams the per-position normals show
+    // Neighbouring faces of this torus meet at 32° at most (22.5° around the tube, both
+    // steps on the diagonal): a 45° crease is as smooth as 60°, and 0° gives every corner its
+    // own face's normal (a faceted torus).
+    const std::vector<vec3_t> face = mesh_face_normals(whole);
+    const std::vector<vec3_t> faceted = mesh_crease_normals(patched, 0.0f);
+    for (std::size_t f = 0; f < whole.face_count(); ++f)
+        for (std::uint32_t k = whole.face_start[f]; k < whole.face_start[f + 1]; ++k)
+            CHECK_NEAR(dot_d(faceted[k], face[f]), 1.0, 1e-6);
+    const std::vector<vec3_t> at45 = mesh_crease_normals(patched, 45.0f);
+    for (std::size_t k = 0; k < whole.indices.size(); ++k) CHECK_NEAR(dot_d(at45[k], welded[k]), 1.0, 1e-7);
+}
+
+TEST(crease_normals_of_bad_meshes_are_zero_not_nan) {
+    mesh m;
+    m.positions = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}};
+    m.add_face({0, 1, 2});  // degenerate: takes every face at its positions
+    m.add_face({0, 1, 3});
+    m.add_face({0, 1, 9});  // out of range
+    const std::vector<vec3_t> n = mesh_crease_normals(m, 10.0f);
+    CHECK_EQ(n.size(), 9u);
+    CHECK_NEAR(n[0].z, 1.0, 1e-6);  // face 1's normal, +z
+    CHECK(n[2].x == 0 && n[2].y == 0 && n[2].z == 0);  // position 2: only the degenerate face
+    for (int k = 6; k < 9; ++k) CHECK(n[k].x == 0 && n[k].y == 0 && n[k].z == 0);
+    m.face_start.back() = 99;  // malformed
+    for (const vec3_t &v : mesh_crease_normals(m, 60.0f)) CHECK(v.x == 0 && v.y == 0 && v.z == 0);
 }
 
 TEST(adjacency_closed_meshes_two_faces_per_edge) {

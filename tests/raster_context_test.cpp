@@ -142,6 +142,35 @@ TEST(clip_polygon_against_the_near_plane) {
     CHECK_EQ(clip_polygon(in, 3, clip_near, 1.0f, 0, out), 0);
 }
 
+TEST(crease_normals_at_180_draw_todays_image_bit_for_bit) {
+    // What render draws (per-corner crease normals, --crease 180) against what it drew before
+    // (shared vertices with per-position normals), on meshes without repeated positions.
+    for (const mesh &m : {make_torus(1.0f, 0.35f, 40, 20), make_icosphere(3)}) {
+        mesh plain = m;
+        plain.corner_uvs.clear();
+        const raster_mesh shared = make_raster_mesh(plain, mesh_vertex_normals(plain)).value();
+        plain.corner_normals = mesh_crease_normals(plain, 180.0f);
+        const raster_mesh cornered = make_raster_mesh(plain, {}).value();
+        for (shading level : {shading::gouraud, shading::phong}) {
+            draw_params p = raster_test::scene_s_params();
+            p.model = mat4_rotate_xyz(0.7f, 0.3f, 0);
+            p.shade = level;
+            canvas_ptr a = make_canvas(160, 120).value(), b = make_canvas(160, 120).value();
+            render_context ctx(1);
+            CHECK(draw_frame(ctx, *a, shared, p).ok());
+            CHECK(draw_frame(ctx, *b, cornered, p).ok());
+            int differing = 0, lit = 0;
+            for (int y = 0; y < 120; ++y)
+                for (int x = 0; x < 160; ++x) {
+                    differing += a->pixels[y][x] != b->pixels[y][x];
+                    lit += a->pixels[y][x] > 0.2f;
+                }
+            CHECK_EQ(differing, 0);
+            CHECK(lit > 1000);
+        }
+    }
+}
+
 TEST(two_threads_give_the_same_image_as_one) {
     mesh torus = make_torus(1.0f, 0.35f, 40, 20);
     const std::vector<vec3_t> normals = mesh_vertex_normals(torus);

@@ -3,8 +3,10 @@
 // projection, lit by a light given on the command line), textures, the auto-framed
 // turntable keeping a mesh inside every frame, hidden-line against wireframe, --info's
 // counts, and bad command lines (exit 2) and bad files (exit 1) writing nothing.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -12,6 +14,7 @@
 #include "program_runner.h"
 #include "math3d.h"
 #include "mesh.h"
+#include "seam_split.h"
 
 using namespace program_runner;
 
@@ -59,15 +62,120 @@ void write_file(const fs::path &path, const std::string &bytes) {
 }
 
 // The cube's +z face head-on: eye on +z, orthographic, one frame.
+// Diffuse only (--specular 0): the values are Lambert's.
 const std::vector<std::string> head_on = {cube_obj, "--eye", "0,0,10", "--target", "0,0,0", "--ortho", "--turntable", "1",
-                                          "--size", "64x64"};
+                                          "--size", "64x64", "--specular", "0"};
 
 std::vector<std::string> with(std::vector<std::string> a, const std::vector<std::string> &more) {
     a.insert(a.end(), more.begin(), more.end());
     return a;
 }
 
+// m as OBJ text with one normal per position (vn, written to round-trip exactly).
+std::string obj_text_with_normals(const tiny3d::mesh &m, const std::vector<vec3_t> &normals) {
+    std::string text;
+    char line[128];
+    for (std::size_t i = 0; i < m.positions.size(); ++i) {
+        std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\nvn %.9g %.9g %.9g\n", m.positions[i].x, m.positions[i].y,
+                      m.positions[i].z, normals[i].x, normals[i].y, normals[i].z);
+        text += line;
+    }
+    for (std::size_t f = 0; f < m.face_count(); ++f) {
+        text += "f";
+        for (std::uint32_t k = m.face_start[f]; k < m.face_start[f + 1]; ++k)
+            text += " " + std::to_string(m.indices[k] + 1) + "//" + std::to_string(m.indices[k] + 1);
+        text += "\n";
+    }
+    return text;
+}
+
+// Renders the OBJ text `obj` as one frame with `args`; the frame, or an empty image.
+pgm_image render_text(const std::string &obj, std::vector<std::string> args) {
+    temp_dir dir;
+    write_file(dir.path / "mesh.obj", obj);
+    args.insert(args.begin(), (dir.path / "mesh.obj").string());
+    const run_result r = render(dir, with(args, {"--turntable", "1"}));
+    CHECK_MSG(r.exit_code == 0, r.err);
+    return r.exit_code == 0 ? frame(dir, "frame_000.pgm") : pgm_image{};
+}
+
+struct image_difference {
+    double mean = 1e9;
+    int worst = 255, over_8 = 0;
+};
+image_difference compare(const pgm_image &a, const pgm_image &b) {
+    image_difference d;
+    if (a.pixels.empty() || a.pixels.size() != b.pixels.size()) return d;
+    double sum = 0;
+    d.worst = 0;
+    for (std::size_t i = 0; i < a.pixels.size(); ++i) {
+        const int e = std::abs(int(a.pixels[i]) - int(b.pixels[i]));
+        sum += e;
+        d.worst = std::max(d.worst, e);
+        d.over_8 += e > 8;
+    }
+    d.mean = sum / double(a.pixels.size());
+    return d;
+}
+
 }  // namespace
+
+TEST(repeated_seam_vertices_render_as_the_welded_mesh) {
+    if (!render_built()) return;
+    // The teapot's case (its patches repeat the vertices of their seams), on a torus cut into
+    // patches of 37 faces: rendered as the welded torus. The same patched mesh with its
+    // per-position normals given as vn (what render drew before crease normals) shows seams.
+    const tiny3d::mesh whole = tiny3d::make_torus(1.0f, 0.4f, 48, 24);
+    const tiny3d::mesh patched = seam_split::split_into_patches(whole, 37);
+    const std::vector<std::string> view = {"--size", "512x512", "--eye", "1,-3.5,3.5"};
+    const pgm_image welded = render_text(obj_text(whole), view);
+    const pgm_image seamed = render_text(obj_text(patched), view);
+    const image_difference d = compare(welded, seamed);
+    CHECK_MSG(d.mean <= 0.05 && d.worst <= 8,
+              "mean " + std::to_string(d.mean) + ", worst " + std::to_string(d.worst));
+    const image_difference old =
+        compare(welded, render_text(obj_text_with_normals(patched, tiny3d::mesh_vertex_normals(patched)), view));
+    CHECK_MSG(old.over_8 > 100, std::to_string(old.over_8) + " pixels off by more than 8");
+}
+
+TEST(a_cube_of_eight_shared_corners_shows_flat_faces) {
+    if (!render_built()) return;
+    // Orthographic, directional lights, flat normals: every face one grey level. Pixels whose
+    // 5×5 neighbourhood is all ink (away from the silhouette) fall in at most 3 levels ±1
+    // (3 faces visible), bar the blended 1-pixel lines where faces meet. Smooth normals
+    // (--crease 180) shade a gradient across each face, which this test tells apart.
+    for (const char *crease : {"60", "180"}) {
+        const pgm_image img = render_text(obj_text(tiny3d::make_cube(1.0f)),
+                                          {"--size", "128x128", "--ortho", "--eye", "3,2,4", "--crease", crease, "--specular", "0"});
+        if (img.pixels.empty()) continue;
+        std::map<int, int> levels;
+        int interior = 0;
+        for (int y = 2; y < img.height - 2; ++y)
+            for (int x = 2; x < img.width - 2; ++x) {
+                bool inked = true;
+                for (int dy = -2; dy <= 2; ++dy)
+                    for (int dx = -2; dx <= 2; ++dx) inked = inked && img.at(x + dx, y + dy) != background;
+                if (!inked) continue;
+                ++interior;
+                ++levels[img.at(x, y)];
+            }
+        // The three most common levels, each with its ±1 neighbours.
+        std::vector<std::pair<int, int>> by_count;
+        for (const auto &[v, n] : levels) by_count.push_back({n, v});
+        std::sort(by_count.rbegin(), by_count.rend());
+        int covered = 0;
+        for (const auto &[v, n] : levels)
+            for (std::size_t i = 0; i < std::min<std::size_t>(3, by_count.size()); ++i)
+                if (std::abs(v - by_count[i].second) <= 1) {
+                    covered += n;
+                    break;
+                }
+        const double fraction = interior > 0 ? double(covered) / interior : 0.0;
+        if (std::string(crease) == "60") CHECK_MSG(fraction > 0.96, std::to_string(fraction));
+        else CHECK_MSG(fraction < 0.5, std::to_string(fraction));
+        CHECK(interior > 128 * 128 / 5);
+    }
+}
 
 TEST(default_turntable_writes_36_frames_of_the_default_size) {
     if (!render_built()) return;
@@ -103,6 +211,30 @@ TEST(flat_gouraud_phong_give_the_lambert_value_on_a_face_seen_head_on) {
             for (const int p : {24, 32, 40}) CHECK_EQ(int(img.at(p, 32)), c.expected);
             CHECK_EQ(int(img.at(0, 0)), background);
             CHECK_EQ(int(img.at(63, 63)), background);
+        }
+}
+
+TEST(specular_adds_the_blinn_phong_highlight_by_hand) {
+    if (!render_built()) return;
+    // Orthographic, so V = +z everywhere; n = +z. I = 0.25 + 0.5·(n·L + ks·(n·h)^s):
+    //  render's default (ks 0.25, s 40), light along the view: h = n, 0.25 + 0.5·1.25 = 0.875 → 223;
+    //  ks 1, s 10, light 45° to the right: n·h = cos 22.5°, 0.25 + 0.5·(0.70711 + 0.45285) = 0.82998 → 212;
+    //  the same light behind the face: no diffuse, no highlight: 0.25 → 64.
+    const struct {
+        std::vector<std::string> args;
+        int expected;
+    } cases[] = {{{"--light", "0,0,1,0.5"}, 223},
+                 {{"--light", "1,0,1,0.5", "--specular", "1", "--shininess", "10"}, 212},
+                 {{"--light", "1,0,-1,0.5", "--specular", "1", "--shininess", "10"}, 64}};
+    std::vector<std::string> lit(head_on.begin(), head_on.end() - 2);  // without --specular 0
+    for (const char *mode : {"flat", "gouraud", "phong"})
+        for (const auto &c : cases) {
+            temp_dir dir;
+            const run_result r = render(dir, with(with(lit, {"--mode", mode, "--ambient", "0.25"}), c.args));
+            CHECK_MSG(r.exit_code == 0, r.err);
+            const pgm_image img = frame(dir, "frame_000.pgm");
+            if (img.width != 64) continue;
+            for (const int p : {24, 32, 40}) CHECK_EQ(int(img.at(p, 32)), c.expected);
         }
 }
 
@@ -155,6 +287,39 @@ TEST(texture_multiplies_the_shading) {
     if (img.width != 64) return;
     CHECK_EQ(int(img.at(24, 32)), 38);   // round(0.75 · 0.2 · 255) = round(38.25)
     CHECK_EQ(int(img.at(40, 32)), 191);  // 0.75 · 1
+}
+
+TEST(texture_filters_minify_a_fine_checker_to_its_mean) {
+    if (!render_built()) return;
+    temp_dir dir;
+    // A 256² checker of single texels (0 and 1) on the head-on face, ~32 px across: 8 texels
+    // per pixel. Its mean is 0.5 at every mipmap level from 1 up, so trilinear (render's
+    // default) and anisotropic give 0.75 · 0.5 → 96 everywhere inside the face; bilinear
+    // and nearest read the base level and alias (values far from 96).
+    std::string pgm = "P5\n256 256\n255\n";
+    for (int j = 0; j < 256; ++j)
+        for (int i = 0; i < 256; ++i) pgm += char((i + j) % 2 ? 255 : 0);
+    write_file(dir.path / "checker.pgm", pgm);
+    const std::vector<std::string> base = with(head_on, {"--mode", "flat", "--light", "0,0,1,0.5", "--ambient", "0.25",
+                                                         "--texture", (dir.path / "checker.pgm").string()});
+    for (const char *filter : {"", "trilinear", "anisotropic", "bilinear", "nearest"}) {
+        const run_result r = render(dir, std::string(filter).empty() ? base : with(base, {"--filter", filter}));
+        CHECK_MSG(r.exit_code == 0, r.err);
+        const pgm_image img = frame(dir, "frame_000.pgm");
+        if (img.width != 64) continue;
+        int worst = 0;
+        for (int y = 20; y < 44; ++y)
+            for (int x = 20; x < 44; ++x) worst = std::max(worst, std::abs(int(img.at(x, y)) - 96));
+        const bool mipmapped = std::string(filter).empty() || std::string(filter) == "trilinear" ||
+                               std::string(filter) == "anisotropic";
+        if (mipmapped) CHECK_MSG(worst <= 2, std::string(filter) + ": " + std::to_string(worst));
+        else CHECK_MSG(worst > 30, std::string(filter) + ": " + std::to_string(worst));
+    }
+    for (const std::vector<std::string> &bad : {std::vector<std::string>{"--filter", "cubic"},
+                                                std::vector<std::string>{"--anisotropy", "0"}}) {
+        const run_result r = render(dir, with(base, bad));
+        CHECK_EQ(r.exit_code, 2);
+    }
 }
 
 TEST(auto_framing_keeps_the_mesh_inside_every_frame) {

@@ -1,5 +1,6 @@
 // lighting.cpp — lights, Lambert per edge (faithful) and per face (flat / Gouraud / Phong).
 #include "lighting.h"
+#include "flat_normal.h"
 
 #include <string>
 
@@ -48,17 +49,19 @@ result<light_rig> make_light_rig(std::span<const light_t> lights, float ambient)
     return rig;
 }
 
-float shade_flat(const light_rig &rig, vec3_t a, vec3_t b, vec3_t c) {
+vec3_t flat_unit_normal(vec3_t a, vec3_t b, vec3_t c) {
     // (b − a) × (c − a) in double: in float it overflows for faces of size ~1e19 and
     // underflows below ~1e-19, which would turn a real face into "no normal".
     const double ux = double(b.x) - a.x, uy = double(b.y) - a.y, uz = double(b.z) - a.z;
     const double vx = double(c.x) - a.x, vy = double(c.y) - a.y, vz = double(c.z) - a.z;
     const double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
     const double len = std::sqrt(nx * nx + ny * ny + nz * nz);
-    const vec3_t normal = len > 0.0 && std::isfinite(len) ? vec3_t{float(nx / len), float(ny / len), float(nz / len)}
-                                                          : vec3_t{0.0f, 0.0f, 0.0f};
-    const vec3_t centroid = (a + b + c) * (1.0f / 3.0f);
-    return shade_point(rig, centroid, normal);
+    return len > 0.0 && std::isfinite(len) ? vec3_t{float(nx / len), float(ny / len), float(nz / len)}
+                                           : vec3_t{0.0f, 0.0f, 0.0f};
+}
+
+float shade_flat(const light_rig &rig, vec3_t a, vec3_t b, vec3_t c) {
+    return shade_point(rig, (a + b + c) * (1.0f / 3.0f), flat_unit_normal(a, b, c));
 }
 
 float shade_gouraud_vertex(const light_rig &rig, vec3_t p, vec3_t normal) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <memory>
 #include <utility>
 #include <string>
 
@@ -89,9 +90,12 @@ std::vector<vec3_t> mesh_face_normals(const mesh &m) {
     return normals;
 }
 
-std::vector<vec3_t> mesh_vertex_normals(const mesh &m) {
-    std::vector<vec3_t> sums(m.positions.size(), vec3_t{0.0f, 0.0f, 0.0f});
-    const std::vector<vec3_t> face_normals = mesh_face_normals(m);
+namespace {
+
+// Calls fn(corner, face, angle) for every corner of every in-range face, face by face: the
+// corner's interior angle, its weight in the angle-weighted normal (Thürmer & Wüthrich 1998).
+template <class Fn>
+void for_each_corner_angle(const mesh &m, Fn &&fn) {
     for (std::size_t f = 0; f < m.face_count(); ++f) {
         if (!face_in_range(m, f)) continue;
         const std::uint32_t s = m.face_start[f], e = m.face_start[f + 1], n = e - s;
@@ -102,11 +106,107 @@ std::vector<vec3_t> mesh_vertex_normals(const mesh &m) {
             // Interior angle at the corner; atan2(|u×v|, u·v) is accurate at every angle.
             const float angle = std::atan2(std::sqrt(vec3_dot(vec3_cross(to_prev, to_next), vec3_cross(to_prev, to_next))),
                                            vec3_dot(to_prev, to_next));
-            sums[m.indices[s + k]] += face_normals[f] * angle;
+            fn(s + k, static_cast<std::uint32_t>(f), angle);
         }
     }
+}
+
+// For every position, the lowest index of a position with the same coordinates (compared
+// as values, so −0 = +0); a non-finite position is its own. Sorts copies of the finite
+// positions (contiguous, not through an index) by value, then index.
+std::vector<std::uint32_t> weld_by_value(const std::vector<vec3_t> &positions) {
+    struct keyed {
+        float x, y, z;
+        std::uint32_t index;
+    };
+    std::vector<keyed> sorted;
+    sorted.reserve(positions.size());
+    std::vector<std::uint32_t> first(positions.size());
+    for (std::uint32_t i = 0; i < positions.size(); ++i) {
+        first[i] = i;
+        if (finite3(positions[i])) sorted.push_back({positions[i].x, positions[i].y, positions[i].z, i});
+    }
+    std::sort(sorted.begin(), sorted.end(), [](const keyed &a, const keyed &b) {
+        if (a.x != b.x) return a.x < b.x;
+        if (a.y != b.y) return a.y < b.y;
+        if (a.z != b.z) return a.z < b.z;
+        return a.index < b.index;
+    });
+    for (std::size_t i = 1; i < sorted.size(); ++i) {
+        const keyed &p = sorted[i - 1], &q = sorted[i];
+        if (p.x == q.x && p.y == q.y && p.z == q.z) first[q.index] = first[p.index];
+    }
+    return first;
+}
+
+}  // namespace
+
+std::vector<vec3_t> mesh_vertex_normals(const mesh &m) {
+    std::vector<vec3_t> sums(m.positions.size(), vec3_t{0.0f, 0.0f, 0.0f});
+    const std::vector<vec3_t> face_normals = mesh_face_normals(m);
+    for_each_corner_angle(m, [&](std::uint32_t k, std::uint32_t f, float angle) {
+        sums[m.indices[k]] += face_normals[f] * angle;
+    });
     for (vec3_t &v : sums) v = vec3_normalize(v);
     return sums;
+}
+
+std::vector<vec3_t> mesh_crease_normals(const mesh &m, float crease_degrees) {
+    std::vector<vec3_t> normals(m.indices.size(), vec3_t{0.0f, 0.0f, 0.0f});
+    if (m.face_start.empty() || m.face_start.back() != m.indices.size()) return normals;
+    const std::vector<vec3_t> face_normals = mesh_face_normals(m);
+    const std::vector<std::uint32_t> weld = weld_by_value(m.positions);
+    // The corners at each welded position as compressed rows, in corner order (= face
+    // order, the order in which mesh_vertex_normals sums, so sums round alike), each entry
+    // with what the inner loop reads (contiguous: no lookups through faces).
+    struct entry {  // plain floats: the array is not zeroed before it is filled
+        float normal[3];  // the face's unit normal, or zero for a degenerate face
+        float angle;      // the corner's
+        std::uint32_t corner;
+        vec3_t face_normal() const { return {normal[0], normal[1], normal[2]}; }
+        vec3_t weighted() const { return face_normal() * angle; }  // as mesh_vertex_normals
+    };
+    std::vector<std::uint32_t> start(m.positions.size() + 1, 0);
+    for (std::size_t f = 0; f < m.face_count(); ++f)
+        if (face_in_range(m, f))
+            for (std::uint32_t k = m.face_start[f]; k < m.face_start[f + 1]; ++k) ++start[weld[m.indices[k]] + 1];
+    for (std::size_t p = 0; p < m.positions.size(); ++p) start[p + 1] += start[p];
+    const std::unique_ptr<entry[]> entries(new entry[start.back()]);
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    for_each_corner_angle(m, [&](std::uint32_t k, std::uint32_t f, float angle) {
+        const vec3_t n = face_normals[f];
+        entries[fill[weld[m.indices[k]]]++] = {{n.x, n.y, n.z}, angle, k};
+    });
+
+    // A face g joins corner k's normal when the angle between the face normals is at most the
+    // crease: n_f · n_g ≥ cos(crease) (three.js toCreasedNormals' rule); the corner's own face
+    // always does (n_f · n_f ≈ 1). A small slack keeps coplanar faces (whose normals round
+    // apart) together at a crease of 0. At 180° or more every face joins; a degenerate face
+    // (zero normal) takes every face at the position.
+    const bool smooth_everywhere = !(crease_degrees < 180.0f);
+    const float min_cosine =
+        std::cos(std::clamp(crease_degrees, 0.0f, 180.0f) * float(3.14159265358979323846 / 180.0)) - 1e-6f;
+    for (std::size_t p = 0; p < m.positions.size(); ++p) {
+        const entry *row = entries.get() + start[p], *row_end = entries.get() + start[p + 1];
+        if (row == row_end) continue;
+        vec3_t all = {0.0f, 0.0f, 0.0f};
+        for (const entry *e = row; e != row_end; ++e) all += e->weighted();
+        const vec3_t all_unit = vec3_normalize(all);
+        for (const entry *a = row; a != row_end; ++a) {
+            const vec3_t own = a->face_normal();
+            bool every_face = smooth_everywhere || (own.x == 0.0f && own.y == 0.0f && own.z == 0.0f);
+            vec3_t sum = {0.0f, 0.0f, 0.0f};
+            if (!every_face) {
+                every_face = true;
+                for (const entry *b = row; b != row_end; ++b)
+                    if (vec3_dot(own, b->face_normal()) >= min_cosine) sum += b->weighted();
+                    else every_face = false;
+            }
+            // Every face joined: the sum is `all`, added in the same order (same bits).
+            normals[a->corner] = every_face ? all_unit : vec3_normalize(sum);
+        }
+    }
+    return normals;
 }
 
 edge_adjacency mesh_edge_faces(const mesh &m) {

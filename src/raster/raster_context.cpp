@@ -192,6 +192,8 @@ void render_context::impl::set_up_piece(int thread, int number, const raster_mes
 void render_context::impl::setup_range(const raster_mesh &m, const draw_params &p, std::uint32_t state, bool generic,
                                        const segment &from, std::size_t first, std::size_t last, piece &out) {
     const bool flat = p.shade == shading::flat;
+    const bool flat_material = flat && !material_is_lambert(p.surface);  // Blinn-Phong at the centroid
+    const viewer eye = flat_material ? viewer_of(p.view_projection) : viewer{};
     const bool msaa = multisampled();
     const detail::xvertex *vertices = from.vertices.data();
     const float *vertex_attr = from.vertex_attr.data();
@@ -257,8 +259,12 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
         const detail::xvertex &a = vertices[tri[0]], &b = vertices[tri[1]], &c = vertices[tri[2]];
         if (a.outcode & b.outcode & c.outcode) continue;  // all outside one plane
         float flat_shade = 0.0f;
-        if (flat) flat_shade = shade_flat(p.lights, world_of(p.model, m.positions[tri[0]]),
-                                          world_of(p.model, m.positions[tri[1]]), world_of(p.model, m.positions[tri[2]]));
+        if (flat_material)
+            flat_shade = shade_flat_material(p.lights, p.surface, eye, world_of(p.model, m.positions[tri[0]]),
+                                             world_of(p.model, m.positions[tri[1]]), world_of(p.model, m.positions[tri[2]]));
+        else if (flat)
+            flat_shade = shade_flat(p.lights, world_of(p.model, m.positions[tri[0]]),
+                                    world_of(p.model, m.positions[tri[1]]), world_of(p.model, m.positions[tri[2]]));
         if ((a.outcode | b.outcode | c.outcode) == 0 && !generic) {
             // The common case: no clipping, straight to the fast setup.
             // Snapped once per vertex in transform(); an unusable vertex skips the triangle
@@ -481,6 +487,7 @@ void render_context::impl::gather_stats(const draw_plan &plan) {
 void render_context::draw(const raster_mesh &mesh, const draw_params &params) {
     impl &s = *impl_;
     if (!s.target || mesh.positions.size() != mesh.normals.size() || mesh.positions.size() != mesh.uvs.size()) return;
+    if (!check_material(params.surface)) return;
     s.stats.triangles_in += mesh.triangles.size();
     const mat4_t mvp = mat4_multiply(params.view_projection, params.model);
     if (cull_sphere(frustum_from_matrix(mvp), {mesh.bound_center, mesh.bound_radius}) == cull_result::outside) {

@@ -26,12 +26,21 @@ namespace {
 struct pixel_shader {
     const draw_params &p;
     const generic_triangle &g;
-    bool trilinear;
+    bool trilinear, anisotropic;  // filters that need the derivatives of (u, v)
+    // How the shade is found, chosen once per triangle: interpolated (flat, Gouraud), Phong
+    // diffuse-only (the default material), or Phong with the material's Blinn-Phong model.
+    enum class source { interpolated, phong, phong_material } from;
+    viewer eye;
     uv_derivatives uv_d;
 
     pixel_shader(const draw_params &params, const generic_triangle &tri)
-        : p(params), g(tri), trilinear(params.tex && params.filter == texture_filter::trilinear) {
-        if (trilinear) {
+        : p(params), g(tri), trilinear(params.tex && params.filter == texture_filter::trilinear),
+          anisotropic(params.tex && params.filter == texture_filter::anisotropic),
+          from(params.shade != shading::phong          ? source::interpolated
+               : material_is_lambert(params.surface) ? source::phong
+                                                       : source::phong_material),
+          eye(from == source::phong_material ? viewer_of(params.view_projection) : viewer{}) {
+        if (trilinear || anisotropic) {
             float texel_u[3], texel_v[3];  // the vertices' (u, v) in texels
             for (int k = 0; k < 3; ++k) {
                 texel_u[k] = g.attr[k][ATTR_U] * static_cast<float>(p.tex->width);
@@ -49,16 +58,29 @@ struct pixel_shader {
             inv_b = 1.0f / (w0 + w1 + w2);
         }
         const float lod = trilinear ? uv_d.lod(w0, w1, w2, inv_b) : 0.0f;  // before the normalisation
+        float d[4] = {0, 0, 0, 0};  // texels per pixel (anisotropic)
+        if (anisotropic) uv_d.at(w0, w1, w2, inv_b, d);
         if (p.perspective_correct) w0 *= inv_b, w1 *= inv_b, w2 *= inv_b;
         auto lerp = [&](int slot) { return w0 * g.attr[0][slot] + w1 * g.attr[1][slot] + w2 * g.attr[2][slot]; };
         float shade;
-        if (p.shade == shading::phong)
+        if (from == source::phong)
             shade = shade_phong_pixel(p.lights, {lerp(ATTR_PX), lerp(ATTR_PY), lerp(ATTR_PZ)},
                                       {lerp(ATTR_NX), lerp(ATTR_NY), lerp(ATTR_NZ)});
+        else if (from == source::phong_material)
+            shade = shade_point_material(p.lights, p.surface, eye, {lerp(ATTR_PX), lerp(ATTR_PY), lerp(ATTR_PZ)},
+                                         unit_or_zero({lerp(ATTR_NX), lerp(ATTR_NY), lerp(ATTR_NZ)}));
         else shade = lerp(ATTR_SHADE);
         if (trilinear) shade *= texture_sample_trilinear(*p.tex, lerp(ATTR_U), lerp(ATTR_V), lod, p.wrap);
+        else if (anisotropic) shade *= anisotropic_sample(lerp(ATTR_U), lerp(ATTR_V), d);
         else if (p.tex) shade *= texture_sample(*p.tex, lerp(ATTR_U), lerp(ATTR_V), p.filter, p.wrap);
         return shade;
+    }
+
+    // texture_sample_anisotropic from derivatives in texels per pixel.
+    float anisotropic_sample(float u, float v, const float (&texels)[4]) const {
+        const float w = static_cast<float>(p.tex->width), h = static_cast<float>(p.tex->height);
+        return texture_sample_anisotropic(*p.tex, u, v, texels[0] / w, texels[1] / h, texels[2] / w, texels[3] / h,
+                                          p.anisotropy, p.wrap);
     }
 };
 

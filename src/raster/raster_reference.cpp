@@ -61,6 +61,8 @@ status prepare(const reference_draw &d, std::size_t index, int width, int height
     if (m.normals.size() != m.positions.size() || m.uvs.size() != m.positions.size())
         return reference_error("draw " + std::to_string(index) + ": normals or uvs count differs from positions");
     if (p.alpha < 1.0f) return reference_error("draw " + std::to_string(index) + ": translucent draws are not supported");
+    if (const status bad = check_material(p.surface); !bad)
+        return reference_error("draw " + std::to_string(index) + ": " + bad.message());
     double model[16], vp[16];
     for (int i = 0; i < 16; ++i) model[i] = p.model.m[i], vp[i] = p.view_projection.m[i];
     auto apply = [](const double *mat, const double v[4], double r[4]) {
@@ -68,6 +70,8 @@ status prepare(const reference_draw &d, std::size_t index, int width, int height
             r[row] = mat[row] * v[0] + mat[4 + row] * v[1] + mat[8 + row] * v[2] + mat[12 + row] * v[3];
     };
     const normal_transform nt = make_normal_transform(p.model);
+    const bool material_lit = !material_is_lambert(p.surface);  // Blinn-Phong (material.h)
+    const viewer eye = viewer_of(p.view_projection);
     const double hw = 0.5 * width, hh = 0.5 * height;
     for (std::size_t t = 0; t < m.triangles.size(); ++t) {
         std::vector<dvertex> poly(3);
@@ -87,10 +91,14 @@ status prepare(const reference_draw &d, std::size_t index, int width, int height
             a[WX] = w4[0], a[WY] = w4[1], a[WZ] = w4[2];
             a[NX] = n.x, a[NY] = n.y, a[NZ] = n.z;
             a[U] = m.uvs[i].x, a[V] = m.uvs[i].y;
-            a[SHADE] = p.shade == shading::gouraud ? shade_gouraud_vertex(p.lights, narrow(world[k]), n) : 0.0;
+            a[SHADE] = p.shade != shading::gouraud ? 0.0
+                       : material_lit  ? shade_point_material(p.lights, p.surface, eye, narrow(world[k]), unit_or_zero(n))
+                                       : shade_gouraud_vertex(p.lights, narrow(world[k]), n);
         }
         if (p.shade == shading::flat) {
-            const double s = shade_flat(p.lights, narrow(world[0]), narrow(world[1]), narrow(world[2]));
+            const double s = material_lit
+                                 ? shade_flat_material(p.lights, p.surface, eye, narrow(world[0]), narrow(world[1]), narrow(world[2]))
+                                 : shade_flat(p.lights, narrow(world[0]), narrow(world[1]), narrow(world[2]));
             for (dvertex &v : poly) v.attr[SHADE] = s;
         }
         bool finite = true;
@@ -140,6 +148,8 @@ status render_reference(canvas_t &target, std::span<const reference_draw> draws,
         const status s = prepare(draws[i], i, width, height, tris);
         if (!s) return s;
     }
+    std::vector<viewer> eyes;  // per draw, for Blinn-Phong materials
+    for (const reference_draw &d : draws) eyes.push_back(viewer_of(d.params.view_projection));
     const double clear = detail::clamp01(clear_intensity);
     // Sample rows of one band: band row r, sample row j at y = y0 + r + (j + ½)/n.
     const std::size_t per_pixel = static_cast<std::size_t>(n) * n;
@@ -161,6 +171,8 @@ status render_reference(canvas_t &target, std::span<const reference_draw> draws,
         for (const ref_triangle &r : tris) {
             if (r.y_max < y0 || r.y_min > y0 + rows) continue;
             const draw_params &p = draws[r.draw].params;
+            const bool material_lit = !material_is_lambert(p.surface);
+            const viewer &eye = eyes[r.draw];
             const double area2 = (r.x[1] - r.x[0]) * (r.y[2] - r.y[0]) - (r.y[1] - r.y[0]) * (r.x[2] - r.x[0]);
             const double sign = area2 > 0 ? 1 : -1;
             // Edge k opposite vertex k, positive inside after orientation: l_k = e_k / |area2|.
@@ -198,7 +210,9 @@ status render_reference(canvas_t &target, std::span<const reference_draw> draws,
                             if (p.shade == shading::phong) {
                                 const double pos[3] = {lerp(WX, w), lerp(WY, w), lerp(WZ, w)};
                                 const double nor[3] = {lerp(NX, w), lerp(NY, w), lerp(NZ, w)};
-                                shade = shade_phong_pixel(p.lights, narrow(pos), narrow(nor));
+                                shade = material_lit ? shade_point_material(p.lights, p.surface, eye, narrow(pos),
+                                                                            unit_or_zero(narrow(nor)))
+                                                     : shade_phong_pixel(p.lights, narrow(pos), narrow(nor));
                             } else {
                                 // Screen-affine (the fast path), perspective weights with a texture (the
                                 // per-pixel path), as the render context.

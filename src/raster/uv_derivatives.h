@@ -45,6 +45,12 @@ struct uv_derivatives {
         return d;
     }
 
+    // ∂u/∂x, ∂v/∂x, ∂u/∂y, ∂v/∂y at a pixel (weights as `lod`), in the units given to `of`.
+    void at(float w0, float w1, float w2, float inv_b, float out[4]) const {
+        const float s = inv_b * inv_b;
+        for (int d = 0; d < 4; ++d) out[d] = (w0 * numerator[d][0] + w1 * numerator[d][1] + w2 * numerator[d][2]) * s;
+    }
+
     // The level of detail at a pixel with weights w_k = l_k q_k before the normalisation and
     // inv_b = 1/Σ w_k (w_k = l_k and inv_b = 1 when affine); within 1e-5 of texture_lod of
     // the same derivatives (half fast_log2's error). 1/B² scales ρ² once, as ρ²·(1/B)⁴.

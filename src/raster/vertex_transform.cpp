@@ -62,7 +62,9 @@ void shade_general(const raster_mesh &m, const draw_params &p, const vertex_job 
             world = {h.x, h.y, h.z};
             normal = apply_normal_transform(job.nt, m.normals[i]);
         }
-        x.shade = job.gouraud ? shade_gouraud_vertex(p.lights, world, normal) : 0.0f;
+        if (!job.gouraud) x.shade = 0.0f;
+        else if (job.material_lit) x.shade = shade_point_material(p.lights, p.surface, job.eye, world, unit_or_zero(normal));
+        else x.shade = shade_gouraud_vertex(p.lights, world, normal);
         if (job.generic) {
             float *a = &vertex_attr[i * ATTR_COUNT];
             a[ATTR_PX] = world.x, a[ATTR_PY] = world.y, a[ATTR_PZ] = world.z;
@@ -85,7 +87,9 @@ vertex_job make_vertex_job(const draw_params &p, const mat4_t &mvp, bool generic
     job.subpixel_bits = subpixel_bits;
     job.gouraud = p.shade == shading::gouraud;
     job.generic = generic;
-    job.directional_gouraud = job.gouraud && !generic && directional_only(p.lights);
+    job.material_lit = job.gouraud && !material_is_lambert(p.surface);
+    job.eye = job.material_lit ? viewer_of(p.view_projection) : viewer{};
+    job.directional_gouraud = job.gouraud && !generic && !job.material_lit && directional_only(p.lights);
     return job;
 }
 

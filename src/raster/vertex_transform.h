@@ -37,6 +37,8 @@ struct vertex_job {
     int subpixel_bits;  // the snapping grid, 1/2^bits px: the frame's sample pattern's (msaa.h)
     bool gouraud, generic;
     bool directional_gouraud;  // Gouraud with directional lights only (no position needed)
+    bool material_lit;         // a non-default material: Blinn-Phong per vertex (material.h)
+    viewer eye;                // V's origin for material_lit
 };
 
 // The vertices one transform() call handles: first..first + count − 1, or list[0..count).

@@ -6,7 +6,7 @@
 // multisample instruction set the CPU runs: `4x AVX2 kernel`, `4x SSE2 kernel` …), and
 // `analytic` (exact area coverage, a prototype in
 // common/analytic_coverage.h; one thread); and a textured plane at a grazing angle, bilinear
-// against trilinear.
+// against nearest, trilinear and anisotropic.
 //
 // Error: the frame at angle 0 against render_reference (raster.h: 16 × 16 = 256
 // samples per pixel, depth and shading per sample, box filter; 8 × 8 with --quick), in grey
@@ -29,6 +29,7 @@
 #include "math3d.h"
 #include "mesh.h"
 #include "raster.h"
+#include "../grazing_plane.h"
 
 using namespace tiny3d;
 
@@ -121,37 +122,6 @@ std::string fixed(double v, int digits) {
     return text;
 }
 
-// The grazing plane: a 40 × 40 quad at y = −0.5 under a camera at (0, 0, 0) looking along −z
-// and slightly down, a 256² checker of 2-texel cells repeated 20 times (u, v ∈ [0, 20]).
-struct plane_scene {
-    raster_mesh mesh;
-    texture tex;
-    draw_params params;
-};
-
-plane_scene make_plane() {
-    plane_scene s;
-    constexpr float HALF = 20.0f, REPEAT = 20.0f;
-    s.mesh.positions = {{-HALF, -0.5f, 1}, {HALF, -0.5f, 1}, {HALF, -0.5f, 1 - 2 * HALF}, {-HALF, -0.5f, 1 - 2 * HALF}};
-    s.mesh.normals.assign(4, vec3_t{0, 1, 0});
-    s.mesh.uvs = {{0, 0}, {REPEAT, 0}, {REPEAT, REPEAT}, {0, REPEAT}};
-    s.mesh.triangles = {{0, 2, 1}, {0, 3, 2}};  // counter-clockwise seen from above
-    s.mesh.bound_center = {0, -0.5f, 1 - HALF};
-    s.mesh.bound_radius = HALF * 1.5f;
-    s.tex.width = s.tex.height = 256;
-    for (int j = 0; j < 256; ++j)
-        for (int i = 0; i < 256; ++i) s.tex.texels.push_back(((i / 2 + j / 2) % 2) ? 0.9f : 0.1f);
-    (void)build_mipmaps(s.tex);
-    s.params.model = mat4_identity();
-    s.params.view_projection = mat4_multiply(mat4_perspective(static_cast<float>(60 * M_PI / 180), 1.0f, 0.1f, 100.0f),
-                                             mat4_look_at({0, 0, 0}, {0, -0.25f, -1}, {0, 1, 0}));
-    s.params.lights = make_light_rig(std::span<const light_t>(), 1.0f).value();
-    s.params.shade = shading::flat;
-    s.params.cull = cull_mode::none;
-    s.params.tex = &s.tex;
-    return s;
-}
-
 }  // namespace
 
 int main(int argc, char **argv) {
@@ -226,16 +196,25 @@ int main(int argc, char **argv) {
                             fixed(ea.all_max, 1) + "; " + std::to_string(ea.edge_pixels) + " silhouette px; " +
                             std::to_string(analytic.skipped()) + " triangles skipped"});
     }
-    // The grazing plane: bilinear (the faithful filter) against trilinear, one sample per pixel.
-    plane_scene plane = make_plane();
+    // The grazing plane (tests/grazing_plane.h): bilinear (the faithful filter) against
+    // nearest, trilinear and anisotropic (8 taps), one sample per pixel.
+    grazing_plane::scene plane;
+    grazing_plane::make(plane);
     canvas_ptr plane_ref = make_canvas(PLANE_SIDE, PLANE_SIDE).value(), plane_img = make_canvas(PLANE_SIDE, PLANE_SIDE).value();
     const reference_draw pd{&plane.mesh, plane.params};
     if (!render_reference(*plane_ref, std::span<const reference_draw>(&pd, 1), 0.0f, reference_n)) {
         std::fprintf(stderr, "bench antialias: plane reference failed\n");
         return 1;
     }
-    for (texture_filter filter : {texture_filter::bilinear, texture_filter::trilinear}) {
-        plane.params.filter = filter;
+    const struct {
+        texture_filter filter;
+        const char *name, *kind;
+    } filters[] = {{texture_filter::bilinear, "bilinear", "faithful"},
+                   {texture_filter::nearest, "nearest", "other"},
+                   {texture_filter::trilinear, "trilinear", "fast"},
+                   {texture_filter::anisotropic, "anisotropic 8 taps", "fast"}};
+    for (const auto &f : filters) {
+        plane.params.filter = f.filter;
         render_context ctx(1);
         auto render = [&] {
             if (!ctx.begin_frame(*plane_img).ok()) return;
@@ -245,11 +224,9 @@ int main(int argc, char **argv) {
         for (int k = 0; k < WARMUP_FRAMES - 1; ++k) render();
         const bench::timing t = bench::measure_ns(o.quick ? 3 : 20, NS_PER_MS, render);
         const image_error e = error_against(*plane_img, *plane_ref, nullptr);
-        const bool bilinear = filter == texture_filter::bilinear;
-        rows.push_back({"antialias", std::string("grazing plane 512^2 ") + (bilinear ? "bilinear" : "trilinear") + " 1 thread",
-                        bilinear ? "faithful" : "fast", "ms/frame", t, e.all_mean, e.all_max, "grey levels",
-                        "error over all pixels", "grazing plane 512^2: faithful bilinear, fast trilinear",
-                        bilinear ? "bilinear" : "trilinear"});
+        rows.push_back({"antialias", std::string("grazing plane 512^2 ") + f.name + " 1 thread", f.kind, "ms/frame", t,
+                        e.all_mean, e.all_max, "grey levels", "error over all pixels",
+                        "grazing plane 512^2: texture filters", f.name});
     }
     return bench::report(o, "antialias", rows, "Anti-aliasing: ms per frame vs silhouette error (grey levels)");
 }
