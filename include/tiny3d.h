@@ -10,10 +10,10 @@
 #include "canvas.h"
 #include "lines.h"
 #include "lighting.h"
-#include "material.h"
 #include "mesh.h"
 #include "pipeline.h"
 #ifdef __cplusplus  // C: the C parts of the headers above and renderer.h's
+#include "material.h"
 #include "raster.h"
 #endif
 #include "wireframe.h"
