@@ -143,13 +143,22 @@ TEST(noise_fills_the_lzw_table_many_times) {
 TEST(every_byte_value_and_save_pgm_rounding) {
     // Intensities that are not byte / 255 (ties, negatives, above 1, NaN): the GIF holds
     // exactly the samples of the PGM that save_pgm writes for the same canvas.
+    // Every half-way point (k + 1/2) / 255 and the 8 floats each side of it, on a width that
+    // leaves a remainder after blocks of 16 (the vector path and the scalar tail both see them).
     temp_folder dir;
-    const int w = 64, h = 9;
+    const int w = 257, h = 17;
     tiny3d::canvas_ptr c = tiny3d::make_canvas(w, h).value();
-    for (int i = 0; i < w * h; ++i) c->data[i] = (float(i) - 20.0f) / 510.0f;
-    c->data[0] = std::numeric_limits<float>::quiet_NaN();
-    c->data[1] = 7.0f;
-    c->data[2] = -std::numeric_limits<float>::infinity();
+    int i = 0;
+    for (int k = -1; k < 256; ++k) {
+        float v = (float(k) + 0.5f) / 255.0f;
+        for (int step = 0; step < 8; ++step) v = std::nextafter(v, -1.0f);
+        for (int step = 0; step < 17 && i < w * h; ++step, ++i, v = std::nextafter(v, 2.0f)) c->data[i] = v;
+    }
+    for (; i < w * h; ++i) c->data[i] = float(i % 300) / 280.0f - 0.05f;
+    for (int at : {0, 16, 31, w * h - 1}) c->data[at] = std::numeric_limits<float>::quiet_NaN();
+    for (int at : {1, 17, w * h - 2}) c->data[at] = 7.0f;
+    for (int at : {2, 18, w * h - 3}) c->data[at] = -std::numeric_limits<float>::infinity();
+    c->data[3] = std::numeric_limits<float>::infinity();
     const std::string gif = dir.named("r.gif"), pgm = dir.named("r.pgm");
     auto writer = tiny3d::gif_writer::create(gif, w, h);
     CHECK(writer.ok() && writer->add_frame(*c).ok() && writer->finish().ok());

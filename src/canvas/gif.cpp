@@ -15,6 +15,11 @@
 #include <vector>
 
 #include "canvas.h"
+#include "../simd_config.h"
+
+#ifdef TINY3D_SSE2
+#include <emmintrin.h>
+#endif
 
 namespace tiny3d {
 namespace {
@@ -26,11 +31,36 @@ constexpr int kMaxCodeBits = 12;
 constexpr int kGifMaxSide = 65535;          // 16-bit sizes in the descriptors
 constexpr double kMinFps = 0.01, kMaxFps = 50.0;
 
-// The PGM byte of an intensity, as save_pgm rounds it: round(clamp(v, 0, 1)·255), NaN → 0.
-std::uint8_t grey_byte(float v) {
-    if (!(v > 0.0f)) return 0;
-    if (v >= 1.0f) return 255;
-    return std::uint8_t(std::lround(v * 255.0f));
+// The PGM byte of an intensity, as save_pgm rounds it: round(clamp(v, 0, 1)·255), NaN → 0,
+// halves away from zero like std::lround. With s the float product save_pgm rounds (s ≥ 0),
+// floor(s + 1/2) = floor((floor(2s) + 1) / 2), and 2s is exact: integer steps only, no
+// branch (the loop below vectorises).
+inline std::uint8_t grey_byte(float v) {
+    const float clamped = std::min(1.0f, std::max(0.0f, v));  // max(0, NaN) is 0
+    const int twice = int(2.0f * (clamped * 255.0f));
+    return std::uint8_t((twice + 1) >> 1);
+}
+
+// grey_byte of n intensities. The SSE2 path computes the same float steps four lanes at a
+// time: MAXPS(v, 0) gives 0 for NaN as max(0, v) does, the product and the doubling round
+// alike, and CVTTPS2DQ truncates as int() does (tests/gif_test.cpp checks both paths
+// against save_pgm, `make test-portable` the portable one).
+void to_grey_bytes(const float *values, std::uint8_t *bytes, std::size_t n) {
+    std::size_t i = 0;
+#ifdef TINY3D_SSE2
+    const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f), scale = _mm_set1_ps(255.0f), two = _mm_set1_ps(2.0f);
+    const __m128i half_up = _mm_set1_epi32(1);
+    const auto lanes = [&](std::size_t at) {
+        const __m128 clamped = _mm_min_ps(_mm_max_ps(_mm_loadu_ps(values + at), zero), one);
+        const __m128i twice = _mm_cvttps_epi32(_mm_mul_ps(two, _mm_mul_ps(clamped, scale)));
+        return _mm_srli_epi32(_mm_add_epi32(twice, half_up), 1);
+    };
+    for (; i + 16 <= n; i += 16) {
+        const __m128i low = _mm_packs_epi32(lanes(i), lanes(i + 4)), high = _mm_packs_epi32(lanes(i + 8), lanes(i + 12));
+        _mm_storeu_si128(reinterpret_cast<__m128i *>(bytes + i), _mm_packus_epi16(low, high));
+    }
+#endif
+    for (; i < n; ++i) bytes[i] = grey_byte(values[i]);
 }
 
 void put_u16(std::vector<std::uint8_t> &out, unsigned v) {
@@ -65,18 +95,22 @@ rectangle changed_rectangle(const std::vector<std::uint8_t> &now, const std::vec
     return {left, top, right - left + 1, bottom - top + 1};
 }
 
-// GIF's variable-length-code LZW (GIF89a appendix F). Codes are packed least significant
-// bit first into data sub-blocks, each preceded by its length (1..255), ended by a 0 block.
-// The string table maps (prefix code, next index) to a code through an open-addressed hash
-// table at most half full (4,096 codes in 8,192 slots), cleared with each clear code.
+// GIF's variable-length-code LZW (GIF89a appendix F). The codes are packed least
+// significant bit first into a byte stream, which is then cut into the data sub-blocks
+// (each preceded by its length, 1..255; a 0 block ends them). The string table maps
+// (prefix code, next index) to a code through an open-addressed hash table at most half
+// full (4,096 codes in 8,192 slots), cleared with each clear code.
 class lzw_encoder {
 public:
+    // Room for the codes of a rectangle of up to `pixels` indices, so that encode() never
+    // allocates: a code per index at most, plus the clears (one per 3,837 codes) and the
+    // first and last codes, of at most 12 bits each.
+    void reserve(std::size_t pixels) { packed_.resize((pixels + pixels / 1000 + 4) * std::size_t(kMaxCodeBits) / 8 + 8); }
+
+    // Appends the image data of the rectangle r of `indices` (rows of `stride`) to `out`:
+    // the minimum code size, then the sub-blocks.
     void encode(const std::vector<std::uint8_t> &indices, int stride, const rectangle &r, std::vector<std::uint8_t> &out) {
-        out_ = &out;
-        out.push_back(std::uint8_t(kMinCodeSize));
-        block_at_ = out.size();
-        out.push_back(0);
-        block_length_ = 0;
+        used_ = 0;
         bits_ = 0;
         bit_count_ = 0;
         reset();
@@ -94,7 +128,7 @@ public:
                 const std::uint32_t key = (prefix << 8) | next;
                 std::uint32_t slot = hash(key);
                 while (keys_[slot] != kEmpty && keys_[slot] != key) slot = (slot + 1) & (kSlots - 1);
-                if (keys_[slot] == key) {
+                if (keys_[slot] == key) {  // the string goes on
                     prefix = codes_[slot];
                     continue;
                 }
@@ -111,11 +145,14 @@ public:
         }
         put_code(prefix);
         put_code(kEndCode);
-        if (bit_count_ > 0) put_byte(std::uint8_t(bits_));
-        if (block_length_ > 0) {
-            out[block_at_] = std::uint8_t(block_length_);
-            out.push_back(0);
-        }  // else the empty block opened last is the terminator
+        if (bit_count_ > 0) packed_[used_++] = std::uint8_t(bits_);
+        out.push_back(std::uint8_t(kMinCodeSize));
+        for (std::size_t at = 0; at < used_; at += 255) {
+            const std::size_t length = std::min<std::size_t>(255, used_ - at);
+            out.push_back(std::uint8_t(length));
+            out.insert(out.end(), packed_.begin() + long(at), packed_.begin() + long(at + length));
+        }
+        out.push_back(0);
     }
 
 private:
@@ -134,36 +171,24 @@ private:
     // the encoder, widens after adding the string that fills the current width, i.e. at the
     // same point in the stream (the widening the specification's decoder expects).
     void put_code(unsigned code) {
-        bits_ |= std::uint64_t(code) << bit_count_;
+        bits_ |= std::uint32_t(code) << bit_count_;
         bit_count_ += code_bits_;
         while (bit_count_ >= 8) {
-            put_byte(std::uint8_t(bits_ & 0xFF));
+            packed_[used_++] = std::uint8_t(bits_);
             bits_ >>= 8;
             bit_count_ -= 8;
         }
         if (next_code_ >= (1u << code_bits_) && code_bits_ < kMaxCodeBits) ++code_bits_;
     }
 
-    void put_byte(std::uint8_t b) {
-        if (block_length_ == 255) {
-            (*out_)[block_at_] = 255;
-            block_at_ = out_->size();
-            out_->push_back(0);
-            block_length_ = 0;
-        }
-        out_->push_back(b);
-        ++block_length_;
-    }
-
     std::array<std::uint32_t, kSlots> keys_{};
     std::array<std::uint16_t, kSlots> codes_{};
     unsigned next_code_ = kFirstFreeCode;
     int code_bits_ = kMinCodeSize + 1;
-    std::uint64_t bits_ = 0;
+    std::uint32_t bits_ = 0;  // fewer than 8 pending bits + one code of at most 12
     int bit_count_ = 0;
-    std::vector<std::uint8_t> *out_ = nullptr;
-    std::size_t block_at_ = 0;
-    int block_length_ = 0;
+    std::vector<std::uint8_t> packed_;  // the codes, packed (reserve())
+    std::size_t used_ = 0;
 };
 
 }  // namespace
@@ -193,6 +218,7 @@ struct gif_writer::state {
         const std::size_t codes = previous.size() + previous.size() / 1000 + 4;
         const std::size_t data = codes * std::size_t(kMaxCodeBits) / 8 + 1;
         encoded.reserve(data + data / 255 + 64);
+        lzw.reserve(previous.size());
     }
     status fail(error e) {
         file.discard();
@@ -256,7 +282,7 @@ status gif_writer::add_frame(const canvas_t &frame) {
                                             : std::string("an invalid canvas")) +
                                 ", the animation is " + std::to_string(s.width) + "x" + std::to_string(s.height)});
     const std::size_t pixels = s.current.size();
-    for (std::size_t i = 0; i < pixels; ++i) s.current[i] = grey_byte(frame.data[i]);
+    to_grey_bytes(frame.data, s.current.data(), pixels);
     const rectangle r = s.frames == 0 ? rectangle{0, 0, s.width, s.height}
                                       : changed_rectangle(s.current, s.previous, s.width, s.height);
 
