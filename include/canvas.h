@@ -135,7 +135,8 @@ namespace tiny3d {
 // Writes `size` bytes to `path` atomically (temporary file in the same folder, fsync,
 // rename). On failure nothing is left behind and an existing file is untouched; the
 // error names the path and the reason. Existing non-regular files (devices, FIFOs) are
-// written in place. Used by every image writer in the library.
+// written in place. Used by every image writer in the library; atomic_file (below) is the
+// same save written piece by piece, and write_file_atomic is one write through it.
 // The temporary file is "<path>.tmp", claimed with an exclusive flock (released by the
 // kernel when its process dies), so the file a killed save left behind is reused and
 // renamed away by the next save of the same path; while another live save holds it, a

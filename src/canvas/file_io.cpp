@@ -74,42 +74,7 @@ std::string folder_of(const std::string &path) {
 
 }  // namespace
 
-status write_file_atomic(const std::string &path, const void *data, std::size_t size) {
-    if (path.empty()) return error{"", 0, -1, "cannot save: empty file name"};
-    const auto *bytes = static_cast<const unsigned char *>(data);
-    struct stat st {};
-    const bool exists = ::stat(path.c_str(), &st) == 0;
-    if (exists && S_ISDIR(st.st_mode)) return error{path, 0, -1, "cannot save: the path is a folder"};
-    int err = 0;
-    if (exists && !S_ISREG(st.st_mode)) {
-        // A device or FIFO (e.g. /dev/full, /dev/stdout): write in place, never replace it.
-        const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
-        if (fd < 0) return io_error(path, "cannot open for writing", errno);
-        const bool ok = write_all(fd, bytes, size, err);
-        if (::close(fd) != 0 && ok) err = errno;
-        if (!ok || err) return io_error(path, "write failed", err);
-        return {};
-    }
-    const std::string folder = folder_of(path);
-    struct stat dst {};
-    if (::stat(folder.c_str(), &dst) != 0) return io_error(path, "cannot save: folder '" + folder + "'", errno);
-    if (!S_ISDIR(dst.st_mode)) return error{path, 0, -1, "cannot save: '" + folder + "' is not a folder"};
-
-    std::string tmp;
-    const int fd = open_temporary(path, tmp);
-    if (fd < 0) return io_error(path, "cannot create a temporary file in '" + folder + "'", errno);
-    bool ok = write_all(fd, bytes, size, err);
-    if (ok && ::fchmod(fd, 0644) != 0) { err = errno; ok = false; }
-    if (ok && ::fsync(fd) != 0) { err = errno; ok = false; }
-    // Renamed (or removed) before the close drops the lock: until then the name is ours.
-    if (ok && ::rename(tmp.c_str(), path.c_str()) != 0) { err = errno; ok = false; }
-    if (!ok) ::unlink(tmp.c_str());
-    if (::close(fd) != 0 && ok) { err = errno; ok = false; }
-    if (!ok) return io_error(path, "cannot save", err);
-    return {};
-}
-
-// ---- atomic_file: the same temporary and rename as write_file_atomic, written piece by piece ----
+// ---- atomic_file: the temporary, the checks and the rename of every save ----
 
 atomic_file::atomic_file(std::string path, std::string temporary, int fd)
     : path_(std::move(path)), temporary_(std::move(temporary)), fd_(fd) {}
@@ -137,7 +102,7 @@ result<atomic_file> atomic_file::open(const std::string &path) {
     struct stat st {};
     const bool exists = ::stat(path.c_str(), &st) == 0;
     if (exists && S_ISDIR(st.st_mode)) return error{path, 0, -1, "cannot save: the path is a folder"};
-    if (exists && !S_ISREG(st.st_mode)) {  // a device or FIFO: written in place, as write_file_atomic does
+    if (exists && !S_ISREG(st.st_mode)) {  // a device or FIFO (e.g. /dev/full, /dev/stdout): in place, never replaced
         const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
         if (fd < 0) return io_error(path, "cannot open for writing", errno);
         return atomic_file(path, "", fd);
@@ -183,6 +148,13 @@ void atomic_file::discard() {
     if (!temporary_.empty()) ::unlink(temporary_.c_str());  // before the close drops the lock
     ::close(fd_);
     fd_ = -1;
+}
+
+status write_file_atomic(const std::string &path, const void *data, std::size_t size) {
+    result<atomic_file> file = atomic_file::open(path);
+    if (!file) return file.err();
+    if (status written = file->write(data, size); !written) return written;
+    return file->commit();
 }
 
 namespace {
