@@ -1,6 +1,6 @@
 # libtiny3d — plain Makefile. See README.md.
 #   make          build/libtiny3d.a
-#   make demo     build and run every demo, frames under build/frames/<demo>/
+#   make demo     build and run every demo, frames under build/frames/<demo>/ (+ <demo>.gif)
 #   make test     build and run every test, then again under ASan + UBSan
 #   make test-portable  every test again with all SIMD paths off, under build/portable/
 #   make bench    speed-vs-accuracy benchmarks, CSV + charts under build/bench/
@@ -163,8 +163,10 @@ DEMO_ARGS_wireframe  = tests/data/cube_quads.obj
 DEMO_ARGS_render     = tests/data/torus_binary.ply
 DEMO_ARGS_ply_render = tests/data/torus_binary.ply 0 60 20 $(BUILD)/frames/ply_render/ply_render.pgm
 DEMO_NO_OUT          = ply_render
+# The animated demos also leave their sequence as one animated GIF, $(BUILD)/frames/<demo>.gif.
+DEMO_GIF             = cube soccer wireframe shaded lighting render
 define run-demo
-	@echo "demo: $(1)"; mkdir -p $(BUILD)/frames/$(1); $(BUILD)/demo/$(1) $(DEMO_ARGS_$(1)) $(if $(filter $(1),$(DEMO_NO_OUT)),,--out $(BUILD)/frames/$(1))
+	@echo "demo: $(1)"; mkdir -p $(BUILD)/frames/$(1); $(BUILD)/demo/$(1) $(DEMO_ARGS_$(1)) $(if $(filter $(1),$(DEMO_NO_OUT)),,--out $(BUILD)/frames/$(1)) $(if $(filter $(1),$(DEMO_GIF)),--gif $(BUILD)/frames/$(1).gif)
 
 endef
 demo:

@@ -63,7 +63,7 @@ int main(int argc, char **argv) {
     if (!canvas) return cli.fail(canvas.message());
     if (tiny3d::status s = demo::prepare_out_dir(o); !s) return cli.fail(s.message());
 
-    demo::progress timer("cube", o.frames_to_render());
+    demo::progress timer("cube", o);
     for (int frame = o.first_frame; frame <= o.last_frame; ++frame) {
         timer.start();
         canvas_clear(canvas->get(), 0.0f);
@@ -71,6 +71,6 @@ int main(int argc, char **argv) {
         timer.stop();
         if (tiny3d::status s = timer.save(**canvas, demo::frame_path(o, frame), o.png); !s) return cli.fail(s.message());
     }
-    timer.finish();
+    if (tiny3d::status done = timer.finish(); !done) return cli.fail(done.message());
     return 0;
 }

@@ -33,7 +33,6 @@
 namespace {
 
 constexpr int DEFAULT_SIZE = 480;
-constexpr double DEFAULT_FPS = 30.0;
 constexpr double DEFAULT_PERIOD_S = 4.0;
 constexpr float AMBIENT = 0.12f;
 constexpr float TRAIL_INK = 0.2f;      // each dot of a path
@@ -122,9 +121,9 @@ int main(int argc, char **argv) {
                            "lights plus ambient. Frame k shows the instant k / fps; one loop lasts --period seconds\n"
                            "(period · fps frames); at the end the demo checks that the loop closes.");
     bool faithful = false;
-    double fps = DEFAULT_FPS, period = DEFAULT_PERIOD_S;
+    double period = DEFAULT_PERIOD_S;
+    const double &fps = cli.common.fps;  // --fps (demo_cli): frame k shows time k / fps
     cli.add_sequence_options([&] { return frames_per_period(period, fps); }, DEFAULT_SIZE, DEFAULT_SIZE);
-    cli.number("--fps", fps, 0.1, 1000.0, "frames per second: frame k shows time k / fps (default 30)");
     cli.number("--period", period, 0.1, 3600.0, "seconds per loop of every motion (default 4)");
     cli.flag("--faithful-lambert", faithful, "light the wireframes with the report's per-edge Lambert");
     cli.add_samples(tiny3d::sample_count::x4);
@@ -167,7 +166,7 @@ int main(int argc, char **argv) {
         return s;
     };
 
-    demo::progress timer("lighting", o.frames_to_render());
+    demo::progress timer("lighting", o);
     for (int frame = o.first_frame; frame <= o.last_frame; ++frame) {
         timer.start();
         const tiny3d::status s = render_at(tiny3d::anim_clock::at_frame(frame, fps).seconds, **canvas);
@@ -175,7 +174,7 @@ int main(int argc, char **argv) {
         if (!s) return cli.fail(s.message());
         if (tiny3d::status w = timer.save(**canvas, demo::frame_path(o, frame), o.png); !w) return cli.fail(w.message());
     }
-    timer.finish();
+    if (tiny3d::status done = timer.finish(); !done) return cli.fail(done.message());
 
     // The loop closes: t = 0 and t = period are the same image.
     auto again = tiny3d::make_canvas(o.width, o.height);

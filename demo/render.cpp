@@ -320,7 +320,7 @@ int main(int argc, char **argv) {
     tiny3d::wireframe_workspace workspace;
 
     if (tiny3d::status st = demo::prepare_out_dir(o); !st) return cli.fail(st.message());
-    demo::progress timer("render", o.frames_to_render());
+    demo::progress timer("render", o);
     for (int frame = o.first_frame; frame <= o.last_frame; ++frame) {
         const float angle = float(2.0 * kPi * frame / s.turntable);
         const mat4_t model = tiny3d::mat4_rotate_axis(s.up, angle);
@@ -353,6 +353,6 @@ int main(int argc, char **argv) {
         }
         if (tiny3d::status st = timer.save(**canvas, demo::frame_path(o, frame), o.png); !st) return cli.fail(st.message());
     }
-    timer.finish();
+    if (tiny3d::status done = timer.finish(); !done) return cli.fail(done.message());
     return 0;
 }

@@ -70,7 +70,7 @@ int main(int argc, char **argv) {
     const mat4_t view_projection = mat4_multiply(tiny3d::mat4_perspective(radians(45), aspect, 0.1f, 100.0f),
                                                  tiny3d::mat4_look_at({0, 0, 11.5f}, {0, 0, 0}, {0, 1, 0}));
     tiny3d::render_context ctx(o.threads);
-    demo::progress timer("shaded", o.frames_to_render());
+    demo::progress timer("shaded", o);
     for (int frame = o.first_frame; frame <= o.last_frame; ++frame) {
         const float angle = radians(DEGREES_PER_FRAME * static_cast<float>(frame));
         timer.start();
@@ -105,6 +105,6 @@ int main(int argc, char **argv) {
         timer.stop();
         if (tiny3d::status s = timer.save(**canvas, demo::frame_path(o, frame), o.png); !s) return cli.fail(s.message());
     }
-    timer.finish();
+    if (tiny3d::status done = timer.finish(); !done) return cli.fail(done.message());
     return 0;
 }

@@ -121,7 +121,7 @@ int main(int argc, char **argv) {
     options.bounds = &bounds;
     tiny3d::wireframe_workspace workspace;
 
-    demo::progress timer("soccer", o.frames_to_render());
+    demo::progress timer("soccer", o);
     for (int frame = o.first_frame; frame <= o.last_frame; ++frame) {
         timer.start();
         canvas_clear(canvas->get(), 0.0f);
@@ -138,6 +138,6 @@ int main(int argc, char **argv) {
         timer.stop();
         if (tiny3d::status s = timer.save(**canvas, demo::frame_path(o, frame), o.png); !s) return cli.fail(s.message());
     }
-    timer.finish();
+    if (tiny3d::status done = timer.finish(); !done) return cli.fail(done.message());
     return 0;
 }

@@ -152,7 +152,8 @@ namespace tiny3d {
 // Writes `size` bytes to `path` atomically (temporary file in the same folder, fsync,
 // rename). On failure nothing is left behind and an existing file is untouched; the
 // error names the path and the reason. Existing non-regular files (devices, FIFOs) are
-// written in place. Used by every image writer in the library.
+// written in place. Used by every image writer in the library; atomic_file (below) is the
+// same save written piece by piece, and write_file_atomic is one write through it.
 // The temporary file is "<path>.tmp", claimed with an exclusive flock (released by the
 // kernel when its process dies), so the file a killed save left behind is reused and
 // renamed away by the next save of the same path; while another live save holds it, a
@@ -181,6 +182,105 @@ result<std::string> read_file_bytes(const std::string &path, std::uint64_t max_b
 
 }  // namespace tiny3d
 
+namespace tiny3d {
+
+// A file written piece by piece with write_file_atomic's guarantees: open() creates the
+// same temporary ("<path>.tmp", or "<path>.tmp-XXXXXX" while another live save holds that)
+// in the target's folder; write() appends; commit() fsyncs it and renames it over `path`.
+// A failed write removes the temporary at once (the error names the path and the reason:
+// disk full, file too large, …), and so do discard() and the destructor of a file never
+// committed: nothing is left behind and an existing file at `path` stays as it was. An
+// existing device or FIFO at `path` is written in place (commit() only closes it). Move-only.
+class atomic_file {
+public:
+    // Errors: empty name, the path is a folder, its folder missing or not a folder, no
+    // temporary can be created there (permission, …); each names the path and the reason.
+    static result<atomic_file> open(const std::string &path);
+    atomic_file(atomic_file &&other) noexcept;
+    atomic_file &operator=(atomic_file &&other) noexcept;
+    atomic_file(const atomic_file &) = delete;
+    atomic_file &operator=(const atomic_file &) = delete;
+    ~atomic_file();  // discard()
+
+    status write(const void *data, std::size_t size);  // after a failure the file is discarded
+    status commit();   // the file is closed afterwards, whatever the outcome
+    void discard();    // removes the temporary and closes; nothing happens when already closed
+    bool is_open() const { return fd_ >= 0; }
+    const std::string &path() const { return path_; }
+
+private:
+    atomic_file(std::string path, std::string temporary, int fd);
+    std::string path_, temporary_;  // temporary_ empty: written in place (a device or FIFO)
+    int fd_ = -1;
+};
+
+// ---- animated GIF (src/canvas/gif.cpp) ------------------------------------------------
+//
+// A sequence of grey canvases as one animated GIF89a file, lossless: the global colour
+// table holds the 256 greys (index i = grey i, i.e. R = G = B = i), and a pixel's index is
+// the byte save_pgm writes for it, round(clamp(v, 0, 1) · 255), so every frame decodes to
+// exactly its PGM's samples. The first frame is stored whole; each later frame stores only
+// the smallest rectangle holding every pixel that differs from the frame before (disposal
+// method 1, "do not dispose": the rest of the picture stays); an unchanged frame is a 1 × 1
+// rectangle repeating the top-left pixel, so it still holds its delay. Pixel data is LZW
+// as GIF89a appendix F defines it: minimum code size 8, codes of 9 up to 12 bits, a clear
+// code first and whenever the 4,096-entry table fills, the code width grown as the decoder
+// expects it (when the next code to be assigned no longer fits), an end code last.
+//
+// Frame k (0-based) shows from t_k = k / fps seconds on; its delay (in hundredths of a
+// second, the unit GIF has) is floor(100 · (k + 1) / fps) − floor(100 · k / fps), so the
+// delays' running sum stays within 1/100 s of the true time: 30 fps gives 3, 3, 4, 3, 3, 4, …
+struct gif_options {
+    // Frames per second, 0.01 … 50. Above 50 some delays would be 0 or 1 hundredth, which
+    // viewers replace by a tenth of a second.
+    double fps = 30.0;
+    // The NETSCAPE2.0 application block's loop count: 0 (default) = loop forever;
+    // 1 … 65535 = play once and then repeat that many times; −1 = no block (viewers play
+    // the animation once).
+    int loop_count = 0;
+};
+
+// The delay of frame k (≥ 0) at `fps`, in hundredths of a second (formula above). The
+// caller keeps fps within gif_options' range (gif_writer::create checks it).
+int gif_frame_delay(double fps, long frame);
+
+// Streams frames into an animated GIF. Memory stays the same whatever the number of frames
+// (two frames of bytes, the LZW table and one frame's encoded bytes). The file is an
+// atomic_file: it appears at `path` only when finish() succeeds. Any error (a write
+// failing, a frame of another size) removes the temporary, makes every later call return
+// the same error and leaves no file; destroying a writer that was not finished leaves no
+// file either. Errors name the path and the problem. Move-only; a moved-from writer
+// returns an error from every call.
+class gif_writer {
+public:
+    // Opens `path` (atomic_file::open's errors) and writes the header, the grey table and
+    // the loop block. Errors also for a size outside 1 … 65535 per side (GIF's limit) or
+    // beyond the canvas limits, an fps outside 0.01 … 50, a loop count outside −1 … 65535.
+    static result<gif_writer> create(const std::string &path, int width, int height, const gif_options &options = {});
+    gif_writer(gif_writer &&) noexcept;
+    gif_writer &operator=(gif_writer &&) noexcept;
+    gif_writer(const gif_writer &) = delete;
+    gif_writer &operator=(const gif_writer &) = delete;
+    ~gif_writer();  // an unfinished writer removes its temporary: no file is left
+
+    // Appends one frame, shown for gif_frame_delay(fps, k) hundredths (k = frames before
+    // it). Error when the canvas is invalid or not width × height ("frame 3 is 64x48, the
+    // animation is 64x64"), or the write fails; the writer then has failed (see above).
+    status add_frame(const canvas_t &frame);
+    // Writes the trailer and renames the file into place. Error when no frame was added, or
+    // after any earlier error, or when the write, fsync or rename fails (nothing left).
+    status finish();
+
+    long frame_count() const;    // frames added so far
+    std::string path() const;  // empty for a moved-from writer
+
+private:
+    struct state;
+    explicit gif_writer(std::unique_ptr<state> s);
+    std::unique_ptr<state> s_;
+};
+
+}  // namespace tiny3d
 #endif  // __cplusplus
 
 // Compat layer: other libtiny3d programs' names (canvas_create, …) and, because the

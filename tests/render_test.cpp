@@ -2,7 +2,8 @@
 // and names, pixels against hand-computed shading (a cube face seen head-on in orthographic
 // projection, lit by a light given on the command line), textures, the auto-framed
 // turntable keeping a mesh inside every frame, hidden-line against wireframe, --info's
-// counts, and bad command lines (exit 2) and bad files (exit 1) writing nothing.
+// counts, bad command lines (exit 2) and bad files (exit 1) writing nothing, and --gif (its
+// frames decoded by tests/gif_decoder.h against the PGMs of the same run).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "harness.h"
+#include "gif_decoder.h"
 #include "program_runner.h"
 #include "math3d.h"
 #include "mesh.h"
@@ -459,4 +461,48 @@ TEST(bad_command_lines_exit_2_and_bad_files_exit_1_writing_nothing) {
         CHECK_MSG(!r.err.empty(), "no message");
         CHECK(!fs::exists(dir.path / "out"));
     }
+}
+
+TEST(gif_holds_the_frames_of_the_range_byte_for_byte) {
+    if (!render_built()) return;
+    temp_dir dir;
+    const std::string gif = (dir.path / "turn.gif").string();
+    const run_result r = render(dir, {cube_obj, "--size", "40x30", "--turntable", "6", "--frames", "1:4", "--fps", "20",
+                                      "--gif", gif});
+    CHECK_MSG(r.exit_code == 0, r.err);
+    CHECK(r.out.find("wrote " + gif) != std::string::npos);
+    const gif_decoder::decoded_gif g = gif_decoder::decode_gif(file_bytes(gif));
+    CHECK_MSG(g.problem.empty(), g.problem);
+    CHECK_EQ(g.frames.size(), std::size_t{4});
+    CHECK_EQ(g.loop_count, 0);
+    for (std::size_t k = 0; k < g.frames.size(); ++k) {
+        const pgm_image img = frame(dir, "frame_00" + std::to_string(k + 1) + ".pgm");
+        CHECK_EQ(img.width, 40);
+        CHECK_MSG(std::equal(img.pixels.begin(), img.pixels.end(), g.frames[k].begin(), g.frames[k].end()),
+                  "frame " + std::to_string(k + 1) + " differs from its PGM");
+        CHECK_EQ(g.delays[k], 5);  // 20 fps: 5 hundredths each
+    }
+}
+
+TEST(gif_alone_writes_no_frames_and_its_errors_leave_nothing) {
+    if (!render_built()) return;
+    temp_dir dir;
+    const std::string gif = (dir.path / "only.gif").string();
+    run_result r = run(demo_path("render"), {cube_obj, "--size", "24x24", "--turntable", "3", "--gif", gif}, dir.path);
+    CHECK_MSG(r.exit_code == 0, r.err);
+    const auto files = files_in(dir.path);
+    CHECK(files.count("only.gif") == 1);
+    CHECK(!fs::exists(dir.path / "out"));
+    CHECK_EQ(gif_decoder::decode_gif(files.at("only.gif")).frames.size(), std::size_t{3});
+
+    temp_dir empty;
+    r = render(empty, {cube_obj, "--size", "24x24", "--gif", (empty.path / "x.gif").string(), "--fps", "60"});
+    CHECK_EQ(r.exit_code, 2);  // GIF delays cannot make 60 fps: refused before anything is written
+    CHECK(r.err.find("--fps 60") != std::string::npos);
+    const std::string missing = (empty.path / "no_folder" / "x.gif").string();
+    r = render(empty, {cube_obj, "--size", "24x24", "--turntable", "2", "--gif", missing});
+    CHECK_EQ(r.exit_code, 1);
+    CHECK_MSG(r.err.find(missing) != std::string::npos, r.err);
+    CHECK(!fs::exists(missing));
+    CHECK(!fs::exists(missing + ".tmp"));
 }

@@ -26,6 +26,15 @@ bool starts_with_space(const std::string &text) {
     return !text.empty() && (text.front() == ' ' || text.front() == '\t' || text.front() == '\n');
 }
 
+// GIF delays are whole hundredths of a second, and viewers slow 0 or 1 down to 10.
+constexpr double kGifMaxFps = 50.0;
+
+std::string number_text(double v) {
+    char buf[48];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
 std::string range_text(double min, double max) {
     char buf[96];
     std::snprintf(buf, sizeof buf, "%g..%g", min, max);
@@ -99,6 +108,7 @@ void command_line::add_out() {
          [this](const std::string &v) -> std::string {
              if (v.empty()) return "--out wants a folder, got ''";
              common.out_dir = v;
+             common.out_given = true;
              return "";
          }});
 }
@@ -162,6 +172,15 @@ void command_line::add_png() {
     flag("--png", common.png, "write a PNG beside every PGM (same name, .png); the PGM is always written");
 }
 
+void command_line::add_gif() {
+    text("--gif", "FILE", common.gif_path,
+         "also write the frames as one animated GIF (lossless 256 greys, looping); the PGM frames are then "
+         "written only if --out is given too");
+    number("--fps", common.fps, 0.1, 1000.0,
+           "frames per second of the sequence: frame k shows at k / X seconds, the GIF's rate (default 30; "
+           "at most 50 with --gif)");
+}
+
 void command_line::add_sequence_options(int frame_count, int default_width, int default_height) {
     add_sequence_options(std::function<int()>([frame_count] { return frame_count; }), default_width, default_height);
 }
@@ -171,6 +190,7 @@ void command_line::add_sequence_options(std::function<int()> frame_count, int de
     add_frames(std::move(frame_count));
     add_size(default_width, default_height);
     add_png();
+    add_gif();
 }
 
 void command_line::flag(const std::string &name, bool &target, const std::string &help) {
@@ -341,6 +361,8 @@ int command_line::parse(int argc, char **argv) {
         return usage_error("unexpected argument " + in_quotes(positional_values[positionals_.size()]));
     for (std::size_t k = 0; k < positional_values.size(); ++k) *positionals_[k].target = positional_values[k];
 
+    if (!common.gif_path.empty() && common.fps > kGifMaxFps)
+        return usage_error("--fps " + number_text(common.fps) + " is too fast for a GIF: at most 50 with --gif");
     if (frame_count_) {
         common.frame_count = frame_count_();
         if (frames_text_.empty()) {
@@ -355,6 +377,7 @@ int command_line::parse(int argc, char **argv) {
 }
 
 tiny3d::status prepare_out_dir(const common_options &o) {
+    if (!o.write_frames()) return {};  // only a GIF: no folder of frames
     std::error_code ec;
     std::filesystem::create_directories(o.out_dir, ec);
     if (ec) return tiny3d::error{o.out_dir, 0, -1, "cannot create the output folder: " + ec.message()};
@@ -371,6 +394,12 @@ progress::progress(std::string name, int total)
     : name_(std::move(name)), total_(total), terminal_(::isatty(STDOUT_FILENO) == 1),
       began_s_(tiny3d::frame_clock::steady_seconds()) {
     clock_.reserve(std::size_t(std::max(total, 0)));
+}
+
+progress::progress(std::string name, const common_options &o) : progress(std::move(name), o.frames_to_render()) {
+    write_frames_ = o.write_frames();
+    gif_path_ = o.gif_path;
+    gif_options_.fps = o.fps;
 }
 
 void progress::start() { frame_began_s_ = tiny3d::frame_clock::steady_seconds(); }
@@ -394,6 +423,15 @@ void progress::report_written(const std::string &path) {
 }
 
 tiny3d::status progress::save(const canvas_t &canvas, const std::string &pgm_path, bool png) {
+    if (!gif_path_.empty()) {
+        if (!gif_) {
+            auto writer = tiny3d::gif_writer::create(gif_path_, canvas.width, canvas.height, gif_options_);
+            if (!writer) return writer.to_status();
+            gif_.emplace(std::move(*writer));
+        }
+        if (tiny3d::status s = gif_->add_frame(canvas); !s) return s;
+    }
+    if (!write_frames_) return {};
     if (tiny3d::status s = tiny3d::save_pgm(canvas, pgm_path); !s) return s;
     report_written(pgm_path);
     if (!png) return {};
@@ -405,12 +443,18 @@ tiny3d::status progress::save(const canvas_t &canvas, const std::string &pgm_pat
     return {};
 }
 
-void progress::finish() {
+tiny3d::status progress::finish() {
+    tiny3d::status gif_status;
+    if (gif_) {
+        gif_status = gif_->finish();
+        if (gif_status) report_written(gif_path_);
+        gif_.reset();
+    }
     if (line_open_) std::printf("\n");
     std::fflush(stdout);
     line_open_ = false;
     const tiny3d::frame_summary s = clock_.summary();
-    if (s.frames == 0) return;
+    if (!gif_status || s.frames == 0) return gif_status;
     using tiny3d::frame_clock;
     const double total = frame_clock::steady_seconds() - began_s_;
     std::fprintf(stderr,
@@ -418,6 +462,7 @@ void progress::finish() {
                  "(%.1f / %.1f / %.1f fps)\n",
                  name_.c_str(), s.frames, s.frames == 1 ? "" : "s", total, 1000.0 * s.min_s, 1000.0 * s.median_s,
                  1000.0 * s.max_s, frame_clock::fps(s.min_s), frame_clock::fps(s.median_s), frame_clock::fps(s.max_s));
+    return {};
 }
 
 tiny3d::line_method line_method_named(const std::string &name) {

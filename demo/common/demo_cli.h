@@ -25,6 +25,7 @@
 #define TINY3D_DEMO_CLI_H
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -58,7 +59,12 @@ struct common_options {
     int threads = 1;                // --threads N
     bool png = false;               // --png: a PNG beside every PGM
     tiny3d::sample_count samples = tiny3d::sample_count::x1;  // --aa N: filled triangles' samples per pixel
+    std::string gif_path;           // --gif FILE: the frames rendered, as one animated GIF
+    double fps = 30.0;              // --fps X: the sequence's frame rate (frame k at k / fps s)
+    bool out_given = false;         // --out was on the command line
     int frames_to_render() const { return last_frame - first_frame + 1; }
+    // PGM (and PNG) frames are written unless only a GIF was asked for (--gif without --out).
+    bool write_frames() const { return gif_path.empty() || out_given; }
 };
 
 // A program's command line: declare the options, then parse().
@@ -83,7 +89,12 @@ public:
     void add_png();
     // --aa 1|4|8|16: samples per pixel of the filled triangles (render_context::begin_frame).
     void add_samples(tiny3d::sample_count default_samples);
-    // What a program writing a sequence of frames takes: --out, --frames, --size, --png.
+    // --gif FILE and --fps X (0.1..1000, default 30; with --gif at most 50, GIF's limit):
+    // the frames rendered also go into one animated GIF played at X frames per second
+    // (tiny3d::gif_writer), and the PGM/PNG frames only when --out is given too.
+    void add_gif();
+    // What a program writing a sequence of frames takes: --out, --frames, --size, --png,
+    // --gif, --fps.
     void add_sequence_options(int frame_count, int default_width, int default_height);
     void add_sequence_options(std::function<int()> frame_count, int default_width, int default_height);
 
@@ -151,14 +162,19 @@ class progress {
 public:
     // `total` = frames the program renders; writes go to stdout, the summary to stderr.
     progress(std::string name, int total);
+    // A sequence's progress: o.frames_to_render() frames, and save() writes what `o` asks
+    // for (PGM/PNG frames, the GIF of --gif).
+    progress(std::string name, const common_options &o);
     void start();  // a frame begins
     void stop();   // the frame's pixels are done (its time is recorded)
     // Saves canvas as PGM at `pgm_path` (and, with `png`, as PNG beside it: the same name
-    // ending in .png), atomically, and reports each file written.
+    // ending in .png), atomically, and reports each file written. Made from common_options:
+    // the PGM/PNG only when o.write_frames(), and the canvas appended to the --gif file.
     tiny3d::status save(const canvas_t &canvas, const std::string &pgm_path, bool png);
     void report_written(const std::string &path);
-    // Ends the progress line and prints the summary (nothing when no frame was timed).
-    void finish();
+    // Finishes the --gif file (renamed into place now; an error leaves no file), ends the
+    // progress line and prints the summary (nothing when no frame was timed).
+    tiny3d::status finish();
     const tiny3d::frame_clock &clock() const { return clock_; }  // the render time of each frame
 
 private:
@@ -168,6 +184,10 @@ private:
     bool line_open_ = false;
     double began_s_, frame_began_s_ = 0.0;
     tiny3d::frame_clock clock_;
+    bool write_frames_ = true;
+    std::string gif_path_;
+    tiny3d::gif_options gif_options_;
+    std::optional<tiny3d::gif_writer> gif_;  // opened by the first save()
 };
 
 // The line drawer named by a --lines choice: "tabulated", "faithful", anything else the

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "canvas.h"
@@ -73,39 +74,87 @@ std::string folder_of(const std::string &path) {
 
 }  // namespace
 
-status write_file_atomic(const std::string &path, const void *data, std::size_t size) {
+// ---- atomic_file: the temporary, the checks and the rename of every save ----
+
+atomic_file::atomic_file(std::string path, std::string temporary, int fd)
+    : path_(std::move(path)), temporary_(std::move(temporary)), fd_(fd) {}
+
+atomic_file::atomic_file(atomic_file &&other) noexcept
+    : path_(std::move(other.path_)), temporary_(std::move(other.temporary_)), fd_(other.fd_) {
+    other.fd_ = -1;
+}
+
+atomic_file &atomic_file::operator=(atomic_file &&other) noexcept {
+    if (this != &other) {
+        discard();
+        path_ = std::move(other.path_);
+        temporary_ = std::move(other.temporary_);
+        fd_ = other.fd_;
+        other.fd_ = -1;
+    }
+    return *this;
+}
+
+atomic_file::~atomic_file() { discard(); }
+
+result<atomic_file> atomic_file::open(const std::string &path) {
     if (path.empty()) return error{"", 0, -1, "cannot save: empty file name"};
-    const auto *bytes = static_cast<const unsigned char *>(data);
     struct stat st {};
     const bool exists = ::stat(path.c_str(), &st) == 0;
     if (exists && S_ISDIR(st.st_mode)) return error{path, 0, -1, "cannot save: the path is a folder"};
-    int err = 0;
-    if (exists && !S_ISREG(st.st_mode)) {
-        // A device or FIFO (e.g. /dev/full, /dev/stdout): write in place, never replace it.
+    if (exists && !S_ISREG(st.st_mode)) {  // a device or FIFO (e.g. /dev/full, /dev/stdout): in place, never replaced
         const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
         if (fd < 0) return io_error(path, "cannot open for writing", errno);
-        const bool ok = write_all(fd, bytes, size, err);
-        if (::close(fd) != 0 && ok) err = errno;
-        if (!ok || err) return io_error(path, "write failed", err);
-        return {};
+        return atomic_file(path, "", fd);
     }
     const std::string folder = folder_of(path);
     struct stat dst {};
     if (::stat(folder.c_str(), &dst) != 0) return io_error(path, "cannot save: folder '" + folder + "'", errno);
     if (!S_ISDIR(dst.st_mode)) return error{path, 0, -1, "cannot save: '" + folder + "' is not a folder"};
-
     std::string tmp;
     const int fd = open_temporary(path, tmp);
     if (fd < 0) return io_error(path, "cannot create a temporary file in '" + folder + "'", errno);
-    bool ok = write_all(fd, bytes, size, err);
-    if (ok && ::fchmod(fd, 0644) != 0) { err = errno; ok = false; }
-    if (ok && ::fsync(fd) != 0) { err = errno; ok = false; }
-    // Renamed (or removed) before the close drops the lock: until then the name is ours.
-    if (ok && ::rename(tmp.c_str(), path.c_str()) != 0) { err = errno; ok = false; }
-    if (!ok) ::unlink(tmp.c_str());
+    return atomic_file(path, tmp, fd);
+}
+
+status atomic_file::write(const void *data, std::size_t size) {
+    if (fd_ < 0) return error{path_, 0, -1, "cannot write: the file is closed"};
+    int err = 0;
+    if (write_all(fd_, static_cast<const unsigned char *>(data), size, err)) return {};
+    discard();
+    return io_error(path_, "write failed", err);
+}
+
+status atomic_file::commit() {
+    if (fd_ < 0) return error{path_, 0, -1, "cannot save: the file is closed"};
+    const int fd = fd_;
+    fd_ = -1;
+    int err = 0;
+    bool ok = true;
+    if (!temporary_.empty()) {
+        if (::fchmod(fd, 0644) != 0) { err = errno; ok = false; }
+        if (ok && ::fsync(fd) != 0) { err = errno; ok = false; }
+        // Renamed (or removed) before the close drops the lock: until then the name is ours.
+        if (ok && ::rename(temporary_.c_str(), path_.c_str()) != 0) { err = errno; ok = false; }
+        if (!ok) ::unlink(temporary_.c_str());
+    }
     if (::close(fd) != 0 && ok) { err = errno; ok = false; }
-    if (!ok) return io_error(path, "cannot save", err);
+    if (!ok) return io_error(path_, "cannot save", err);
     return {};
+}
+
+void atomic_file::discard() {
+    if (fd_ < 0) return;
+    if (!temporary_.empty()) ::unlink(temporary_.c_str());  // before the close drops the lock
+    ::close(fd_);
+    fd_ = -1;
+}
+
+status write_file_atomic(const std::string &path, const void *data, std::size_t size) {
+    result<atomic_file> file = atomic_file::open(path);
+    if (!file) return file.err();
+    if (status written = file->write(data, size); !written) return written;
+    return file->commit();
 }
 
 namespace {
