@@ -71,7 +71,10 @@ add_block
 git ls-files -co --exclude-standard > "$out/files.txt" || { echo "mutation: needs a git checkout" >&2; exit 2; }
 while IFS= read -r f; do
   [ -f "$f" ] || continue
-  if ! cmp -s "$f" "$tree/$f"; then mkdir -p "$tree/$(dirname "$f")" && cp -p "$f" "$tree/$f"; fi
+  # New in the copy: keep the file's time (BUILD's objects stay usable); changed: the copy
+  # gets the current time, so make rebuilds what was built from the old text.
+  if [ ! -e "$tree/$f" ]; then mkdir -p "$tree/$(dirname "$f")" && cp -p "$f" "$tree/$f"
+  elif ! cmp -s "$f" "$tree/$f"; then cp "$f" "$tree/$f"; fi
 done < "$out/files.txt"
 # Files the working tree no longer has (outside the copy's own build folder) go too.
 (cd "$tree" && find . -path ./build -prune -o -type f -print | sed 's|^\./||') | sort > "$out/tree_files.txt"
@@ -106,9 +109,9 @@ done
 perl_unescape='my $f = $ENV{FIND}; my $r = $ENV{REPLACE} // ""; s/\\n/\n/g for $f, $r;'
 killed=0; survived=0; invalid=0; survivors=()
 rows=()
-row() { rows+=("$(printf '%-28s %-36s %-9s %s' "$1" "$2" "$3" "$4")"); echo "${rows[-1]}"; }
+row() { rows+=("$(printf '%-34s %-36s %-9s %s' "$1" "$2" "$3" "$4")"); echo "${rows[-1]}"; }
 echo "mutation: ${#ids[@]} mutants"
-printf '%-28s %-36s %-9s %s\n' "mutant" "file" "result" "by" | tee "$out/header.txt"
+printf '%-34s %-36s %-9s %s\n' "mutant" "file" "result" "by" | tee "$out/header.txt"
 for i in "${!ids[@]}"; do
   id=${ids[$i]}; file=${files[$i]}; log="$logs/$id.log"
   target="$tree/$file"
