@@ -4,6 +4,8 @@
 #   make test     build and run every test, then again under ASan + UBSan
 #   make test-portable  every test again with all SIMD paths off, under build/portable/
 #   make bench    speed-vs-accuracy benchmarks, CSV + charts under build/bench/
+#   make fuzz     the libFuzzer targets (clang); make mutation: the mutation check;
+#   make tsan     the threaded render under ThreadSanitizer (none of the three is in make test)
 #   make install  headers, libtiny3d.a and tiny3d.pc under PREFIX (default /usr/local), DESTDIR honoured
 #   make clean
 # BUILD=dir puts everything in another folder (several checkouts or people at once).
@@ -208,6 +210,37 @@ $(BUILD)/fuzz/fuzz_%: tests/fuzz/fuzz_%.cpp $(BUILD)/fuzz/libtiny3d.a
 .PHONY: fuzz
 fuzz: $(FUZZ_BINS)
 	bash tests/fuzz/run_fuzz.sh $(BUILD) $(FUZZ_SECONDS) $(FUZZ_BINS)
+
+# ---- mutation check (not part of `make test`): make mutation [MUTANTS=id-regex] ----
+# Each mutant of tests/mutation/mutants.txt applied to a copy of the tree under
+# $(BUILD)/mutation/ (never to the working tree), the named plain tests run against it;
+# table, closing line and $(BUILD)/mutation/report.txt. See tests/mutation/run_mutation.sh.
+.PHONY: mutation
+mutation:
+	bash tests/mutation/run_mutation.sh $(BUILD) tests/mutation/mutants.txt '$(MUTANTS)'
+
+# ---- ThreadSanitizer on the threaded render (not part of `make test`): make tsan ----
+# The library and the tests that render on several threads, built with -fsanitize=thread
+# under $(BUILD)/tsan/ and run; any report fails the run (halt_on_error).
+TSAN_FLAGS := -O1 -g1 -fsanitize=thread -fno-omit-frame-pointer
+TSAN_OBJS  := $(LIB_SRCS:%.cpp=$(BUILD)/tsan/obj/%.o)
+TSAN_TESTS := $(BUILD)/tsan/tests/raster_threads_test $(BUILD)/tsan/tests/raster_context_test
+
+$(BUILD)/tsan/obj/%.o: %.cpp
+	@mkdir -p $(@D)
+	$(CXX) $(STD) $(TSAN_FLAGS) $(WARN) $(CPPFLAGS) -c $< -o $@
+
+$(BUILD)/tsan/libtiny3d.a: $(TSAN_OBJS)
+	rm -f $@ && ar rcs $@ $^
+
+$(BUILD)/tsan/tests/%: tests/%.cpp $(BUILD)/tsan/libtiny3d.a
+	@mkdir -p $(@D)
+	$(CXX) $(STD) $(TSAN_FLAGS) $(WARN) $(CPPFLAGS) $< $(BUILD)/tsan/libtiny3d.a -o $@ $(LDLIBS)
+
+.PHONY: tsan
+tsan: $(TSAN_TESTS)
+	@set -e; for t in $(TSAN_TESTS); do echo "tsan: $$t"; \
+	  TSAN_OPTIONS="halt_on_error=1 exitcode=66" $$t; done; echo "tsan: no data race reported"
 
 # ---- install: headers, libtiny3d.a and the pkg-config file tiny3d.pc ----
 #   make install [PREFIX=/usr/local] [DESTDIR=staging-root]    (and make uninstall)

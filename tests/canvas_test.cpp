@@ -34,6 +34,47 @@ TEST(create_canvas_rejects_bad_sizes) {
     CHECK(!tiny3d::make_canvas(-3, 3).ok());
 }
 
+TEST(canvas_limits_sit_exactly_at_the_stated_values) {
+    // canvas.h: sides 1..CANVAS_MAX_SIDE, at most CANVAS_MAX_PIXELS pixels (checked, not
+    // allocated, here).
+    CHECK(tiny3d::check_canvas_size(CANVAS_MAX_SIDE, 1).ok());
+    CHECK(tiny3d::check_canvas_size(1, CANVAS_MAX_SIDE).ok());
+    CHECK(!tiny3d::check_canvas_size(CANVAS_MAX_SIDE + 1, 1).ok());
+    CHECK(!tiny3d::check_canvas_size(1, CANVAS_MAX_SIDE + 1).ok());
+    CHECK_EQ(16384LL * 16384LL, CANVAS_MAX_PIXELS);
+    CHECK(tiny3d::check_canvas_size(16384, 16384).ok());
+    CHECK(!tiny3d::check_canvas_size(16384, 16385).ok());
+    CHECK(!tiny3d::check_canvas_size(16385, 16384).ok());
+    CHECK(tiny3d::check_canvas_size(16385, 16384).message().find("exceeds the limit") != std::string::npos);
+}
+
+TEST(clear_count_and_get_pixel_keep_their_contracts) {
+    canvas_t *c = create_canvas(7, 3);
+    CHECK(c != nullptr);
+    if (!c) return;
+    // canvas_clear stores clamp(value) to 0..1, NaN as 0.
+    canvas_clear(c, 2.5f);
+    CHECK_EQ(canvas_count_differing(c, 1.0f), std::size_t(0));
+    canvas_clear(c, -0.5f);
+    CHECK_EQ(canvas_count_differing(c, 0.0f), std::size_t(0));
+    canvas_clear(c, 0.25f);
+    CHECK_EQ(canvas_count_differing(c, 0.25f), std::size_t(0));
+    CHECK_EQ(canvas_count_differing(c, 0.5f), std::size_t(21));
+    c->pixels[1][0] = 0.875f;  // the first pixel of row 1 follows the last of row 0 in memory
+    c->pixels[2][6] = 0.5f;
+    CHECK_EQ(canvas_count_differing(c, 0.25f), std::size_t(2));
+    // get_pixel: the pixel inside, 0 one step past every edge (never the neighbouring row).
+    CHECK_EQ(get_pixel(c, 0, 1), 0.875f);
+    CHECK_EQ(get_pixel(c, 6, 2), 0.5f);
+    CHECK_EQ(get_pixel(c, 7, 0), 0.0f);
+    CHECK_EQ(get_pixel(c, -1, 1), 0.0f);
+    CHECK_EQ(get_pixel(c, 0, 3), 0.0f);
+    CHECK_EQ(get_pixel(c, 0, -1), 0.0f);
+    canvas_clear(c, NAN);
+    CHECK_EQ(canvas_count_differing(c, 0.0f), std::size_t(0));
+    destroy_canvas(c);
+}
+
 // set_pixel_f keeps the report's convention: integer coordinates are pixel centres.
 TEST(splat_at_pixel_centre_hits_one_pixel) {
     canvas_t *c = create_canvas(4, 4);
@@ -173,6 +214,18 @@ TEST(pgm_reader_comments_maxval_16bit_and_colour) {
         CHECK_NEAR((*b)->data[0], 32768.0 / 65535.0, 1e-7);
         CHECK_NEAR((*b)->data[1], 1.0, 1e-7);
     }
+    // Two bytes per sample from maxval 256 on (Netpbm: maxval > 255), 1 byte up to 255.
+    write_bytes(path, std::string("P5\n2 1\n256\n") + char(0x01) + char(0x00) + char(0x00) + char(0x80));
+    auto wide = tiny3d::load_pgm(path);
+    CHECK_MSG(wide.ok(), wide.message());
+    if (wide.ok()) {
+        CHECK_NEAR((*wide)->data[0], 1.0, 1e-7);
+        CHECK_NEAR((*wide)->data[1], 0.5, 1e-7);
+    }
+    write_bytes(path, std::string("P5\n2 1\n255\n") + char(0xff) + char(0x33));
+    auto narrow = tiny3d::load_pgm(path);
+    CHECK_MSG(narrow.ok(), narrow.message());
+    if (narrow.ok()) CHECK_NEAR((*narrow)->data[1], 0.2, 1e-7);
     // Colour to grey by Rec. 709 luminance: pure green is 0.7152.
     write_bytes(path, std::string("P6 1 1 255\n") + char(0) + char(255) + char(0));
     auto c = tiny3d::load_pgm(path);
@@ -216,6 +269,8 @@ TEST(pgm_reader_errors_name_file_and_place) {
         {"P2\n2 2\n255\n1 2 3 x\n", ":4: expected a sample"},
         {"P2\n2 1\n255\n1 300\n", ":4: sample 300 exceeds maxval"},
         {"P5\n1 1\n100\n" + std::string(1, char(200)), ": byte 11: sample 200 exceeds"},
+        {"P5\n1 1\n100\n" + std::string(1, char(101)), ": byte 11: sample 101 exceeds"},  // maxval + 1
+        {"P5\n1 1\n1000\n" + std::string(1, char(0x03)) + char(0xe9), ": byte 12: sample 1001 exceeds"},
         {"P2\n2 2\n", ":3: unexpected end of file: expected maxval"},
         {"P2\n2 -2\n255\n", ":2: expected height"},
         {"P2\n2x 2\n255\n", ":2: malformed width"},

@@ -48,16 +48,18 @@ std::string read_bytes(const fs::path &p) {
 std::string check_file(const std::string &target, const fs::path &file) {
     if (target == "obj") return fuzz_checks::check_obj(read_bytes(file), file.string());
     if (target == "ply") return fuzz_checks::check_ply(read_bytes(file), file.string());
+    if (target == "texture") return fuzz_checks::check_texture_file(file.string());
     return fuzz_checks::check_pnm_file(file.string());
 }
 
 bool loads(const std::string &target, const fs::path &file) {
     if (target == "obj") return tiny3d::parse_obj(read_bytes(file)).ok();
     if (target == "ply") return tiny3d::parse_ply(read_bytes(file)).ok();
+    if (target == "texture") return tiny3d::load_texture_pgm(file.string()).ok();
     return tiny3d::load_pgm(file.string()).ok();
 }
 
-const char *const TARGETS[] = {"obj", "ply", "pnm"};
+const char *const TARGETS[] = {"obj", "ply", "pnm", "texture"};
 
 }  // namespace
 

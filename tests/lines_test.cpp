@@ -320,6 +320,27 @@ TEST(faithful_line_known_failures) {
     CHECK_NEAR(ink(*g) / true_ink(s, 0.5, tiny3d::line_cap::round), 1.0, 1e-5);
 }
 
+TEST(coverage_line_intensity_above_one_is_clamped_to_one) {
+    // lines.h: c = intensity · coverage with intensity clamped to ≤ 1. An intensity of 4
+    // must give exactly the image of intensity 1, i.e. the double-precision coverage
+    // reference, not a partial edge pixel multiplied up to full ink.
+    std::mt19937 rng(71);
+    std::vector<double> ref;
+    for (int k = 0; k < 20; ++k) {
+        const placed_segment p = random_segment(rng, 2.5, 10.0, 60.0);
+        canvas_ptr bright = blank(p.width, p.height), unit = blank(p.width, p.height);
+        tiny3d::draw_line_coverage(bright.get(), p.s.x0, p.s.y0, p.s.x1, p.s.y1, 2.5f, {tiny3d::line_cap::round, 4.0f});
+        tiny3d::draw_line_coverage(unit.get(), p.s.x0, p.s.y0, p.s.x1, p.s.y1, 2.5f, {tiny3d::line_cap::round, 1.0f});
+        CHECK(std::memcmp(bright->data, unit->data, sizeof(float) * std::size_t(p.width) * p.height) == 0);
+        tiny3d::line_coverage_reference(ref, p.width, p.height, p.s.x0, p.s.y0, p.s.x1, p.s.y1, 2.5,
+                                        tiny3d::line_cap::round);
+        error_stats e;
+        compare(*bright, ref, e);
+        CHECK_MSG(e.max <= 0.07, "max error " + std::to_string(e.max));
+        CHECK_NEAR(ink(*bright) / true_ink(p.s, 2.5, tiny3d::line_cap::round), 1.0, 1e-3);
+    }
+}
+
 // ---- Xiaolin Wu -------------------------------------------------------------------------
 
 TEST(wu_weights) {
@@ -345,6 +366,36 @@ TEST(wu_weights) {
     canvas_ptr g = blank(12, 12);
     tiny3d::draw_line_wu(g.get(), -3e38f, -3e38f, 3e38f, 3e38f);  // y = x: on the centres
     for (int k = 1; k < 11; ++k) CHECK_NEAR(g->pixels[k][k], 1.0, 1e-6);
+}
+
+TEST(wu_end_columns_carry_the_covered_length) {
+    // Wu's weights along the major axis: column i (pixels i .. i + 1 in canvas units) gets
+    // the length of [x0, x1] inside it, split over two rows. So each column's ink is
+    // intensity · |[x0, x1] ∩ [i, i + 1]| (in double), the end columns included, and the
+    // column past each end gets none. Both orientations (steep: rows instead of columns)
+    // and both directions.
+    std::mt19937 rng(83);
+    std::uniform_real_distribution<double> start(3.0, 12.0), length(2.0, 30.0), slope(-0.9, 0.9), level(0.2, 1.0);
+    for (int k = 0; k < 200; ++k) {
+        const double a0 = start(rng), a1 = a0 + length(rng), b0 = 32.0 + start(rng) * 0.2;
+        const double b1 = b0 + slope(rng) * (a1 - a0);
+        const float value = float(level(rng));
+        const bool steep = k % 2 == 1, reversed = k % 4 >= 2;
+        const float fa0 = float(a0), fa1 = float(a1), fb0 = float(b0), fb1 = float(b1);
+        canvas_ptr c = blank(64, 64);
+        float x0 = steep ? fb0 : fa0, y0 = steep ? fa0 : fb0, x1 = steep ? fb1 : fa1, y1 = steep ? fa1 : fb1;
+        if (reversed) {
+            std::swap(x0, x1);
+            std::swap(y0, y1);
+        }
+        tiny3d::draw_line_wu(c.get(), x0, y0, x1, y1, value);
+        for (int i = 0; i < 64; ++i) {
+            double column = 0;
+            for (int j = 0; j < 64; ++j) column += steep ? c->pixels[i][j] : c->pixels[j][i];
+            const double covered = std::max(0.0, std::min<double>(fa1, i + 1.0) - std::max<double>(fa0, i));
+            CHECK_NEAR(column, double(value) * covered, 2e-6);
+        }
+    }
 }
 
 // ---- Bresenham and the gradient line -----------------------------------------------------

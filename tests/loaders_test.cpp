@@ -246,6 +246,14 @@ TEST(ply_counts_checked_before_allocating) {
                                    "property float z\nelement face 4000000000\nproperty list uchar int vertex_indices\n"
                                    "end_header\n";
     EXPECT_LINE_ERROR(parse_ply(many_faces, "faces.ply"), 7, "announces");
+    // Each element fits the data alone, not both together: 2 vertices × 12 bytes and 2
+    // "extra" entries × 12 bytes need 48 of the 36 bytes there: the second one is refused at
+    // its header line, with the bytes there are.
+    const std::string together = "ply\nformat binary_little_endian 1.0\nelement vertex 2\nproperty float x\n"
+                                 "property float y\nproperty float z\nelement extra 2\nproperty float a\n"
+                                 "property float b\nproperty float c\nend_header\n" +
+                                 std::string(36, '\0');
+    EXPECT_LINE_ERROR(parse_ply(together, "together.ply"), 7, "more than the 36 bytes");
     // An empty element with a giant count costs nothing and is accepted.
     const result<mesh> empty = parse_ply("ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\n"
                                          "property float z\nelement nothing 18446744073\nend_header\n",

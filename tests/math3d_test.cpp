@@ -115,6 +115,35 @@ TEST(inverse_reports_singular_matrices) {
     CHECK(!mat4_inverse(mat4_scale(1e-39f, 1e-39f, 1e-39f)).ok());
 }
 
+TEST(inverse_singularity_threshold_sits_at_1e_12_of_hadamards_bound) {
+    // Rows (1, 0, 0, 0), (1, δ, 0, 0), e3, e4: det = δ (analytic), Hadamard's bound
+    // Π‖row‖ = √(1 + δ²) ≈ 1, so the ratio the header states is δ / √(1 + δ²). Nearly
+    // parallel rows, not a small scale: a decade either side of 1e-12 decides.
+    const auto nearly_parallel = [](float delta) {
+        mat4_t m = mat4_identity();
+        m.m[0 * 4 + 1] = 1.0f;   // row 1, column 0
+        m.m[1 * 4 + 1] = delta;  // row 1, column 1
+        return m;
+    };
+    for (const float delta : {1e-13f, 3e-14f, 1e-16f}) {
+        const result<mat4_t> inv = mat4_inverse(nearly_parallel(delta));
+        CHECK_MSG(!inv.ok(), "a matrix with |det| / Π‖row‖ = " + std::to_string(delta) + " was inverted");
+        if (!inv.ok()) CHECK_MSG(inv.message().find("singular") != std::string::npos, inv.message());
+    }
+    for (const float delta : {1e-11f, 1e-9f, 1e-6f}) {
+        const result<mat4_t> inv = mat4_inverse(nearly_parallel(delta));
+        CHECK_MSG(inv.ok(), "ratio " + std::to_string(delta) + " refused");
+        if (!inv.ok()) continue;
+        // Analytic inverse of [[1, 0], [1, δ]]: [[1, 0], [−1/δ, 1/δ]], identity elsewhere.
+        const double d = double(delta);  // δ as the float holds it
+        double expected[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+        expected[0 * 4 + 1] = -1.0 / d;
+        expected[1 * 4 + 1] = 1.0 / d;
+        for (int k = 0; k < 16; ++k)
+            CHECK_NEAR(double(inv.value().m[k]), expected[k], 1e-6 * std::fabs(expected[k]) + 1e-12);
+    }
+}
+
 TEST(transpose_swaps_rows_and_columns) {
     std::mt19937 rng(43);
     const mat4_t m = random_matrix(rng);

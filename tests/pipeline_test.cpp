@@ -148,6 +148,100 @@ TEST(near_plane_cut_at_the_exact_intersection) {
     CHECK_EQ(clip_outcode({0, -3, -2, 1}), unsigned(clip_bottom | clip_near));
 }
 
+namespace {
+
+// Inside test_proj()'s frustum, written from its definition in world space (double):
+// n ≤ −z ≤ f, |x| ≤ −z, |y| ≤ −z.
+bool ref_inside(const double p[3]) {
+    const double depth = -p[2];
+    return depth >= n_plane && depth <= f_plane && std::fabs(p[0]) <= depth && std::fabs(p[1]) <= depth;
+}
+
+// The smallest t with a + t·(b − a) inside, for `a` anywhere and `b` inside (the frustum is
+// convex, so the inside part is [t, 1]): bisection on ref_inside, in double.
+double ref_entry(const double a[3], const double b[3]) {
+    const auto at = [&](double t) {
+        const double p[3] = {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};
+        return ref_inside(p);
+    };
+    if (at(0.0)) return 0.0;
+    double out = 0.0, in = 1.0;
+    for (int i = 0; i < 80; ++i) {
+        const double mid = 0.5 * (out + in);
+        (at(mid) ? in : out) = mid;
+    }
+    return in;
+}
+
+}  // namespace
+
+TEST(segment_entering_the_frustum_is_cut_where_it_enters) {
+    // From anywhere (outside any plane, behind the camera, or inside) to a point well inside:
+    // t0 is where the segment enters, found by bisection in world space; drawn the other way
+    // round the same point is where it leaves (t1 = 1 − t0).
+    const mat4_t proj = test_proj();
+    std::mt19937 rng(29);
+    std::uniform_real_distribution<double> wide(-30, 30), behind_to_beyond(-30, 5), unit(-0.7, 0.7), depth(1.5, 9);
+    int entered = 0;
+    for (int i = 0; i < 400; ++i) {
+        const double a[3] = {wide(rng), wide(rng), behind_to_beyond(rng)};
+        const double d = depth(rng);
+        const double b[3] = {unit(rng) * d, unit(rng) * d, -d};
+        const vec4_t ca = mat4_mul_vec4(proj, {float(a[0]), float(a[1]), float(a[2]), 1});
+        const vec4_t cb = mat4_mul_vec4(proj, {float(b[0]), float(b[1]), float(b[2]), 1});
+        // The reference from the float coordinates the clipper sees.
+        const double af[3] = {double(float(a[0])), double(float(a[1])), double(float(a[2]))};
+        const double bf[3] = {double(float(b[0])), double(float(b[1])), double(float(b[2]))};
+        const double t_entry = ref_entry(af, bf);
+        entered += t_entry > 0.0;
+        const segment_clip forward = clip_segment(ca, cb), backward = clip_segment(cb, ca);
+        CHECK(forward.visible && backward.visible);
+        CHECK_NEAR(forward.t0, t_entry, 1e-5);
+        CHECK_NEAR(forward.t1, 1.0, 0.0);
+        CHECK_NEAR(backward.t0, 0.0, 0.0);
+        CHECK_NEAR(backward.t1, 1.0 - t_entry, 1e-5);
+    }
+    CHECK(entered > 300);  // most starts are outside: the entry is what is tested
+}
+
+TEST(triangle_beyond_the_far_plane_is_cut_at_it) {
+    // World z of each vertex as attribute 0: clip space is linear in world space, so a
+    // crossing of the far plane (world z = −f) carries attribute −f exactly.
+    const mat4_t proj = test_proj();
+    const auto vertex = [&](float x, float y, float z) {
+        clip_vertex v;
+        v.position = mat4_mul_vec4(proj, {x, y, z, 1});
+        v.attr.fill(0.0f);
+        v.attr[0] = z;
+        return v;
+    };
+    const clip_vertex tri[3] = {vertex(-1, -1, -5), vertex(1, -1, -5), vertex(0, 1, -20)};
+    for (const unsigned planes : {unsigned(clip_far), unsigned(clip_all)}) {
+        clip_vertex out[CLIP_MAX_VERTICES];
+        const int n = clip_polygon(tri, 3, planes, 1.0f, 1, out);
+        CHECK_EQ(n, 4);
+        std::vector<double> zs;
+        for (int k = 0; k < n; ++k) {
+            const vec4_t p = out[k].position;
+            CHECK(p.w > 0.0f);
+            CHECK(double(p.z) <= double(p.w) * (1.0 + 1e-6));  // NDC depth ≤ 1
+            zs.push_back(out[k].attr[0]);
+        }
+        std::sort(zs.begin(), zs.end());
+        if (zs.size() == 4) {
+            CHECK_NEAR(zs[0], -f_plane, 1e-4);
+            CHECK_NEAR(zs[1], -f_plane, 1e-4);
+            CHECK_NEAR(zs[2], -5.0, 0.0);
+            CHECK_NEAR(zs[3], -5.0, 0.0);
+        }
+    }
+    // Wholly beyond the far plane: nothing.
+    const clip_vertex far_off[3] = {vertex(-1, -1, -12), vertex(1, -1, -15), vertex(0, 1, -20)};
+    clip_vertex out[CLIP_MAX_VERTICES];
+    CHECK_EQ(clip_polygon(far_off, 3, clip_far, 1.0f, 1, out), 0);
+    CHECK_EQ(clip_polygon(far_off, 3, clip_all, 1.0f, 1, out), 0);
+}
+
 TEST(edge_through_the_camera_plane_is_not_mirrored) {
     // From x = 0.5 at z = −2 (NDC x 0.25) to behind the camera: the naive divide would put
     // the back end at NDC x −0.25 (left half); the cut segment stays right of NDC 0.25.

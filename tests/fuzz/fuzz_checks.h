@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <string_view>
 
@@ -196,6 +197,84 @@ inline std::string check_pnm_file(const std::string &path) {
     const canvas_t &c = **r;
     if (tiny3d::status s = tiny3d::check_canvas_size(c.width, c.height); !s) return "canvas beyond limits returned";
     return check_canvas_values(c);
+}
+
+// The texture path: the file loaded as a texture (load_texture_pgm: the PNM reader, then
+// build_mipmaps), its mipmap chain checked against what raster.h promises, and the texture
+// sampled by every filter and wrap mode. An exact box average of values in [lo, hi] lies in
+// [lo, hi] and keeps the mean, so each level's texels stay in the base level's range and each
+// level's mean (in double) equals the base level's mean, within float rounding per level.
+inline constexpr double TEXTURE_MEAN_TOLERANCE = 1e-4;
+inline constexpr double TEXTURE_RANGE_SLACK = 1e-6;
+
+inline std::string check_texture_file(const std::string &path) {
+    tiny3d::result<tiny3d::texture> r = tiny3d::load_texture_pgm(path);
+    if (!r) return check_error(r.err(), path);
+    const tiny3d::texture &t = *r;
+    if (tiny3d::status s = tiny3d::check_canvas_size(t.width, t.height); !s) return "texture beyond limits returned";
+    if (t.texels.size() != std::size_t(t.width) * std::size_t(t.height)) return "texel count differs from width x height";
+    double lo = 1.0, hi = 0.0, sum = 0.0;
+    for (float v : t.texels) {
+        if (!(v >= 0.0f && v <= 1.0f)) return "texel " + std::to_string(v) + " outside 0..1";
+        lo = std::min(lo, double(v));
+        hi = std::max(hi, double(v));
+        sum += v;
+    }
+    const double mean = sum / double(t.texels.size());
+    int w = t.width, h = t.height;
+    for (std::size_t k = 0; k < t.mipmaps.size(); ++k) {
+        const tiny3d::texture_level &l = t.mipmaps[k];
+        const std::string level = "mipmap level " + std::to_string(k + 1);
+        if (l.width != std::max(1, w / 2) || l.height != std::max(1, h / 2))
+            return level + " is " + std::to_string(l.width) + " x " + std::to_string(l.height) + " below " +
+                   std::to_string(w) + " x " + std::to_string(h);
+        if (l.texels.size() != std::size_t(l.width) * std::size_t(l.height)) return level + ": texel count";
+        double level_sum = 0.0;
+        for (float v : l.texels) {
+            if (!(v >= lo - TEXTURE_RANGE_SLACK && v <= hi + TEXTURE_RANGE_SLACK))
+                return level + " holds " + std::to_string(v) + " outside the base range";
+            level_sum += v;
+        }
+        const double level_mean = level_sum / double(l.texels.size());
+        if (std::fabs(level_mean - mean) > TEXTURE_MEAN_TOLERANCE)
+            return level + " mean " + std::to_string(level_mean) + " differs from the base mean " + std::to_string(mean);
+        w = l.width;
+        h = l.height;
+    }
+    if (w != 1 || h != 1) return "the mipmap chain stops at " + std::to_string(w) + " x " + std::to_string(h);
+    // Lookups: in range wherever they land (far outside, on edges, at NaN / inf: 0).
+    const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+    const float coords[] = {0.0f, 0.5f, 1.0f, -0.25f, 0.999999f, 1.75f, -1e30f, 1e30f, 3e9f};
+    const float lods[] = {-inf, -1.0f, 0.0f, 0.5f, 1.3f, float(t.mipmaps.size()) + 2.0f, inf, nan};
+    const tiny3d::texture_filter filters[] = {tiny3d::texture_filter::nearest, tiny3d::texture_filter::bilinear,
+                                              tiny3d::texture_filter::trilinear};
+    const auto in_range = [&](float v) {
+        return v >= lo - TEXTURE_RANGE_SLACK && v <= hi + TEXTURE_RANGE_SLACK;
+    };
+    for (const tiny3d::texture_wrap wrap : {tiny3d::texture_wrap::repeat, tiny3d::texture_wrap::clamp}) {
+        for (float u : coords)
+            for (float v : coords) {
+                for (const tiny3d::texture_filter f : filters) {
+                    const float s = tiny3d::texture_sample(t, u, v, f, wrap);
+                    if (!in_range(s))
+                        return "texture_sample(" + std::to_string(u) + ", " + std::to_string(v) + ") = " +
+                               std::to_string(s) + " outside the texel range";
+                }
+                for (float lod : lods) {
+                    const float s = tiny3d::texture_sample_trilinear(t, u, v, lod, wrap);
+                    if (!in_range(s))
+                        return "texture_sample_trilinear(" + std::to_string(u) + ", " + std::to_string(v) + ", " +
+                               std::to_string(lod) + ") = " + std::to_string(s) + " outside the texel range";
+                }
+            }
+        for (const tiny3d::texture_filter f : filters)
+            if (tiny3d::texture_sample(t, nan, 0.5f, f, wrap) != 0.0f || tiny3d::texture_sample(t, 0.5f, inf, f, wrap) != 0.0f)
+                return "a lookup at a non-finite coordinate is not 0";
+        if (tiny3d::texture_sample_trilinear(t, nan, 0.5f, 0.0f, wrap) != 0.0f) return "trilinear lookup at NaN is not 0";
+    }
+    const float lod = tiny3d::texture_lod(t, 1.0f / 3.0f, 0.0f, 0.0f, 0.25f);
+    if (!std::isfinite(lod)) return "texture_lod of finite derivatives is not finite";
+    return {};
 }
 
 }  // namespace fuzz_checks
