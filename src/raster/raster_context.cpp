@@ -5,6 +5,7 @@
 // src/parallel/, the vertex kernels in vertex_transform.*, the band sharing in
 // render_bands.h, the per-pixel path in raster_pixel_path.cpp.
 #include <algorithm>
+#include <new>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -412,16 +413,24 @@ void render_context::impl::set_up_and_draw(int thread, const raster_mesh &m, con
     band_affinity &mine = affinity[thread];
     if (!multisampled()) mine.forget(bands.count);  // (a multisampled frame counts every draw's)
     for (int k; (k = counters.take_piece(thread, pool.size())) >= 0;) {
-        set_up_piece(thread, plan.first + k, m, p, job, state, view, plan);
-        piece &done = pieces[static_cast<std::size_t>(plan.first + k)];
-        mine.count(done.bins, bands.count);
-        if (done.near_bands) {
-            // Either list may hold all of a piece's triangles in another frame: both grow
-            // to the largest total, so that a steady scene allocates nothing per frame.
-            const std::size_t total = done.fast.size() + done.far.size();
-            done.fast.reserve(total);
-            done.far.reserve(total);
-            if (!done.far.empty()) detail::stream_fence();  // (streamed triangles before the release)
+        // Memory that runs out while a piece grows its lists drops the whole draw (as a bad
+        // index does) and fails the frame (frame_status); the piece still counts as done, so
+        // no thread waits for it and no exception leaves the worker.
+        try {
+            set_up_piece(thread, plan.first + k, m, p, job, state, view, plan);
+            piece &done = pieces[static_cast<std::size_t>(plan.first + k)];
+            mine.count(done.bins, bands.count);
+            if (done.near_bands) {
+                // Either list may hold all of a piece's triangles in another frame: both grow
+                // to the largest total, so that a steady scene allocates nothing per frame.
+                const std::size_t total = done.fast.size() + done.far.size();
+                done.fast.reserve(total);
+                done.far.reserve(total);
+                if (!done.far.empty()) detail::stream_fence();  // (streamed triangles before the release)
+            }
+        } catch (const std::bad_alloc &) {
+            out_of_memory.store(true, std::memory_order_relaxed);
+            counters.bad_indices.store(true, std::memory_order_relaxed);
         }
         counters.pieces_done.fetch_add(1, std::memory_order_release);
     }
@@ -481,6 +490,23 @@ void render_context::impl::gather_stats(const draw_plan &plan) {
 void render_context::draw(const raster_mesh &mesh, const draw_params &params) {
     impl &s = *impl_;
     if (!s.target || mesh.positions.size() != mesh.normals.size() || mesh.positions.size() != mesh.uvs.size()) return;
+    const int pieces_before = s.multisampled() ? s.piece_count : 0;
+    s.out_of_memory.store(false, std::memory_order_relaxed);
+    try {
+        s.draw(mesh, params);
+    } catch (const std::bad_alloc &) {
+        s.out_of_memory.store(true, std::memory_order_relaxed);
+    }
+    if (!s.out_of_memory.load(std::memory_order_relaxed)) return;
+    s.piece_count = pieces_before;  // nothing of this draw is drawn
+    if (s.failure.ok())
+        s.failure = error{"", 0, -1,
+                          "out of memory drawing a mesh of " + std::to_string(mesh.triangles.size()) + " triangles and " +
+                              std::to_string(mesh.positions.size()) + " vertices"};
+}
+
+void render_context::impl::draw(const raster_mesh &mesh, const draw_params &params) {
+    impl &s = *this;
     s.stats.triangles_in += mesh.triangles.size();
     const mat4_t mvp = mat4_multiply(params.view_projection, params.model);
     if (cull_sphere(frustum_from_matrix(mvp), {mesh.bound_center, mesh.bound_radius}) == cull_result::outside) {
@@ -536,26 +562,37 @@ status render_context::begin_frame(canvas_t &target, float clear_intensity, samp
     const int count = static_cast<int>(samples);
     if (count != 1 && count != 4 && count != 8 && count != 16)
         return error{"", 0, -1, "render_context: " + std::to_string(count) + " samples per pixel (1, 4, 8 or 16)"};
-    const status size_ok = s.depth.resize(target.width, target.height);
-    if (!size_ok) return size_ok;
-    s.pattern = &detail::pattern_of(count);
-    s.piece_count = 0;
-    s.target = &target;
-    s.clear_intensity = detail::clamp01(clear_intensity);
-    s.pending_clear = true;
-    s.phase_seconds = 0.0;
-    s.stats = {};
-    s.states.clear();
-    s.translucent.clear();
-    s.bands.plan(target.height, s.pool.size(), band_rows(count));
-    if (count > 1) {
-        const int tile_rows = (target.height + s.bands.count - 1) / s.bands.count;
-        const bool blocks = detail::sample_store::blocks_for(s.kernel, count);
-        for (int t = 0; t < s.pool.size(); ++t) s.tiles[t].resize(target.width, tile_rows, count, s.clear_intensity, blocks);
+    s.target = nullptr;
+    s.failure = {};
+    try {
+        const status size_ok = s.depth.resize(target.width, target.height);
+        if (!size_ok) return size_ok;
+        s.pattern = &detail::pattern_of(count);
+        s.piece_count = 0;
+        s.clear_intensity = detail::clamp01(clear_intensity);
+        s.pending_clear = true;
+        s.phase_seconds = 0.0;
+        s.stats = {};
+        s.states.clear();
+        s.translucent.clear();
+        s.bands.plan(target.height, s.pool.size(), band_rows(count));
+        if (count > 1) {
+            const int tile_rows = (target.height + s.bands.count - 1) / s.bands.count;
+            const bool blocks = detail::sample_store::blocks_for(s.kernel, count);
+            for (int t = 0; t < s.pool.size(); ++t)
+                s.tiles[t].resize(target.width, tile_rows, count, s.clear_intensity, blocks);
+        }
+    } catch (const std::bad_alloc &) {
+        return error{"", 0, -1,
+                     "render_context: out of memory for the buffers of a " + std::to_string(target.width) + " x " +
+                         std::to_string(target.height) + " frame at " + std::to_string(count) + " samples per pixel"};
     }
+    s.target = &target;
     s.guard = std::clamp(GUARD_SPAN_PIXELS / static_cast<float>(std::max(target.width, target.height)), 1.0f, MAX_GUARD);
     return {};
 }
+
+status render_context::frame_status() const { return impl_->failure; }
 
 void render_context::end_frame() {
     impl &s = *impl_;
