@@ -76,42 +76,45 @@ result<std::string> read_file_bytes(const std::string &path, std::uint64_t max_b
     bool probed = probe == nullptr;
     std::size_t want = 0;
     try {
-    for (;;) {
-        // The probe's bytes first, so a refused file costs no more than them; then the size
-        // the file said it has; past it (a stream, a pseudo-file, a file that grew) one
-        // small read tells whether more comes before anything larger is allocated.
-        want = !probed ? read_file_probe_bytes : have < size ? std::size_t(size) : 0;
-        if (want <= have) {
-            char probe_byte[4096];
-            const long long more = read_up_to(f.fd, probe_byte, sizeof probe_byte);
-            if (more < 0) return fail(std::string("read error: ") + std::strerror(errno));
-            if (more == 0) break;
-            if (have + std::size_t(more) > max_bytes)
+        for (;;) {
+            // The probe's bytes first, so a refused file costs no more than them; then the size
+            // the file said it has; past it (a stream, a pseudo-file, a file that grew) one
+            // small read tells whether more comes before anything larger is allocated.
+            constexpr std::size_t kPeek = 4096;
+            want = !probed      ? std::min<std::size_t>(size > 0 ? std::size_t(size) : kPeek, read_file_probe_bytes)
+                   : have < size ? std::size_t(size)
+                                 : 0;
+            if (want <= have) {
+                char peek[kPeek];
+                const long long more = read_up_to(f.fd, peek, sizeof peek);
+                if (more < 0) return fail(std::string("read error: ") + std::strerror(errno));
+                if (more == 0) break;
+                if (have + std::size_t(more) > max_bytes)
+                    return fail("more than the " + std::to_string(max_bytes) + "-byte limit" +
+                                (stream ? " came through the pipe" : " (the file grew while being read)"));
+                want = have + std::size_t(more) + std::max(kChunk, have / 2);
+                if (bytes.size() < want) bytes.resize(want);
+                std::memcpy(bytes.data() + have, peek, std::size_t(more));
+                have += std::size_t(more);
+            }
+            want = std::size_t(std::min<std::uint64_t>(want, max_bytes + 1));
+            if (bytes.size() < want) bytes.resize(want);
+            const long long got = read_up_to(f.fd, bytes.data() + have, want - have);
+            if (got < 0) return fail(std::string("read error: ") + std::strerror(errno));
+            have += std::size_t(got);
+            if (have > max_bytes)
                 return fail("more than the " + std::to_string(max_bytes) + "-byte limit" +
                             (stream ? " came through the pipe" : " (the file grew while being read)"));
-            want = have + std::size_t(more) + std::max(kChunk, have / 2);
-            if (bytes.size() < want) bytes.resize(want);
-            std::memcpy(bytes.data() + have, probe_byte, std::size_t(more));
-            have += std::size_t(more);
+            const bool ended = have < want;  // (read_up_to returns short only at the end)
+            if (stream && have == 0)
+                return fail("cannot read: a FIFO (named pipe) that gave no bytes (no writer had it open, or it sent "
+                            "nothing)");
+            if (!probed) {  // (this read was the probe's)
+                probed = true;
+                if (status s = probe(std::string_view(bytes.data(), have), path); !s) return s.err();
+            }
+            if (ended) break;
         }
-        want = std::size_t(std::min<std::uint64_t>(want, max_bytes + 1));
-        if (bytes.size() < want) bytes.resize(want);
-        const long long got = read_up_to(f.fd, bytes.data() + have, want - have);
-        if (got < 0) return fail(std::string("read error: ") + std::strerror(errno));
-        have += std::size_t(got);
-        if (have > max_bytes)
-            return fail("more than the " + std::to_string(max_bytes) + "-byte limit" +
-                        (stream ? " came through the pipe" : " (the file grew while being read)"));
-        const bool ended = have < want;
-        if (stream && have == 0)
-            return fail("cannot read: a FIFO (named pipe) that gave no bytes (no writer had it open, or it sent "
-                        "nothing)");
-        if (!probed && (ended || have >= read_file_probe_bytes)) {
-            probed = true;
-            if (status s = probe(std::string_view(bytes.data(), have), path); !s) return s.err();
-        }
-        if (ended) break;
-    }
     } catch (const std::bad_alloc &) {
         return fail("out of memory: cannot hold " + std::to_string(want) + " bytes of it");
     }
