@@ -26,6 +26,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <new>
 #include <span>
 #include <string>
 #include <string_view>
@@ -169,6 +170,20 @@ private:
 
 // Writes `size` bytes to `path` through an atomic_file (above): open, write, commit.
 status write_file_atomic(const std::string &path, const void *data, std::size_t size);
+
+// Saves the bytes encode() makes of `image` (a std::string or byte vector) with
+// write_file_atomic; memory that runs out while encoding is an error naming the path and
+// the image's size. The image writers' common end (PGM, PPM, PNG, …).
+template <class Encode>
+status save_encoded(const std::string &path, const canvas_t &image, Encode &&encode) {
+    try {
+        const auto bytes = encode();
+        return write_file_atomic(path, bytes.data(), bytes.size());
+    } catch (const std::bad_alloc &) {
+        return error{path, 0, -1, "cannot save: out of memory encoding a " + std::to_string(image.width) + " x " +
+                                      std::to_string(image.height) + " image"};
+    }
+}
 
 // The largest file read_file_bytes reads unless told otherwise: 2 GiB.
 inline constexpr std::uint64_t max_read_file_bytes = std::uint64_t(1) << 31;

@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstring>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -105,38 +106,47 @@ std::string folder_of(const std::string &path) {
 }  // namespace
 
 result<atomic_file> atomic_file::open(const std::string &path) {
-    if (path.empty()) return error{"", 0, -1, "cannot save: empty file name"};
-    atomic_file f;
-    f.path_ = path;
-    struct stat st {};
-    const bool exists = ::stat(path.c_str(), &st) == 0;
-    if (exists && S_ISDIR(st.st_mode)) return error{path, 0, -1, "cannot save: the path is a folder"};
-    if (exists && S_ISCHR(st.st_mode)) {
-        // A character device (e.g. /dev/null, /dev/full): written in place, never replaced.
-        // Non-blocking open, then checked again: the name may have changed since the stat.
-        f.fd_ = ::open(path.c_str(), O_WRONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
-        if (f.fd_ < 0) return io_error(path, "cannot open for writing", errno);
-        struct stat opened {};
-        if (::fstat(f.fd_, &opened) != 0 || !S_ISCHR(opened.st_mode))
-            return error{path, 0, -1, "cannot save: the path changed while being opened"};
-        const int flags = ::fcntl(f.fd_, F_GETFL);
-        if (flags >= 0) (void)::fcntl(f.fd_, F_SETFL, flags & ~O_NONBLOCK);
-        return f;
+    // (A lambda: the member's access to the private constructor, and one place to turn
+    // memory that runs out while making names and messages into an error.)
+    auto open_file = [&]() -> result<atomic_file> {
+            if (path.empty()) return error{"", 0, -1, "cannot save: empty file name"};
+            atomic_file f;
+            f.path_ = path;
+            struct stat st {};
+            const bool exists = ::stat(path.c_str(), &st) == 0;
+            if (exists && S_ISDIR(st.st_mode)) return error{path, 0, -1, "cannot save: the path is a folder"};
+            if (exists && S_ISCHR(st.st_mode)) {
+                // A character device (e.g. /dev/null, /dev/full): written in place, never replaced.
+                // Non-blocking open, then checked again: the name may have changed since the stat.
+                f.fd_ = ::open(path.c_str(), O_WRONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
+                if (f.fd_ < 0) return io_error(path, "cannot open for writing", errno);
+                struct stat opened {};
+                if (::fstat(f.fd_, &opened) != 0 || !S_ISCHR(opened.st_mode))
+                    return error{path, 0, -1, "cannot save: the path changed while being opened"};
+                const int flags = ::fcntl(f.fd_, F_GETFL);
+                if (flags >= 0) (void)::fcntl(f.fd_, F_SETFL, flags & ~O_NONBLOCK);
+                return f;
+            }
+            if (exists && !S_ISREG(st.st_mode))  // a FIFO would block the save until someone reads it
+                return error{path, 0, -1, std::string("cannot save: the path is ") + special_kind(st.st_mode) +
+                                              ", not a regular file"};
+            const std::string folder = folder_of(path);
+            struct stat dst {};
+            if (::stat(folder.c_str(), &dst) != 0) return io_error(path, "cannot save: folder '" + folder + "'", errno);
+            if (!S_ISDIR(dst.st_mode)) return error{path, 0, -1, "cannot save: '" + folder + "' is not a folder"};
+            f.fd_ = create_temporary(path, f.temporary_);
+            if (f.fd_ < 0) {
+                const int err = errno;
+                f.temporary_.clear();
+                return io_error(path, "cannot create a temporary file in '" + folder + "'", err);
+            }
+            return f;
+    };
+    try {
+        return open_file();
+    } catch (const std::bad_alloc &) {
+        return error{path, 0, -1, "cannot save: out of memory"};
     }
-    if (exists && !S_ISREG(st.st_mode))  // a FIFO would block the save until someone reads it
-        return error{path, 0, -1, std::string("cannot save: the path is ") + special_kind(st.st_mode) +
-                                      ", not a regular file"};
-    const std::string folder = folder_of(path);
-    struct stat dst {};
-    if (::stat(folder.c_str(), &dst) != 0) return io_error(path, "cannot save: folder '" + folder + "'", errno);
-    if (!S_ISDIR(dst.st_mode)) return error{path, 0, -1, "cannot save: '" + folder + "' is not a folder"};
-    f.fd_ = create_temporary(path, f.temporary_);
-    if (f.fd_ < 0) {
-        const int err = errno;
-        f.temporary_.clear();
-        return io_error(path, "cannot create a temporary file in '" + folder + "'", err);
-    }
-    return f;
 }
 
 atomic_file::atomic_file(atomic_file &&other) noexcept
@@ -198,10 +208,14 @@ void atomic_file::abandon() {
 }
 
 status write_file_atomic(const std::string &path, const void *data, std::size_t size) {
-    result<atomic_file> f = atomic_file::open(path);
-    if (!f) return f.err();
-    if (status s = f->write(data, size); !s) return s;
-    return f->commit();
+    try {
+        result<atomic_file> f = atomic_file::open(path);
+        if (!f) return f.err();
+        if (status s = f->write(data, size); !s) return s;
+        return f->commit();
+    } catch (const std::bad_alloc &) {  // (names and messages: nothing is created before them)
+        return error{path, 0, -1, "cannot save: out of memory"};
+    }
 }
 
 namespace {
@@ -245,15 +259,13 @@ std::string encode_pnm(const canvas_t &c, const char *magic, int channels, bool 
 status save_pgm(const canvas_t &c, const std::string &path, pgm_encoding encoding) {
     if (!c.data || c.width <= 0 || c.height <= 0) return error{path, 0, -1, "cannot save: invalid canvas"};
     const bool binary = encoding == pgm_encoding::binary_p5;
-    const std::string out = encode_pnm(c, binary ? "P5" : "P2", 1, binary);
-    return write_file_atomic(path, out.data(), out.size());
+    return save_encoded(path, c, [&] { return encode_pnm(c, binary ? "P5" : "P2", 1, binary); });
 }
 
 status save_ppm(const canvas_t &c, const std::string &path, ppm_encoding encoding) {
     if (!c.data || c.width <= 0 || c.height <= 0) return error{path, 0, -1, "cannot save: invalid canvas"};
     const bool binary = encoding == ppm_encoding::binary_p6;
-    const std::string out = encode_pnm(c, binary ? "P6" : "P3", 3, binary);
-    return write_file_atomic(path, out.data(), out.size());
+    return save_encoded(path, c, [&] { return encode_pnm(c, binary ? "P6" : "P3", 3, binary); });
 }
 
 }  // namespace tiny3d
