@@ -1,7 +1,7 @@
 // alloc_failure_test.cpp — memory that runs out at every possible moment of a load, a
-// render and a save. This program replaces the global operator new (every form) with one
-// that counts allocations and, when armed with N, fails the N-th (std::bad_alloc, or null
-// for the nothrow forms). A reference run counts the allocations a small job makes; then
+// render and a save. This program replaces the global operator new (every form,
+// tests/alloc_tracker.h) with one that counts allocations and, when armed with N, fails
+// the N-th (std::bad_alloc, or null for the nothrow forms). A reference run counts the allocations a small job makes; then
 // the job runs again once for every N from 1 to that count. Each run must end in an error
 // saying what ran out, or (where the library could do without the memory) in exactly the
 // reference image; never an exception out of the library, never an abort, and no leak
@@ -20,62 +20,18 @@
 #include <new>
 #include <string>
 
+#include "alloc_tracker.h"
 #include "harness.h"
 #include "program_runner.h"
 #include "tiny3d.h"
 
 namespace failing_alloc {
 
-std::atomic<long> count{0};     // allocations since reset
-std::atomic<long> fail_at{-1};  // the allocation (1-based) that fails; −1: none
-
-void arm(long n) {
-    count.store(0);
-    fail_at.store(n);
-}
-void disarm() { fail_at.store(-1); }
-
-void *allocate(std::size_t bytes, std::size_t align) {
-    if (count.fetch_add(1) + 1 == fail_at.load()) return nullptr;
-    if (bytes == 0) bytes = 1;
-    if (align <= alignof(std::max_align_t)) return std::malloc(bytes);
-    return std::aligned_alloc(align, (bytes + align - 1) / align * align);
-}
-
-[[gnu::noinline]] void release(void *p) noexcept { std::free(p); }
+void arm(long n) { alloc_tracker::fail_allocation(n < 0 ? 0 : std::size_t(n)); }
+void disarm() { alloc_tracker::failing_allocation().store(0); }
+long count() { return long(alloc_tracker::allocations()); }
 
 }  // namespace failing_alloc
-
-void *operator new(std::size_t n) {
-    if (void *p = failing_alloc::allocate(n, 0)) return p;
-    throw std::bad_alloc();
-}
-void *operator new[](std::size_t n) { return operator new(n); }
-void *operator new(std::size_t n, const std::nothrow_t &) noexcept { return failing_alloc::allocate(n, 0); }
-void *operator new[](std::size_t n, const std::nothrow_t &) noexcept { return failing_alloc::allocate(n, 0); }
-void *operator new(std::size_t n, std::align_val_t a) {
-    if (void *p = failing_alloc::allocate(n, std::size_t(a))) return p;
-    throw std::bad_alloc();
-}
-void *operator new[](std::size_t n, std::align_val_t a) { return operator new(n, a); }
-void *operator new(std::size_t n, std::align_val_t a, const std::nothrow_t &) noexcept {
-    return failing_alloc::allocate(n, std::size_t(a));
-}
-void *operator new[](std::size_t n, std::align_val_t a, const std::nothrow_t &) noexcept {
-    return failing_alloc::allocate(n, std::size_t(a));
-}
-void operator delete(void *p) noexcept { failing_alloc::release(p); }
-void operator delete[](void *p) noexcept { failing_alloc::release(p); }
-void operator delete(void *p, std::size_t) noexcept { failing_alloc::release(p); }
-void operator delete[](void *p, std::size_t) noexcept { failing_alloc::release(p); }
-void operator delete(void *p, const std::nothrow_t &) noexcept { failing_alloc::release(p); }
-void operator delete[](void *p, const std::nothrow_t &) noexcept { failing_alloc::release(p); }
-void operator delete(void *p, std::align_val_t) noexcept { failing_alloc::release(p); }
-void operator delete[](void *p, std::align_val_t) noexcept { failing_alloc::release(p); }
-void operator delete(void *p, std::size_t, std::align_val_t) noexcept { failing_alloc::release(p); }
-void operator delete[](void *p, std::size_t, std::align_val_t) noexcept { failing_alloc::release(p); }
-void operator delete(void *p, std::align_val_t, const std::nothrow_t &) noexcept { failing_alloc::release(p); }
-void operator delete[](void *p, std::align_val_t, const std::nothrow_t &) noexcept { failing_alloc::release(p); }
 
 namespace {
 
@@ -131,7 +87,7 @@ void fail_each_allocation(tiny3d::sample_count samples) {
     auto reference_ctx = std::make_unique<tiny3d::render_context>(2);
     failing_alloc::arm(-1);
     const outcome reference = job(*reference_ctx, samples, mesh_path, frame);
-    const long total = failing_alloc::count.load();
+    const long total = failing_alloc::count();
     failing_alloc::disarm();
     CHECK_MSG(reference.ok, reference.message);
     const std::string expected = program_runner::file_bytes(frame);

@@ -331,17 +331,6 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
 
 // ---- the steps of a draw -------------------------------------------------------------------
 
-// Every thread's buffers can hold a transformed copy of every vertex (and the per-pixel
-// path's attributes when wanted).
-void render_context::impl::grow_segments(std::size_t vertex_count, bool generic) {
-    for (int t = 0; t < pool.size(); ++t) {
-        segment &seg = segments[t];
-        if (seg.vertices.size() < vertex_count)
-            seg.vertices.resize(vertex_count), seg.clip.resize(vertex_count), seg.stamp.resize(vertex_count, 0u);
-        if (generic && seg.vertex_attr.size() < vertex_count * ATTR_COUNT) seg.vertex_attr.resize(vertex_count * ATTR_COUNT);
-    }
-}
-
 // The draw's pieces over `units` cluster chunks (clustered) or triangles: one on one thread;
 // on n threads PIECES_PER_THREAD · n (fewer for a small mesh), after the frame's earlier
 // draws' (multisampled frames keep them until end_frame).
@@ -413,9 +402,8 @@ void render_context::impl::set_up_and_draw(int thread, const raster_mesh &m, con
     band_affinity &mine = affinity[thread];
     if (!multisampled()) mine.forget(bands.count);  // (a multisampled frame counts every draw's)
     for (int k; (k = counters.take_piece(thread, pool.size())) >= 0;) {
-        // Memory that runs out while a piece grows its lists drops the whole draw (as a bad
-        // index does) and fails the frame (frame_status); the piece still counts as done, so
-        // no thread waits for it and no exception leaves the worker.
+        // Memory running out drops the draw (as a bad index does) and fails the frame; the
+        // piece still counts as done (no thread waits for it, no exception leaves the worker).
         try {
             set_up_piece(thread, plan.first + k, m, p, job, state, view, plan);
             piece &done = pieces[static_cast<std::size_t>(plan.first + k)];
@@ -487,24 +475,6 @@ void render_context::impl::gather_stats(const draw_plan &plan) {
     }
 }
 
-void render_context::draw(const raster_mesh &mesh, const draw_params &params) {
-    impl &s = *impl_;
-    if (!s.target || mesh.positions.size() != mesh.normals.size() || mesh.positions.size() != mesh.uvs.size()) return;
-    const int pieces_before = s.multisampled() ? s.piece_count : 0;
-    s.out_of_memory.store(false, std::memory_order_relaxed);
-    try {
-        s.draw(mesh, params);
-    } catch (const std::bad_alloc &) {
-        s.out_of_memory.store(true, std::memory_order_relaxed);
-    }
-    if (!s.out_of_memory.load(std::memory_order_relaxed)) return;
-    s.piece_count = pieces_before;  // nothing of this draw is drawn
-    if (s.failure.ok())
-        s.failure = error{"", 0, -1,
-                          "out of memory drawing a mesh of " + std::to_string(mesh.triangles.size()) + " triangles and " +
-                              std::to_string(mesh.positions.size()) + " vertices"};
-}
-
 void render_context::impl::draw(const raster_mesh &mesh, const draw_params &params) {
     impl &s = *this;
     s.stats.triangles_in += mesh.triangles.size();
@@ -523,9 +493,9 @@ void render_context::impl::draw(const raster_mesh &mesh, const draw_params &para
     cluster_view view{};
     if (use_clusters) view = make_cluster_view(mvp, s.target->width, s.target->height, s.guard, params.cull);
     const vertex_job job = make_vertex_job(params, mvp, generic, s.target->width, s.target->height, s.pattern->bits);
-    s.grow_segments(mesh.positions.size(), generic);
     if (!s.multisampled()) s.piece_count = 0;  // (a multisampled frame keeps every draw's pieces)
     const draw_plan plan = s.plan_draw(use_clusters ? clusters->clusters().size() : mesh.triangles.size(), use_clusters);
+    s.grow_segments(mesh.positions.size(), generic, plan.shared_vertices ? 1 : s.pool.size());
     s.counters.reset(plan.count, s.pool.size(), s.bands.count);
     auto phase = [&](int t) { s.set_up_and_draw(t, mesh, params, job, state, use_clusters ? &view : nullptr, plan); };
     const bool measured = s.pool.size() > 1 && !s.multisampled();  // (stream_choice)
@@ -583,16 +553,13 @@ status render_context::begin_frame(canvas_t &target, float clear_intensity, samp
                 s.tiles[t].resize(target.width, tile_rows, count, s.clear_intensity, blocks);
         }
     } catch (const std::bad_alloc &) {
-        return error{"", 0, -1,
-                     "render_context: out of memory for the buffers of a " + std::to_string(target.width) + " x " +
-                         std::to_string(target.height) + " frame at " + std::to_string(count) + " samples per pixel"};
+        return error{"", 0, -1, "render_context: out of memory for a " + std::to_string(target.width) + " x " +
+                                    std::to_string(target.height) + " frame at " + std::to_string(count) + "x"};
     }
     s.target = &target;
     s.guard = std::clamp(GUARD_SPAN_PIXELS / static_cast<float>(std::max(target.width, target.height)), 1.0f, MAX_GUARD);
     return {};
 }
-
-status render_context::frame_status() const { return impl_->failure; }
 
 void render_context::end_frame() {
     impl &s = *impl_;

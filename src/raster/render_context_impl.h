@@ -158,7 +158,7 @@ struct render_context::impl {
     }
 
     // The steps of draw (raster_context.cpp).
-    void grow_segments(std::size_t vertex_count, bool generic);
+    void grow_segments(std::size_t vertex_count, bool generic, int threads);
     detail::draw_plan plan_draw(std::size_t units, bool clustered);
     void set_up_and_draw(int thread, const raster_mesh &m, const draw_params &p, const detail::vertex_job &job,
                          std::uint32_t state, const detail::cluster_view *view, const detail::draw_plan &plan);
