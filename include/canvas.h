@@ -29,6 +29,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <new>
 #include <span>
 #include <string>
 #include <string_view>
@@ -107,9 +108,9 @@ result<canvas_ptr> make_canvas(int width, int height);
 
 enum class pgm_encoding { binary_p5, ascii_p2 };
 
-// Atomic PGM save (see top of file). Errors name the path and the reason (missing
-// folder, permission, disk full, path is a folder, …). Existing non-regular files
-// (e.g. /dev/full, a FIFO) are written in place, not replaced.
+// Atomic PGM save (see top of file and atomic_file below). Errors name the path and the
+// reason (missing folder, permission, disk full, path is a folder or a FIFO, …). An
+// existing character device (e.g. /dev/full) is written in place, not replaced.
 status save_pgm(const canvas_t &canvas, const std::string &path,
                 pgm_encoding encoding = pgm_encoding::binary_p5);
 
@@ -149,16 +150,57 @@ status save_png(const canvas_t &canvas, const std::string &path);
 
 namespace tiny3d {
 
-// Writes `size` bytes to `path` atomically (temporary file in the same folder, fsync,
-// rename). On failure nothing is left behind and an existing file is untouched; the
-// error names the path and the reason. Existing non-regular files (devices, FIFOs) are
-// written in place. Used by every image writer in the library; atomic_file (below) is the
-// same save written piece by piece, and write_file_atomic is one write through it.
-// The temporary file is "<path>.tmp", claimed with an exclusive flock (released by the
-// kernel when its process dies), so the file a killed save left behind is reused and
-// renamed away by the next save of the same path; while another live save holds it, a
-// unique "<path>.tmp-XXXXXX" is used instead.
+// A file written atomically: open() creates a temporary file in the target's folder,
+// write() appends to it, commit() makes it the target (fchmod 0644, fsync, rename) and
+// abandon() (or the destructor, or any failed step) removes it, so the target is either
+// the old file untouched or the complete new one, and no temporary stays.
+//  * The temporary is created fresh, exclusively (O_CREAT | O_EXCL) under a name no entry
+//    has: "<path>.tmp", "<path>.tmp-1" … "<path>.tmp-7", then "<path>.tmp-XXXXXX" (random).
+//    Nothing found at those names is opened or written: a hard link or symlink to a file
+//    elsewhere, a folder or a FIFO there stays as it was. The one exception is what a
+//    killed save left: a plain file with a single link, owned by this user and not locked
+//    by a live save (a save holds an flock on its temporary, which the kernel drops when
+//    the process dies) is removed, so killed runs leave no growing heap of temporaries.
+//  * The rename is the only step that touches the destination.
+//  * An existing character device at `path` (/dev/null, /dev/full) is written in place,
+//    never replaced; a FIFO, socket or block device there is refused at open() ("the path
+//    is a FIFO (named pipe), not a regular file"): nothing ever blocks on it.
+// Errors name the path and the reason (missing folder, permission, disk full, …). Used by
+// every image writer in the library; one writer at a time per object (move-only).
+class atomic_file {
+public:
+    static result<atomic_file> open(const std::string &path);
+    atomic_file(atomic_file &&other) noexcept;
+    atomic_file &operator=(atomic_file &&other) noexcept;
+    ~atomic_file();  // abandon()s an uncommitted file
+    // Appends bytes; on failure the file is abandoned (later calls fail).
+    status write(const void *data, std::size_t size);
+    status commit();   // once, after the last write; the object is closed after it either way
+    void abandon();    // removes the temporary (nothing happens to the target); idempotent
+    const std::string &path() const { return path_; }
+
+private:
+    atomic_file() = default;
+    std::string path_, temporary_;  // temporary_ empty: writing in place (a device) or closed
+    int fd_ = -1;
+};
+
+// Writes `size` bytes to `path` through an atomic_file (above): open, write, commit.
 status write_file_atomic(const std::string &path, const void *data, std::size_t size);
+
+// Saves the bytes encode() makes of `image` (a std::string or byte vector) with
+// write_file_atomic; memory that runs out while encoding is an error naming the path and
+// the image's size. The image writers' common end (PGM, PPM, PNG, …).
+template <class Encode>
+status save_encoded(const std::string &path, const canvas_t &image, Encode &&encode) {
+    try {
+        const auto bytes = encode();
+        return write_file_atomic(path, bytes.data(), bytes.size());
+    } catch (const std::bad_alloc &) {
+        return error{path, 0, -1, "cannot save: out of memory encoding a " + std::to_string(image.width) + " x " +
+                                      std::to_string(image.height) + " image"};
+    }
+}
 
 // The largest file read_file_bytes reads unless told otherwise: 2 GiB.
 inline constexpr std::uint64_t max_read_file_bytes = std::uint64_t(1) << 31;
@@ -169,50 +211,24 @@ inline constexpr std::uint64_t max_read_file_bytes = std::uint64_t(1) << 31;
 using file_probe = status (*)(std::string_view first_bytes, const std::string &path);
 inline constexpr std::size_t read_file_probe_bytes = std::size_t(1) << 16;
 
-// Reads a whole regular file into memory, the one file reader of the library (meshes,
-// PNM images, textures). The file is opened non-blocking and its type and size checked
-// with fstat BEFORE anything is read or allocated: a FIFO, a device (e.g. /dev/zero or a
-// symlink to it), a socket or a directory is refused ("… is a FIFO: expected a regular
-// file"), and a file above `max_bytes` fails at once with its size in the message (a 3 GB
-// sparse file costs no memory). `probe`, if given, judges the first bytes first. Errors
-// name the path and the reason; reading retries interrupted calls; a file that shrinks
-// while being read gives what was there.
+// Reads a whole file into memory, the one file reader of the library (meshes, PNM images,
+// textures). The file is opened non-blocking and its type checked with fstat BEFORE
+// anything is read or allocated: a device (e.g. /dev/zero or a symlink to it), a socket or
+// a directory is refused ("… is a character device: expected a regular file or a pipe").
+// A regular file above `max_bytes` fails at once with its size in the message (a 3 GB
+// sparse file costs no memory). Every file is read to the end of its stream, whatever size
+// it announced: a pipe or FIFO (e.g. /dev/stdin fed by `cat mesh.obj |`, read blocking once
+// opened), a /proc pseudo-file (size 0), a file that grows while read; past `max_bytes`
+// it fails ("more than the N-byte limit came through the pipe"). A FIFO that no writer has
+// open gives no bytes and fails at once instead of waiting. `probe`, if given, judges the
+// first bytes first. Errors name the path and the reason (memory that runs out included);
+// reading retries interrupted calls; a file that shrinks while being read gives what was there.
 result<std::string> read_file_bytes(const std::string &path, std::uint64_t max_bytes = max_read_file_bytes,
                                     file_probe probe = nullptr);
 
 }  // namespace tiny3d
 
 namespace tiny3d {
-
-// A file written piece by piece with write_file_atomic's guarantees: open() creates the
-// same temporary ("<path>.tmp", or "<path>.tmp-XXXXXX" while another live save holds that)
-// in the target's folder; write() appends; commit() fsyncs it and renames it over `path`.
-// A failed write removes the temporary at once (the error names the path and the reason:
-// disk full, file too large, …), and so do discard() and the destructor of a file never
-// committed: nothing is left behind and an existing file at `path` stays as it was. An
-// existing device or FIFO at `path` is written in place (commit() only closes it). Move-only.
-class atomic_file {
-public:
-    // Errors: empty name, the path is a folder, its folder missing or not a folder, no
-    // temporary can be created there (permission, …); each names the path and the reason.
-    static result<atomic_file> open(const std::string &path);
-    atomic_file(atomic_file &&other) noexcept;
-    atomic_file &operator=(atomic_file &&other) noexcept;
-    atomic_file(const atomic_file &) = delete;
-    atomic_file &operator=(const atomic_file &) = delete;
-    ~atomic_file();  // discard()
-
-    status write(const void *data, std::size_t size);  // after a failure the file is discarded
-    status commit();   // the file is closed afterwards, whatever the outcome
-    void discard();    // removes the temporary and closes; nothing happens when already closed
-    bool is_open() const { return fd_ >= 0; }
-    const std::string &path() const { return path_; }
-
-private:
-    atomic_file(std::string path, std::string temporary, int fd);
-    std::string path_, temporary_;  // temporary_ empty: written in place (a device or FIFO)
-    int fd_ = -1;
-};
 
 // ---- animated GIF (src/canvas/gif.cpp) ------------------------------------------------
 //

@@ -240,8 +240,10 @@ mesh make_soccer_ball(float radius = 1.0f);
 // returning result<mesh> drop the warnings; the forms taking load_options return them in
 // loaded_mesh. load_options::strict turns the first warning into the error.
 //
-// Limits: files up to 2 GiB (regular files only: FIFOs, devices and directories are
-// refused before anything is read, see read_file_bytes); at most 2^32 − 2 positions and
+// Limits: files and streams up to 2 GiB (regular files, pseudo-files and pipes, read to
+// the end of the stream; devices and directories are refused before anything is read, see
+// read_file_bytes); memory that runs out while the mesh is built is an error naming the
+// input and its size ("out of memory holding the mesh of these N bytes"); at most 2^32 − 2 positions and
 // corners (indices are 32-bit); counts announced in a PLY header are checked against the
 // bytes left in the file BEFORE anything is allocated (a header announcing 2^40 vertices in
 // a 100-byte file fails at once), and every size computation is overflow-checked.
@@ -281,9 +283,15 @@ mesh make_soccer_ball(float radius = 1.0f);
 // whose reason ends "(N more like it)", placed at the first occurrence.
 using load_warning = error;
 
+// Which parser load_mesh and parse_mesh use: by the name (.obj / .ply, otherwise by the
+// content: a first line "ply" is PLY, a first statement of OBJ's — v, f, o, g, … — is OBJ),
+// or the one given (a pipe or standard input has no telling name).
+enum class mesh_format { by_name, obj, ply };
+
 struct load_options {
     bool strict = false;             // the first warning is returned as the error instead
     std::size_t max_warnings = 100;  // warnings listed; any beyond are only counted
+    mesh_format format = mesh_format::by_name;
 };
 
 struct loaded_mesh {
@@ -306,10 +314,14 @@ result<mesh> parse_ply(std::string_view bytes, const std::string &name = "<ply>"
 result<loaded_mesh> load_ply(const std::string &path, const load_options &options);
 result<mesh> load_ply(const std::string &path);
 
-// load_obj or load_ply by the file's extension (case-insensitive .obj / .ply); anything
-// else is an error naming the path.
+// load_obj or load_ply by options.format, else by the file's extension (case-insensitive
+// .obj / .ply), else by the content (mesh_format above): a pipe, /dev/stdin or a /proc file
+// is read to the end of its stream (read_file_bytes), within the same size limit. A file
+// whose content is neither is an error naming the path.
 result<loaded_mesh> load_mesh(const std::string &path, const load_options &options);
 result<mesh> load_mesh(const std::string &path);
+// The same on bytes already read (e.g. standard input); `name` names them in messages.
+result<loaded_mesh> parse_mesh(std::string_view bytes, const std::string &name, const load_options &options);
 
 // The soccer ball of generate_soccer_ball (below) as plain arrays: returns true on success,
 // false (outputs NULL / 0 where given) when a pointer is NULL or memory runs out.

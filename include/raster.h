@@ -412,6 +412,10 @@ public:
     render_context(const render_context &) = delete;
     render_context &operator=(const render_context &) = delete;
 
+    // The threads frames run on: the number asked for (clamped), or fewer (at least the
+    // caller's own) when the system refused to create threads (a process limit such as
+    // RLIMIT_NPROC): never an exception. A program compares it with what it asked for to
+    // say so. The image does not depend on it.
     int threads() const;
     // Clears colour to clear_intensity and depth to 1 and sets the frame's samples per pixel
     // (sample_count above). Error if the canvas is invalid. With x4/x8/x16, every draw of the
@@ -429,6 +433,11 @@ public:
     // Draws the queued translucent triangles back to front (blended per sample when
     // multisampling) and resolves a multisampled frame.
     void end_frame();
+    // The first failure of the frame since begin_frame: memory that ran out in a draw
+    // ("out of memory drawing a mesh of N triangles and M vertices"; that draw is left out,
+    // the context stays usable), otherwise ok. begin_frame returns its own errors
+    // (including memory for the frame's buffers). A program checks it after end_frame.
+    status frame_status() const;
     const zbuffer &depth() const;
     const frame_stats &stats() const;
     // The instruction set of the fills, in every frame (raster_simd above; best_raster_simd()

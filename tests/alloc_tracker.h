@@ -1,5 +1,6 @@
 // tests/alloc_tracker.h — replaces the global operator new / delete (all forms, aligned
-// included) to count allocations and remember the largest single request. Include it in
+// included) to count allocations and remember the largest single request, and can fail
+// the N-th allocation on purpose. Include it in
 // exactly ONE translation unit of a test program (each tests/*_test.cpp is one program).
 // Single-threaded use: counters are plain atomics read between calls, never reset by
 // another thread. Memory comes from malloc / aligned_alloc, so ASan still sees every block
@@ -24,12 +25,25 @@ inline counters &stats() {
     return c;
 }
 
-inline void note(std::size_t bytes) {
+// Failing on purpose (tests/alloc_failure_test.cpp): the allocation, counted from 1 since
+// fail_allocation(n), that returns null (operator new then throws std::bad_alloc); 0: none.
+inline std::atomic<std::size_t> &failing_allocation() {
+    static std::atomic<std::size_t> n{0};
+    return n;
+}
+inline void fail_allocation(std::size_t n) {
+    stats().allocations.store(0);
+    failing_allocation().store(n);
+}
+
+// Counts an allocation; returns its number.
+inline std::size_t note(std::size_t bytes) {
     counters &c = stats();
-    c.allocations.fetch_add(1, std::memory_order_relaxed);
+    const std::size_t number = c.allocations.fetch_add(1, std::memory_order_relaxed) + 1;
     std::size_t prev = c.largest.load(std::memory_order_relaxed);
     while (bytes > prev && !c.largest.compare_exchange_weak(prev, bytes, std::memory_order_relaxed)) {
     }
+    return number;
 }
 
 inline std::size_t allocations() { return stats().allocations.load(); }
@@ -45,7 +59,7 @@ std::size_t largest_allocation_during(Fn &&fn) {
 }
 
 inline void *allocate(std::size_t bytes, std::size_t align) {
-    note(bytes);
+    if (note(bytes) == failing_allocation().load(std::memory_order_relaxed)) return nullptr;
     if (bytes == 0) bytes = 1;
     if (align <= alignof(std::max_align_t)) return std::malloc(bytes);
     const std::size_t rounded = (bytes + align - 1) / align * align;  // aligned_alloc needs a multiple

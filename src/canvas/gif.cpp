@@ -221,7 +221,7 @@ struct gif_writer::state {
         lzw.reserve(previous.size());
     }
     status fail(error e) {
-        file.discard();
+        file.abandon();
         failure = e;
         return e;
     }
@@ -234,7 +234,7 @@ struct gif_writer::state {
 gif_writer::gif_writer(std::unique_ptr<state> s) : s_(std::move(s)) {}
 gif_writer::gif_writer(gif_writer &&) noexcept = default;
 gif_writer &gif_writer::operator=(gif_writer &&) noexcept = default;
-gif_writer::~gif_writer() = default;  // the atomic_file discards an unfinished file
+gif_writer::~gif_writer() = default;  // the atomic_file abandons an unfinished file
 
 result<gif_writer> gif_writer::create(const std::string &path, int width, int height, const gif_options &options) {
     const auto refuse = [&path](const std::string &why) { return error{path, 0, -1, "cannot write GIF: " + why}; };

@@ -119,8 +119,7 @@ std::vector<std::uint8_t> encode_png(const canvas_t &canvas) {
 status save_png(const canvas_t &canvas, const std::string &path) {
     if (!canvas.data || canvas.width <= 0 || canvas.height <= 0)
         return error{path, 0, -1, "cannot save PNG: empty canvas"};
-    const std::vector<std::uint8_t> bytes = encode_png(canvas);
-    return write_file_atomic(path, bytes.data(), bytes.size());
+    return save_encoded(path, canvas, [&] { return encode_png(canvas); });
 }
 
 }  // namespace tiny3d

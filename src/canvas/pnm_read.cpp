@@ -72,8 +72,12 @@ public:
     }
 
 private:
+    // The byte itself if printable ASCII, otherwise as C writes it (ESC as \x1b, 0x86 as \x86).
     static std::string printable(char c) {
-        return (c >= 32 && c < 127) ? std::string(1, c) : "\\x" + std::to_string(unsigned(static_cast<unsigned char>(c)));
+        if (c >= 32 && c < 127) return std::string(1, c);
+        static constexpr char digits[] = "0123456789abcdef";
+        const unsigned byte = static_cast<unsigned char>(c);
+        return std::string("\\x") + digits[byte >> 4] + digits[byte & 15];
     }
     const std::string &path_;
     const std::string &b_;

@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <new>
 
 #include "canvas.h"  // read_file_bytes: the library's one file reader
 #include "loader_util.h"
@@ -126,10 +127,54 @@ status probe_ply(std::string_view first_bytes, const std::string &path) {
     return loader::at_line(path, 1, "not a PLY file (its first line must be 'ply')");
 }
 
+
+// The mesh of `bytes` parsed by `parse`; memory that runs out (std::bad_alloc: the
+// vertices, corners and faces the input asks for) is an error naming the input and its size.
+template <class Parse>
+result<loaded_mesh> parse_guarded(Parse parse, std::string_view bytes, const std::string &name,
+                                  const load_options &options) {
+    try {
+        return parse(bytes, name, options);
+    } catch (const std::bad_alloc &) {
+        return error{name, 0, -1,
+                     "out of memory holding the mesh of these " + std::to_string(bytes.size()) + " bytes"};
+    }
+}
+
+// What a file of unknown name holds: PLY if its first line is "ply", OBJ if its first
+// statement (after comments and blank lines) is one of OBJ's.
+mesh_format detect_format(std::string_view bytes) {
+    if (probe_ply(bytes.substr(0, 4), "").ok()) return mesh_format::ply;
+    loader::line_splitter lines(loader::skip_utf8_bom(bytes.substr(0, read_file_probe_bytes)));
+    for (std::string_view raw; lines.next(raw);) {
+        raw = raw.substr(0, raw.find('#'));
+        const std::size_t start = raw.find_first_not_of(" \t\r");
+        if (start == std::string_view::npos) continue;
+        const std::string_view word = raw.substr(start, raw.find_first_of(" \t\r", start) - start);
+        for (const char *keyword : {"v", "vt", "vn", "vp", "f", "l", "p", "o", "g", "s", "mtllib", "usemtl"})
+            if (word == keyword) return mesh_format::obj;
+        break;
+    }
+    return mesh_format::by_name;  // (unknown)
+}
+
 }  // namespace
 
+result<loaded_mesh> parse_obj(std::string_view text, const std::string &name, const load_options &options) {
+    return parse_guarded(loader::parse_obj_text, text, name, options);
+}
+result<loaded_mesh> parse_ply(std::string_view bytes, const std::string &name, const load_options &options) {
+    return parse_guarded(loader::parse_ply_bytes, bytes, name, options);
+}
 result<mesh> parse_obj(std::string_view text, const std::string &name) { return geometry_of(parse_obj(text, name, {})); }
 result<mesh> parse_ply(std::string_view bytes, const std::string &name) { return geometry_of(parse_ply(bytes, name, {})); }
+
+result<loaded_mesh> parse_mesh(std::string_view bytes, const std::string &name, const load_options &options) {
+    const mesh_format format = options.format == mesh_format::by_name ? detect_format(bytes) : options.format;
+    if (format == mesh_format::obj) return parse_obj(bytes, name, options);
+    if (format == mesh_format::ply) return parse_ply(bytes, name, options);
+    return error{name, 1, -1, "unknown mesh format: neither a PLY header nor an OBJ statement at the start"};
+}
 
 result<loaded_mesh> load_obj(const std::string &path, const load_options &options) {
     result<std::string> bytes = read_file_bytes(path, max_read_file_bytes, probe_obj);
@@ -148,9 +193,18 @@ result<mesh> load_ply(const std::string &path) { return geometry_of(load_ply(pat
 result<loaded_mesh> load_mesh(const std::string &path, const load_options &options) {
     std::string ext = path.size() >= 4 ? path.substr(path.size() - 4) : std::string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    if (ext == ".obj") return load_obj(path, options);
-    if (ext == ".ply") return load_ply(path, options);
-    return error{path, 0, -1, "unknown mesh format: expected a file ending in .obj or .ply"};
+    if (options.format == mesh_format::obj || (options.format == mesh_format::by_name && ext == ".obj"))
+        return load_obj(path, options);
+    if (options.format == mesh_format::ply || (options.format == mesh_format::by_name && ext == ".ply"))
+        return load_ply(path, options);
+    // Any other name (a pipe, /dev/stdin, /proc/...): the content says which.
+    result<std::string> bytes = read_file_bytes(path, max_read_file_bytes);
+    if (!bytes) return bytes.err();
+    if (detect_format(*bytes) == mesh_format::by_name)
+        return error{path, 0, -1,
+                     "unknown mesh format: expected a file ending in .obj or .ply, or one starting with a PLY "
+                     "header or an OBJ statement"};
+    return parse_mesh(*bytes, path, options);
 }
 result<mesh> load_mesh(const std::string &path) { return geometry_of(load_mesh(path, {})); }
 

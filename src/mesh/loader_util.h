@@ -54,6 +54,10 @@ std::string quote(std::string_view token);
 // Text checks before parsing: a UTF-16 byte-order mark or NUL bytes are errors naming
 // the line ("UTF-16 text: save the file as UTF-8"). `what` names the format ("an OBJ file").
 status check_text(std::string_view text, const std::string &name, const char *what);
+
+// The parsers behind parse_obj and parse_ply (which turn memory running out into an error).
+result<loaded_mesh> parse_obj_text(std::string_view text, const std::string &name, const load_options &options);
+result<loaded_mesh> parse_ply_bytes(std::string_view bytes, const std::string &name, const load_options &options);
 // The text without a leading UTF-8 byte-order mark.
 std::string_view skip_utf8_bom(std::string_view text);
 

@@ -237,7 +237,7 @@ private:
 
 }  // namespace
 
-result<loaded_mesh> parse_obj(std::string_view text, const std::string &name, const load_options &options) {
+result<loaded_mesh> loader::parse_obj_text(std::string_view text, const std::string &name, const load_options &options) {
     if (status s = loader::check_text(text, name, "an OBJ file"); !s) return s.err();
     obj_parser parser(name, options);
     std::string logical;  // a statement continued over lines with a trailing backslash

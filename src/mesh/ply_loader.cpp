@@ -441,7 +441,7 @@ status read_list(reader &in, const property &p, role r, std::uint64_t n, std::st
 
 }  // namespace
 
-result<loaded_mesh> parse_ply(std::string_view bytes, const std::string &name, const load_options &options) {
+result<loaded_mesh> loader::parse_ply_bytes(std::string_view bytes, const std::string &name, const load_options &options) {
     loader::diagnostics diag(name, options);
     header h;
     if (status st = parse_header(bytes, name, h, diag); !st) return st.err();

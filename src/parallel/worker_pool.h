@@ -57,7 +57,8 @@ void spin_until_yielding(Done &&done) {
     }
 }
 
-// threads − 1 workers created once (threads ≥ 1). A new job is announced by bumping
+// threads − 1 workers created once (threads ≥ 1; fewer if the system refuses threads:
+// never an exception). A new job is announced by bumping
 // `generation_` (the job pointer is published by that release store); workers and the
 // caller spin briefly on the atomics, then sleep on the condition variables. Every state
 // change is followed by locking and unlocking the mutex before notifying, so a thread that
@@ -69,7 +70,9 @@ public:
     ~worker_pool();
     worker_pool(const worker_pool &) = delete;
     worker_pool &operator=(const worker_pool &) = delete;
+    // The threads jobs run on: requested() unless the system refused some (then fewer, ≥ 1).
     int size() const { return static_cast<int>(workers_.size()) + 1; }
+    int requested() const { return requested_; }
 
     template <class Job>
     void run(Job &job) {
@@ -93,6 +96,7 @@ private:
     void notify(std::condition_variable &cv, bool all);
     void loop(int index);
 
+    int requested_ = 1;
     std::vector<std::thread> workers_;
     std::mutex mutex_;
     std::condition_variable wake_, done_;

@@ -5,6 +5,7 @@
 // src/parallel/, the vertex kernels in vertex_transform.*, the band sharing in
 // render_bands.h, the per-pixel path in raster_pixel_path.cpp.
 #include <algorithm>
+#include <new>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -336,17 +337,6 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
 
 // ---- the steps of a draw -------------------------------------------------------------------
 
-// Every thread's buffers can hold a transformed copy of every vertex (and the per-pixel
-// path's attributes when wanted).
-void render_context::impl::grow_segments(std::size_t vertex_count, bool generic) {
-    for (int t = 0; t < pool.size(); ++t) {
-        segment &seg = segments[t];
-        if (seg.vertices.size() < vertex_count)
-            seg.vertices.resize(vertex_count), seg.clip.resize(vertex_count), seg.stamp.resize(vertex_count, 0u);
-        if (generic && seg.vertex_attr.size() < vertex_count * ATTR_COUNT) seg.vertex_attr.resize(vertex_count * ATTR_COUNT);
-    }
-}
-
 // The draw's pieces over `units` cluster chunks (clustered) or triangles: one on one thread;
 // on n threads PIECES_PER_THREAD · n (fewer for a small mesh), after the frame's earlier
 // draws' (multisampled frames keep them until end_frame).
@@ -418,16 +408,23 @@ void render_context::impl::set_up_and_draw(int thread, const raster_mesh &m, con
     band_affinity &mine = affinity[thread];
     if (!multisampled()) mine.forget(bands.count);  // (a multisampled frame counts every draw's)
     for (int k; (k = counters.take_piece(thread, pool.size())) >= 0;) {
-        set_up_piece(thread, plan.first + k, m, p, job, state, view, plan);
-        piece &done = pieces[static_cast<std::size_t>(plan.first + k)];
-        mine.count(done.bins, bands.count);
-        if (done.near_bands) {
-            // Either list may hold all of a piece's triangles in another frame: both grow
-            // to the largest total, so that a steady scene allocates nothing per frame.
-            const std::size_t total = done.fast.size() + done.far.size();
-            done.fast.reserve(total);
-            done.far.reserve(total);
-            if (!done.far.empty()) detail::stream_fence();  // (streamed triangles before the release)
+        // Memory running out drops the draw (as a bad index does) and fails the frame; the
+        // piece still counts as done (no thread waits for it, no exception leaves the worker).
+        try {
+            set_up_piece(thread, plan.first + k, m, p, job, state, view, plan);
+            piece &done = pieces[static_cast<std::size_t>(plan.first + k)];
+            mine.count(done.bins, bands.count);
+            if (done.near_bands) {
+                // Either list may hold all of a piece's triangles in another frame: both grow
+                // to the largest total, so that a steady scene allocates nothing per frame.
+                const std::size_t total = done.fast.size() + done.far.size();
+                done.fast.reserve(total);
+                done.far.reserve(total);
+                if (!done.far.empty()) detail::stream_fence();  // (streamed triangles before the release)
+            }
+        } catch (const std::bad_alloc &) {
+            out_of_memory.store(true, std::memory_order_relaxed);
+            counters.bad_indices.store(true, std::memory_order_relaxed);
         }
         counters.pieces_done.fetch_add(1, std::memory_order_release);
     }
@@ -484,10 +481,8 @@ void render_context::impl::gather_stats(const draw_plan &plan) {
     }
 }
 
-void render_context::draw(const raster_mesh &mesh, const draw_params &params) {
-    impl &s = *impl_;
-    if (!s.target || mesh.positions.size() != mesh.normals.size() || mesh.positions.size() != mesh.uvs.size()) return;
-    if (!check_material(params.surface)) return;
+void render_context::impl::draw(const raster_mesh &mesh, const draw_params &params) {
+    impl &s = *this;
     s.stats.triangles_in += mesh.triangles.size();
     const mat4_t mvp = mat4_multiply(params.view_projection, params.model);
     if (cull_sphere(frustum_from_matrix(mvp), {mesh.bound_center, mesh.bound_radius}) == cull_result::outside) {
@@ -504,9 +499,9 @@ void render_context::draw(const raster_mesh &mesh, const draw_params &params) {
     cluster_view view{};
     if (use_clusters) view = make_cluster_view(mvp, s.target->width, s.target->height, s.guard, params.cull);
     const vertex_job job = make_vertex_job(params, mvp, generic, s.target->width, s.target->height, s.pattern->bits);
-    s.grow_segments(mesh.positions.size(), generic);
     if (!s.multisampled()) s.piece_count = 0;  // (a multisampled frame keeps every draw's pieces)
     const draw_plan plan = s.plan_draw(use_clusters ? clusters->clusters().size() : mesh.triangles.size(), use_clusters);
+    s.grow_segments(mesh.positions.size(), generic, plan.shared_vertices ? 1 : s.pool.size());
     s.counters.reset(plan.count, s.pool.size(), s.bands.count);
     auto phase = [&](int t) { s.set_up_and_draw(t, mesh, params, job, state, use_clusters ? &view : nullptr, plan); };
     const bool measured = s.pool.size() > 1 && !s.multisampled();  // (stream_choice)
@@ -543,23 +538,31 @@ status render_context::begin_frame(canvas_t &target, float clear_intensity, samp
     const int count = static_cast<int>(samples);
     if (count != 1 && count != 4 && count != 8 && count != 16)
         return error{"", 0, -1, "render_context: " + std::to_string(count) + " samples per pixel (1, 4, 8 or 16)"};
-    const status size_ok = s.depth.resize(target.width, target.height);
-    if (!size_ok) return size_ok;
-    s.pattern = &detail::pattern_of(count);
-    s.piece_count = 0;
-    s.target = &target;
-    s.clear_intensity = detail::clamp01(clear_intensity);
-    s.pending_clear = true;
-    s.phase_seconds = 0.0;
-    s.stats = {};
-    s.states.clear();
-    s.translucent.clear();
-    s.bands.plan(target.height, s.pool.size(), band_rows(count));
-    if (count > 1) {
-        const int tile_rows = (target.height + s.bands.count - 1) / s.bands.count;
-        const bool blocks = detail::sample_store::blocks_for(s.kernel, count);
-        for (int t = 0; t < s.pool.size(); ++t) s.tiles[t].resize(target.width, tile_rows, count, s.clear_intensity, blocks);
+    s.target = nullptr;
+    s.failure = {};
+    try {
+        const status size_ok = s.depth.resize(target.width, target.height);
+        if (!size_ok) return size_ok;
+        s.pattern = &detail::pattern_of(count);
+        s.piece_count = 0;
+        s.clear_intensity = detail::clamp01(clear_intensity);
+        s.pending_clear = true;
+        s.phase_seconds = 0.0;
+        s.stats = {};
+        s.states.clear();
+        s.translucent.clear();
+        s.bands.plan(target.height, s.pool.size(), band_rows(count));
+        if (count > 1) {
+            const int tile_rows = (target.height + s.bands.count - 1) / s.bands.count;
+            const bool blocks = detail::sample_store::blocks_for(s.kernel, count);
+            for (int t = 0; t < s.pool.size(); ++t)
+                s.tiles[t].resize(target.width, tile_rows, count, s.clear_intensity, blocks);
+        }
+    } catch (const std::bad_alloc &) {
+        return error{"", 0, -1, "render_context: out of memory for a " + std::to_string(target.width) + " x " +
+                                    std::to_string(target.height) + " frame at " + std::to_string(count) + "x"};
     }
+    s.target = &target;
     s.guard = std::clamp(GUARD_SPAN_PIXELS / static_cast<float>(std::max(target.width, target.height)), 1.0f, MAX_GUARD);
     return {};
 }

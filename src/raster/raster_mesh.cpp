@@ -1,5 +1,6 @@
 // raster_mesh.cpp — tiny3d::mesh → raster_mesh (mesh_triangles over shared vertices).
 #include <cmath>
+#include <new>
 #include <string>
 
 #include "raster.h"
@@ -12,7 +13,9 @@ error mesh_error(const std::string &reason) { return error{"", 0, -1, reason}; }
 
 }  // namespace
 
-result<raster_mesh> make_raster_mesh(const mesh &m, std::span<const vec3_t> vertex_normals) {
+namespace {
+
+result<raster_mesh> build_raster_mesh(const mesh &m, std::span<const vec3_t> vertex_normals) {
     if (m.face_start.empty() || m.face_start.front() != 0 || m.face_start.back() != m.indices.size())
         return mesh_error("raster mesh: face_start does not match the corner list");
     for (std::size_t k = 0; k < m.indices.size(); ++k)
@@ -62,6 +65,17 @@ result<raster_mesh> make_raster_mesh(const mesh &m, std::span<const vec3_t> vert
         r.bound_radius = b.radius;
     }
     return r;
+}
+
+}  // namespace
+
+result<raster_mesh> make_raster_mesh(const mesh &m, std::span<const vec3_t> vertex_normals) {
+    try {
+        return build_raster_mesh(m, vertex_normals);
+    } catch (const std::bad_alloc &) {
+        return mesh_error("raster mesh: out of memory for a mesh of " + std::to_string(m.indices.size()) +
+                          " corners and " + std::to_string(m.positions.size()) + " positions");
+    }
 }
 
 }  // namespace tiny3d

@@ -5,6 +5,7 @@
 #define TINY3D_RENDER_CONTEXT_IMPL_H
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <vector>
@@ -144,6 +145,10 @@ struct render_context::impl {
     detail::band_affinity affinity[detail::MAX_THREADS];  // per thread, for the bands it claims
     detail::stream_choice streaming;  // whether this frame's set-up streams (several threads, one sample)
     double phase_seconds = 0.0;       // this frame's draws' parallel phases so far (measured frames)
+    // Memory ran out in the current draw (set by any thread), and the frame's first failure.
+    std::atomic<bool> out_of_memory{false};
+    status failure;
+    void draw(const raster_mesh &mesh, const draw_params &params);  // render_context::draw's work
 
     void clear_band(int b) {
         const int y0 = bands.y0(b), y1 = bands.y0(b + 1);
@@ -153,7 +158,7 @@ struct render_context::impl {
     }
 
     // The steps of draw (raster_context.cpp).
-    void grow_segments(std::size_t vertex_count, bool generic);
+    void grow_segments(std::size_t vertex_count, bool generic, int threads);
     detail::draw_plan plan_draw(std::size_t units, bool clustered);
     void set_up_and_draw(int thread, const raster_mesh &m, const draw_params &p, const detail::vertex_job &job,
                          std::uint32_t state, const detail::cluster_view *view, const detail::draw_plan &plan);
