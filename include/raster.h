@@ -378,10 +378,8 @@ inline multisample_simd best_multisample_simd() { return best_raster_simd(); }
 // it drew in the frame before, then those holding most of its own triangles, first), each
 // band drawn by one thread piece after piece in submission order, so the image (and the
 // stats) are identical for any thread count (documentation/raster.md, "Threads and
-// buffers"). On several threads, 1-sample frames time their draws: each period of 128 such
-// frames starts with 4 frames storing the triangles meant for another core with streaming
-// stores and 4 without, and runs the rest the faster way (which way changes the speed
-// only, never a pixel).
+// buffers"). A frame's work depends on its counts only (triangles, bands, threads), never
+// on a clock.
 // No allocation per frame once buffers have grown to the scene's size.
 class render_context {
 public:
@@ -416,6 +414,15 @@ public:
     bool use_simd(raster_simd simd);
     multisample_simd multisample_simd_in_use() const { return simd_in_use(); }  // the older names
     bool use_multisample_simd(multisample_simd simd) { return use_simd(simd); }
+    // Whether 1-sample frames on several threads store the triangles a thread sets up for
+    // bands another thread is likely to draw with streaming (non-temporal) stores. Off by
+    // default. Streaming spares the drawing core the wait for cache lines another core
+    // wrote, which pays where the two cores have separate caches and costs a trip to memory
+    // where they share one (documentation/raster.md, "Threads and buffers"). Changes the
+    // speed only, never a pixel. use_streaming_stores returns false, changing nothing,
+    // between begin_frame and end_frame.
+    bool use_streaming_stores(bool on);
+    bool streaming_stores() const;
 
 private:
     struct impl;

@@ -342,7 +342,7 @@ void msaa_candidate_rows(std::int64_t min_Y, std::int64_t max_Y, const sample_pa
 namespace {
 
 // make_msaa_triangle on the grid of 1/2^Bits px (= pat.bits): the shifts and scales are
-// constants (a runtime shift count and 1/2^bits made the 4× set-up ~25 % slower).
+// constants (a runtime shift count and 1/2^bits are a variable shift and a multiply per use).
 template <int Bits>
 bool make_msaa_triangle_on(const std::int32_t X[3], const std::int32_t Y[3], std::int64_t area2,
                            const sample_pattern &pat, pixel_rect clip, const float depth[3], const float intensity[3],

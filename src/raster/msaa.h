@@ -81,7 +81,7 @@ using msaa_kernel = raster_simd;  // raster.h
 // their pixels were touched, and the portable kernel and the per-pixel path initialise
 // nothing (touch). In a tile at rest the marks are only the resolve's hint of where to
 // read: the AVX-512 block kernel marks the first pixel of each block it stores (one byte
-// store per block instead of two: Scene S level 6 4× −1.2 to −2.4 %), and the block
+// store per block instead of two), and the block
 // resolve reads every 8 × 2 group of pixels with a mark, its per-pixel tail every pixel.
 //
 // Two layouts. Rows: pixel after pixel along a row, each its S depths then its S colours
@@ -91,9 +91,8 @@ using msaa_kernel = raster_simd;  // raster.h
 // paired with padding — each block 128 bytes, aligned: its 16 depths, then its 16 colours,
 // sample s of the block's pixel q = 2·(row in block) + (column in block) at float 4q + s
 // of each: the block kernel's two registers, loaded and stored as they are, with no
-// permutes (Scene S level 6 4×: −6.5 % on one thread, −7.5 % on two; the row kernels walk
-// a row through twice the lines in it, so SSE2's frame was 6 % slower and AVX2's no faster
-// in blocks: they keep rows). Every kernel takes either layout (pixel, colour_offset,
+// permutes (the row kernels walk a row through twice the lines in it, so SSE2 and AVX2
+// keep rows). Every kernel takes either layout (pixel, colour_offset,
 // pixel_step), so a tile's layout and the kernel need not match.
 class sample_store {
 public:
@@ -260,8 +259,7 @@ void fill_msaa_rows(sample_store &store, const msaa_triangle &f, const sample_pa
 // fill_msaa_rows with its kernel, sample count and depth test chosen once: the function
 // msaa_fill_for(kernel, pat.count, test) draws what fill_msaa_rows(…, test, …, kernel) draws
 // (which calls it), given the same pattern and test. A band's loop picks its functions
-// before its triangles: the choice per triangle went through three calls (Scene S level 6
-// 4×, one thread, alternated runs: −2.7 % with the AVX-512 kernel, −1.8 % with AVX2's).
+// before its triangles: the choice per triangle went through three calls.
 using msaa_row_fill = void (*)(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
                                bool depth_write, float clear_colour, int y0, int y1);
 msaa_row_fill msaa_fill_for(msaa_kernel kernel, int samples, depth_func test);

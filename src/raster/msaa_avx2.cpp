@@ -47,7 +47,7 @@ inline __m256 passing(__m256 z, __m256 stored) {
 
 // Clipped (f.clipped_x): a pair reaching a column past the bounds masks it off; otherwise no
 // sample there is inside f and the mask is left out, the pair's column stepped in float
-// (as the AVX-512 block kernel; Scene S level 6 4× with this kernel forced: −4 %).
+// (as the AVX-512 block kernel: the unclipped loop carries no mask).
 template <depth_func Test, bool Clipped>
 void fill_rows_pairs(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, bool depth_write, int y0,
                      int y1) {

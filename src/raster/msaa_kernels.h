@@ -22,7 +22,7 @@ struct edge_extremes {
     // columns [lo_x, hi_x] (relative to min_x) where some sample could pass every edge.
     // False when that span is empty. Int: std::int64_t, or std::int32_t when f.narrow (the
     // best sample's value at column 0 lies where narrow bounds every edge value, below
-    // 2^31 − 2^24, and |a| < 2^19; 32-bit divisions made Scene S's 16× frame 9 % faster).
+    // 2^31 − 2^24, and |a| < 2^19; a 32-bit division has a fraction of a 64-bit one's latency).
     template <class Int>
     bool row(const msaa_triangle &f, int y, Int e[3], int &lo_x, int &hi_x) const {
         Int first = 0, last = static_cast<Int>(f.max_x - f.min_x);

@@ -140,7 +140,7 @@ void render_context::impl::set_up_piece(int thread, int number, const raster_mes
     piece &out = pieces[static_cast<std::size_t>(number)];
     out.fast.clear();
     out.far.clear();
-    out.near_bands = pool.size() > 1 && streaming.streaming() ? affinity[thread].drew : nullptr;
+    out.near_bands = pool.size() > 1 && streaming ? affinity[thread].drew : nullptr;
     out.msaa.clear();
     out.wide.clear();
     out.generic.clear();
@@ -502,10 +502,7 @@ void render_context::draw(const raster_mesh &mesh, const draw_params &params) {
     const draw_plan plan = s.plan_draw(use_clusters ? clusters->clusters().size() : mesh.triangles.size(), use_clusters);
     s.counters.reset(plan.count, s.pool.size(), s.bands.count);
     auto phase = [&](int t) { s.set_up_and_draw(t, mesh, params, job, state, use_clusters ? &view : nullptr, plan); };
-    const bool measured = s.pool.size() > 1 && !s.multisampled();  // (stream_choice)
-    const auto start = measured ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
     s.pool.run(phase);
-    if (measured) s.phase_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     s.pending_clear = false;
     if (s.counters.bad_indices.load(std::memory_order_relaxed)) {  // an index out of range: nothing drawn
         s.piece_count = plan.first;  // (a multisampled frame's earlier draws stay)
@@ -530,6 +527,13 @@ bool render_context::use_simd(raster_simd simd) {
     return true;
 }
 
+bool render_context::use_streaming_stores(bool on) {
+    if (impl_->target) return false;
+    impl_->streaming = on;
+    return true;
+}
+bool render_context::streaming_stores() const { return impl_->streaming; }
+
 status render_context::begin_frame(canvas_t &target, float clear_intensity, sample_count samples) {
     impl &s = *impl_;
     if (!target.pixels || !target.data) return error{"", 0, -1, "render_context: canvas has no pixels"};
@@ -543,7 +547,6 @@ status render_context::begin_frame(canvas_t &target, float clear_intensity, samp
     s.target = &target;
     s.clear_intensity = detail::clamp01(clear_intensity);
     s.pending_clear = true;
-    s.phase_seconds = 0.0;
     s.stats = {};
     s.states.clear();
     s.translucent.clear();
@@ -560,7 +563,6 @@ status render_context::begin_frame(canvas_t &target, float clear_intensity, samp
 void render_context::end_frame() {
     impl &s = *impl_;
     if (!s.target) return;
-    if (s.phase_seconds > 0.0) s.streaming.frame_done(s.phase_seconds);  // (begin_frame resets it)
     // Back to front; equal depths keep submission order (std::sort: no temporary buffer).
     std::sort(s.translucent.begin(), s.translucent.end(), [](const generic_triangle &a, const generic_triangle &b) {
         return a.mean_depth != b.mean_depth ? a.mean_depth > b.mean_depth : a.sequence < b.sequence;

@@ -179,9 +179,8 @@ void fill_fast_bins_avx512(canvas_t &canvas, zbuffer &depth, const band_bin *bin
     constexpr std::size_t TRIANGLES_AHEAD = 6;
     // The set-up triangle TRIANGLES_AHEAD entries on (its two cache lines), into the next
     // bin near a bin's end: a bin skips through its piece's list, which the hardware
-    // prefetcher does not follow (Scene S level 6: ~3.5 % of the frame), and a band's bins
-    // are short on many threads (16 pieces: prefetching only within each bin cost ~5 % of
-    // the fill).
+    // prefetcher does not follow, and a band's bins are short on many threads (prefetching
+    // only within each bin leaves the first triangles of every bin unfetched).
     with_depth_test(test, [&](auto t) {
         for (int j = 0; j < bin_count; ++j) {
             const band_bin &bin = bins[j];
@@ -284,7 +283,7 @@ inline void lane_edges_at(const setup_batch &in, const lane_vertices &v, __m256i
 // (Inlined: called out of line, it returned without clearing the vector registers' upper
 // halves (vzeroupper), and its caller, which uses no 256-bit register after the call, then
 // returned without it too; the baseline SSE code after the batch, the vertex transform,
-// took ~60 % longer on the AMD EPYC.)
+// then paid the penalty of mixing dirty upper halves with SSE instructions.)
 [[gnu::always_inline]] inline void lane_planes(const setup_batch &in, const lane_vertices &v, __m256i min_x,
                                                __m256i min_y, float planes[6][SETUP_BATCH]) {
     const __m512d step = _mm512_set1_pd(1.0 / RASTER_SUBPIXEL_ONE);

@@ -294,7 +294,8 @@ void fill_fast_rows(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, co
 
 // The colour and depth lines of the band a thread draws next, brought into its cache a few
 // at a time while it draws the current band, so that the next band's clear finds them
-// there instead of waiting for each line (Scene S level 6, one thread: ~4 % of the frame).
+// there instead of waiting for each line (a band's clear touches every line of it at once,
+// faster than the hardware prefetcher ramps up).
 struct band_prefetch {
     static constexpr int LINES_PER_TRIANGLE = 4;  // of each buffer, per triangle drawn
     const char *colour = nullptr, *depth = nullptr;
@@ -315,10 +316,9 @@ struct band_prefetch {
 // A piece's set-up triangles that another thread is expected to draw (render_bands.h),
 // appended with streaming stores: they go to memory without first taking the lines into the
 // writing core's cache. Reading a line makes a copy in the reader's cache, and a core that
-// later stores into that line waits until the copy is gone, one line at a time; in a frame on
-// two cores of different L3 caches (the AMD EPYC of the benchmarks, in some hours: a
-// cache-line round trip of 330–700 ns instead of 50) that made the next frame's set-up of
-// Scene S level 6 take twice as long. Storage is grown (normal stores) and never shrunk; the
+// later stores into that line waits until the copy is gone, one line at a time; when the two
+// cores have separate last-level caches that round trip is several times a shared cache's
+// and dominates the next frame's set-up. Storage is grown (normal stores) and never shrunk; the
 // elements are not zeroed first (a zeroing store would bring the line back into the cache).
 // Portable build: plain stores. A reader on another thread needs stream_fence() by the writer
 // before the release that publishes the list.

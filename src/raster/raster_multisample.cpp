@@ -20,8 +20,7 @@ void render_context::impl::add_msaa(const msaa_triangle &f, std::uint32_t state,
 // of every draw: the opaque fast and per-pixel-path ones in its bins), then the translucent
 // queue (sorted), into the tile; then the resolve. The set-up triangle TRIANGLES_AHEAD bin
 // entries on is fetched meanwhile (the frame's list outgrows the caches, and a bin skips
-// through it where the hardware prefetcher does not follow: Scene S level 6 4×, one thread,
-// 3–4 % faster with the AVX-512 kernel, 9–14 % with AVX2's).
+// through it where the hardware prefetcher does not follow).
 void render_context::impl::draw_multisampled_band(int band, sample_store &tile) {
     const int y0 = bands.y0(band), y1 = bands.y0(band + 1);
     if (y0 >= y1) return;

@@ -26,7 +26,7 @@ inline float texel_footprint2(float a_x, float b_x, float a_y, float b_y) {
 // on that interval (iteratively reweighted least squares on Chebyshev nodes: 1.5e-5, the
 // rest is float rounding); exact at powers of two. Below FLT_MIN (0, denormals, negatives)
 // it returns −∞; +∞ and NaN pass through. Inline, two predictable branches and a short
-// chain of multiply-adds, where libm's log2f is a call (~13 % of a trilinear frame).
+// chain of multiply-adds, where libm's log2f is a call on every trilinear lookup.
 inline float fast_log2(float x) {
     const std::int32_t bits = std::bit_cast<std::int32_t>(x);
     // One unsigned compare for "positive, normal and finite": exponent field 1..254.
