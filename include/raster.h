@@ -362,9 +362,22 @@ enum class raster_simd {
                // triangle per register; 1×, 4×, 8×: triangles set up eight at a time
                // (AVX-512 F/VL/DQ/BW)
 };
-// The best of them this CPU runs (CPUID, read by the compiler's runtime); what a render
-// context starts with.
+// What a render context starts with: the best of them this CPU runs (CPUID, read by the
+// compiler's runtime), unless the environment variable TINY3D_KERNELS names one this CPU
+// runs ("portable", "sse2", "avx2" or "avx512"; for tests and benchmarks). Chosen once,
+// when the process first asks; the line kernels (lines.h, best_line_simd) follow it.
 raster_simd best_raster_simd();
+// "portable", "sse2", "avx2" or "avx512".
+const char *raster_simd_name(raster_simd simd);
+// How best_raster_simd() was chosen: `requested` is TINY3D_KERNELS (empty when unset) and
+// `honoured` false when it was set but named no instruction set this CPU runs (unknown, or
+// not run here: the best one is used instead, never an error).
+struct raster_simd_choice {
+    raster_simd simd;
+    std::string requested;
+    bool honoured;
+};
+raster_simd_choice default_raster_simd();
 // The names these had when they chose the multisampled frames' kernels only.
 using multisample_simd = raster_simd;
 inline multisample_simd best_multisample_simd() { return best_raster_simd(); }

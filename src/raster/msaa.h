@@ -58,8 +58,8 @@ const sample_pattern &pattern_of(int samples);
 // is SSE2's for all but the portable one. All give bit-identical samples and images; a
 // faster one runs where its precondition holds (msaa_triangle::chunkable, narrow) and the
 // portable one elsewhere.
-// Which of them this build runs on this CPU, and the fastest: fill_kernel_runs and
-// best_fill_kernel (raster_internal.h; the 1-sample fill's kernels are chosen alike).
+// Which of them runs: the render context's kernel table (src/kernels.h), as for the
+// 1-sample fill.
 using msaa_kernel = raster_simd;  // raster.h
 
 // The samples of a tile of rows [origin, origin + rows) of the canvas: per pixel S sample
@@ -103,7 +103,7 @@ public:
     void resize(int width, int rows, int samples, float clear_colour, bool blocks = false);
     // The layout the render context gives `kernel`'s tiles: blocks for the AVX-512 kernels
     // at 4 samples.
-    static bool blocks_for(msaa_kernel kernel, int samples) { return samples == 4 && kernel == msaa_kernel::avx512; }
+    static bool blocks_for(msaa_kernel kernel, int samples) { return samples == 4 && kernels_for(kernel).msaa_blocks4; }
     int samples() const { return samples_; }
     int width() const { return width_; }
     bool blocks() const { return blocks_; }
@@ -260,8 +260,7 @@ void fill_msaa_rows(sample_store &store, const msaa_triangle &f, const sample_pa
 // msaa_fill_for(kernel, pat.count, test) draws what fill_msaa_rows(…, test, …, kernel) draws
 // (which calls it), given the same pattern and test. A band's loop picks its functions
 // before its triangles: the choice per triangle went through three calls.
-using msaa_row_fill = void (*)(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
-                               bool depth_write, float clear_colour, int y0, int y1);
+// (msaa_row_fill: src/kernels.h)
 msaa_row_fill msaa_fill_for(msaa_kernel kernel, int samples, depth_func test);
 
 // The per-pixel path's multisampled walk: for each pixel of `t` (valid triangle_edges on the

@@ -10,7 +10,7 @@
 // AVX-512 block kernel's scheme (msaa_avx512.cpp), with 8 lanes and without mask registers.
 //
 // Compiled for AVX2 inside the target region of avx2_region_open.inc; run only on CPUs that
-// have it (best_fill_kernel). No FMA contraction: the portable kernel's float operations,
+// have it (kernels_run, src/kernels.cpp). No FMA contraction: the portable kernel's float operations,
 // rounded step by step, lane by lane, so the samples are bit-identical.
 #include <algorithm>
 #include <cstdint>

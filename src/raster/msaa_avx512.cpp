@@ -9,7 +9,7 @@
 // Compiled for AVX-512 inside the target region of avx512_region_open.inc (as
 // line_tabulated_avx512.cpp is): the headers are included before the region opens, so
 // their inline functions stay baseline x86-64. Run only on CPUs that have it
-// (best_fill_kernel). No FMA contraction: the portable kernel's float operations, rounded
+// (kernels_run, src/kernels.cpp). No FMA contraction: the portable kernel's float operations, rounded
 // step by step, lane by lane.
 #include <algorithm>
 #include <cstdint>

@@ -91,8 +91,14 @@ msaa_row_fill fill_function(int samples, depth_func test, Choose &&choose) {
     return chosen;
 }
 
+#ifdef TINY3D_SSE2
+// msaa_fill_for's SSE2 functions (samples 4, 8 or 16): the SSE2 kernel where f is
+// chunkable, else the portable one.
+msaa_row_fill msaa_fill_sse2(int samples, depth_func test);
+#endif
+
 #ifdef TINY3D_AVX2
-// msaa_fill_for's AVX2 functions (msaa_kernel::avx2; only on CPUs best_fill_kernel() reports
+// msaa_fill_for's AVX2 functions (msaa_kernel::avx2; only on CPUs kernels_run() reports
 // it for, or avx512), samples 4, 8 or 16, test not never: the AVX2 kernel where f is narrow,
 // the SSE2 functions otherwise. The same integer tests and float operations as the portable
 // kernel.
@@ -100,7 +106,7 @@ msaa_row_fill fill_function_avx2(int samples, depth_func test);
 #endif
 
 #ifdef TINY3D_AVX512
-// msaa_fill_for's AVX-512 functions (msaa_kernel::avx512; only on CPUs best_fill_kernel()
+// msaa_fill_for's AVX-512 functions (msaa_kernel::avx512; only on CPUs kernels_run()
 // reports it for), samples 4, 8 or 16, test not never: the AVX-512 kernels where f is
 // chunkable, the portable one otherwise. The same integer tests and float operations as the
 // portable kernel.

@@ -213,17 +213,17 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
             add_fast(t, depth, shade, out);
         }
     };
-    // With the AVX-512 and AVX2 kernels, fast triangles are set up eight at a time (in
-    // submission order: the batch is finished before a clipped triangle and at the end), and
-    // so are the multisampled ones on the 1/16 px grid (4 and 8 samples).
+    // With a table that has set-up batches (AVX-512, AVX2), fast triangles are set up eight at
+    // a time (in submission order: the batch is finished before a clipped triangle and at the
+    // end), and so are the multisampled ones on the 1/16 px grid (4 and 8 samples).
     setup_batch batch;
-    const bool batched = batched_setup(kernel) && (!msaa || pattern->bits == RASTER_SUBPIXEL_BITS);
+    const bool batched = kernels->setup_fast_batch && (!msaa || pattern->bits == RASTER_SUBPIXEL_BITS);
     auto finish_batch = [&] {
         if (batch.count == 0) return;
         fast_setup verdict[SETUP_BATCH];
         if (msaa) {
             msaa_triangle set_up[SETUP_BATCH];
-            setup_msaa_batch(kernel, batch, *pattern, full, verdict, set_up);
+            kernels->setup_msaa_batch(batch, *pattern, full, verdict, set_up);
             for (int l = 0; l < batch.count; ++l) {
                 if (verdict[l] == fast_setup::ready) add_msaa(set_up[l], state, out);
                 if (verdict[l] != fast_setup::scalar) continue;
@@ -237,7 +237,7 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
             return;
         }
         fast_triangle set_up[SETUP_BATCH];
-        setup_fast_batch(kernel, batch, full, verdict, set_up);
+        kernels->setup_fast_batch(batch, full, verdict, set_up);
         for (int l = 0; l < batch.count; ++l) {
             if (verdict[l] == fast_setup::ready) {  // (the common case: no lane gathered)
                 bin_ready(set_up[l]);
@@ -381,7 +381,7 @@ void render_context::impl::draw_band(int band, const draw_params &p, const draw_
             const std::vector<std::uint32_t> &bin = from.bins[band];
             if (!bin.empty()) bins[count++] = {from.fast.data(), from.far.data(), from.wide.data(), bin.data(), bin.size()};
         }
-        fill_fast_bins(*target, depth, bins, count, p.depth, y0, y1, kernel, ahead);
+        kernels->fill_fast_bins(*target, depth, bins, count, p.depth, y0, y1, ahead);
         return;
     }
     for (int number = plan.first; number < plan.first + plan.count; ++number) {
@@ -519,11 +519,11 @@ render_context::~render_context() = default;
 int render_context::threads() const { return impl_->pool.size(); }
 const zbuffer &render_context::depth() const { return impl_->depth; }
 const frame_stats &render_context::stats() const { return impl_->stats; }
-raster_simd render_context::simd_in_use() const { return impl_->kernel; }
+raster_simd render_context::simd_in_use() const { return impl_->kernels->simd; }
 
 bool render_context::use_simd(raster_simd simd) {
-    if (impl_->target || !detail::fill_kernel_runs(simd)) return false;
-    impl_->kernel = simd;
+    if (impl_->target || !detail::kernels_run(simd)) return false;
+    impl_->kernels = &detail::kernels_for(simd);
     return true;
 }
 
@@ -553,7 +553,7 @@ status render_context::begin_frame(canvas_t &target, float clear_intensity, samp
     s.bands.plan(target.height, s.pool.size(), band_rows(count));
     if (count > 1) {
         const int tile_rows = (target.height + s.bands.count - 1) / s.bands.count;
-        const bool blocks = detail::sample_store::blocks_for(s.kernel, count);
+        const bool blocks = detail::sample_store::blocks_for(s.kernels->simd, count);
         for (int t = 0; t < s.pool.size(); ++t) s.tiles[t].resize(target.width, tile_rows, count, s.clear_intensity, blocks);
     }
     s.guard = std::clamp(GUARD_SPAN_PIXELS / static_cast<float>(std::max(target.width, target.height)), 1.0f, MAX_GUARD);

@@ -411,16 +411,10 @@ void fill_rows_dispatch(canvas_t &canvas, zbuffer *depth, const fast_triangle &f
 
 }  // namespace
 
-void setup_fast_batch([[maybe_unused]] fill_kernel kernel, const setup_batch &in, pixel_rect clip,
-                      fast_setup verdict[SETUP_BATCH], fast_triangle out[SETUP_BATCH]) {
-#ifdef TINY3D_AVX512
-    if (kernel == fill_kernel::avx512) return setup_fast_batch_avx512(in, clip, verdict, out);
-#endif
-#ifdef TINY3D_AVX2
-    if (kernel == fill_kernel::avx2) return setup_fast_batch_avx2(in, clip, verdict, out);
-#endif
+void setup_fast_batch(fill_kernel kernel, const setup_batch &in, pixel_rect clip, fast_setup verdict[SETUP_BATCH],
+                      fast_triangle out[SETUP_BATCH]) {
+    if (const auto batch = kernels_for(kernel).setup_fast_batch) return batch(in, clip, verdict, out);
     std::fill(verdict, verdict + in.count, fast_setup::scalar);
-    (void)clip, (void)out;
 }
 
 void attribute_planes_at(const double x[3], const double y[3], int px, int py, const float depth[3],
@@ -448,30 +442,16 @@ void fill_floats(float *dst, std::size_t count, float value) {
     for (; i < count; ++i) dst[i] = value;
 }
 
-bool fill_kernel_runs(fill_kernel k) {
-    switch (k) {
-        case fill_kernel::portable: return true;
-#ifdef TINY3D_SSE2  // the AVX2 and AVX-512 kernels resolve, and fall back, with SSE2's
-        case fill_kernel::sse2: return true;
-#ifdef TINY3D_AVX2
-        case fill_kernel::avx2: return cpu_has_avx2();
-#endif
-#ifdef TINY3D_AVX512
-        case fill_kernel::avx512: return cpu_has_avx512();
-#endif
-#endif
-        default: return false;
-    }
-}
-
-fill_kernel best_fill_kernel() {
-    for (fill_kernel k : {fill_kernel::avx512, fill_kernel::avx2, fill_kernel::sse2})
-        if (fill_kernel_runs(k)) return k;
-    return fill_kernel::portable;
-}
-
 void fill_fast_rows(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, const triangle_edges *wide_edges,
-                    depth_func test, bool depth_write, int y0, int y1, [[maybe_unused]] fill_kernel kernel) {
+                    depth_func test, bool depth_write, int y0, int y1, fill_kernel kernel) {
+    const auto narrow = kernels_for(kernel).fill_rows_narrow;
+    if (narrow && f.wide < 0 && narrow_fits(f, canvas.width) && std::max(y0, f.min_y) < std::min(y1, f.max_y + 1))
+        return narrow(canvas, depth, f, test, depth_write, std::max(y0, f.min_y), std::min(y1, f.max_y + 1));
+    fill_fast_rows_base(canvas, depth, f, wide_edges, test, depth_write, y0, y1);
+}
+
+void fill_fast_rows_base(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, const triangle_edges *wide_edges,
+                         depth_func test, bool depth_write, int y0, int y1) {
     y0 = std::max(y0, f.min_y);
     y1 = std::min(y1, f.max_y + 1);
     if (y0 >= y1) return;
@@ -480,10 +460,6 @@ void fill_fast_rows(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, co
         return;
     }
 #ifdef TINY3D_SSE2
-#ifdef TINY3D_AVX512
-    if (kernel == fill_kernel::avx512 && narrow_fits(f, canvas.width))
-        return fill_rows_narrow_avx512(canvas, depth, f, test, depth_write, y0, y1);
-#endif
     if (depth) fill_rows_dispatch<true>(canvas, depth, f, test, depth_write, y0, y1);
     else fill_rows_dispatch<false>(canvas, depth, f, depth_func::always, false, y0, y1);
 #else
@@ -501,35 +477,28 @@ void fill_fast_rows(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, co
 #endif
 }
 
-void fill_fast_bins(canvas_t &canvas, zbuffer &depth, const band_bin *bins, int bin_count, depth_func test, int y0,
-                    int y1, fill_kernel kernel, band_prefetch &ahead) {
-#ifdef TINY3D_AVX512
-    if (kernel == fill_kernel::avx512) return fill_fast_bins_avx512(canvas, depth, bins, bin_count, test, y0, y1, ahead);
-#endif
-#ifdef TINY3D_AVX2
-    if (kernel == fill_kernel::avx2) return fill_fast_bins_avx2(canvas, depth, bins, bin_count, test, y0, y1, ahead);
-#endif
 #ifdef TINY3D_SSE2
-    if (kernel != fill_kernel::portable) {
-        with_depth_test(test, [&](auto t) {
-            for_each_bin_triangle(bins, bin_count, ahead, [&](const band_bin &bin, const fast_triangle &f) {
-                const int first = std::max(y0, f.min_y), end = std::min(y1, f.max_y + 1);
-                if (first >= end) return;
-                if (f.wide >= 0) fill_rows_scalar64(canvas, &depth, f, bin.wide[f.wide], test, true, first, end);
-                else fill_rows_sse2_any<t.value, true>(canvas, &depth, f, true, first, end);
-            });
+void fill_fast_bins_sse2(canvas_t &canvas, zbuffer &depth, const band_bin *bins, int bin_count, depth_func test, int y0,
+                         int y1, band_prefetch &ahead) {
+    with_depth_test(test, [&](auto t) {
+        for_each_bin_triangle(bins, bin_count, ahead, [&](const band_bin &bin, const fast_triangle &f) {
+            const int first = std::max(y0, f.min_y), end = std::min(y1, f.max_y + 1);
+            if (first >= end) return;
+            if (f.wide >= 0) fill_rows_scalar64(canvas, &depth, f, bin.wide[f.wide], test, true, first, end);
+            else fill_rows_sse2_any<t.value, true>(canvas, &depth, f, true, first, end);
         });
-        return;
-    }
+    });
+}
 #endif
+
+void fill_fast_bins_portable(canvas_t &canvas, zbuffer &depth, const band_bin *bins, int bin_count, depth_func test,
+                             int y0, int y1, band_prefetch &ahead) {
     for_each_bin_triangle(bins, bin_count, ahead, [&](const band_bin &bin, const fast_triangle &f) {
-        fill_fast_rows(canvas, &depth, f, f.wide >= 0 ? &bin.wide[f.wide] : nullptr, test, true, y0, y1, kernel);
+        fill_fast_rows_base(canvas, &depth, f, f.wide >= 0 ? &bin.wide[f.wide] : nullptr, test, true, y0, y1);
     });
 }
 
 }  // namespace detail
-
-raster_simd best_raster_simd() { return detail::best_fill_kernel(); }
 
 void fill_triangle(canvas_t &canvas, zbuffer *depth, const screen_vertex v[3], const float intensity[3],
                    depth_func test, bool depth_write, pixel_rect clip) {
@@ -542,7 +511,7 @@ void fill_triangle(canvas_t &canvas, zbuffer *depth, const screen_vertex v[3], c
     detail::fast_triangle f;
     const float depth_z[3] = {v[0].z, v[1].z, v[2].z};
     if (!detail::make_fast_triangle(t, depth_z, intensity, 0, f)) return;
-    detail::fill_fast_rows(canvas, depth, f, &t, test, depth_write, f.min_y, f.max_y + 1, detail::best_fill_kernel());
+    detail::fill_fast_rows(canvas, depth, f, &t, test, depth_write, f.min_y, f.max_y + 1, best_raster_simd());
 }
 
 // ---- the faithful scan-line fill (classic edge walking) ---------------------------------

@@ -116,8 +116,7 @@ void fill_fast_bins_avx2(canvas_t &canvas, zbuffer &depth, const band_bin *bins,
             if (first >= end) return;
             if (f.wide < 0 && narrow_fits(f, canvas.width)) narrow_any<t.value>(canvas, depth, f, first, end);
             else
-                fill_fast_rows(canvas, &depth, f, f.wide >= 0 ? &bin.wide[f.wide] : nullptr, test, true, first, end,
-                               fill_kernel::sse2);
+                fill_fast_rows_base(canvas, &depth, f, f.wide >= 0 ? &bin.wide[f.wide] : nullptr, test, true, first, end);
         });
     });
 }

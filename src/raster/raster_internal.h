@@ -10,6 +10,7 @@
 #include <type_traits>
 
 #include "raster.h"
+#include "../kernels.h"
 #include "../simd_config.h"
 
 #ifdef TINY3D_SSE2
@@ -209,15 +210,14 @@ fast_setup setup_fast_triangle(const std::int32_t X[3], const std::int32_t Y[3],
 // (raster.h): portable (plain C++), SSE2 (every x86-64 CPU), AVX2 and AVX-512 for narrow
 // triangles (SSE2's for the others). Every one gives the same pixels as SSE2's; the
 // portable one differs from them in the last bits of depth and intensity.
+// Each set's kernels are in its kernel_table (src/kernels.h).
 using fill_kernel = raster_simd;
-// Whether this build runs kernel k on this CPU, and the fastest it does (as for the
-// multisample kernels, msaa.h).
-bool fill_kernel_runs(fill_kernel k);
-fill_kernel best_fill_kernel();
+// Whether this build runs kernel k on this CPU.
+inline bool fill_kernel_runs(fill_kernel k) { return kernels_run(k); }
 
 // Up to SETUP_BATCH triangles for setup_fast_batch, one lane each: the arguments of
 // setup_fast_triangle (snapped vertices, area2, depths, shades), lane by lane.
-inline constexpr int SETUP_BATCH = 8;
+inline constexpr int SETUP_BATCH = BATCH_LANES;
 struct setup_batch {
     alignas(64) std::int64_t area2[SETUP_BATCH] = {};
     alignas(32) std::int32_t X[3][SETUP_BATCH] = {}, Y[3][SETUP_BATCH] = {};
@@ -275,7 +275,7 @@ struct batch_lanes {
 // for bit and the same verdict — except that a triangle with a horizontal edge gets
 // fast_setup::scalar (rare: its rows are cut in integers; setup_fast_triangle does it).
 // Other kernels: every lane fast_setup::scalar. Lanes at and after in.count are left alone.
-inline bool batched_setup(fill_kernel kernel) { return kernel == fill_kernel::avx512 || kernel == fill_kernel::avx2; }
+inline bool batched_setup(fill_kernel kernel) { return kernels_for(kernel).setup_fast_batch != nullptr; }
 void setup_fast_batch(fill_kernel kernel, const setup_batch &in, pixel_rect clip, fast_setup verdict[SETUP_BATCH],
                       fast_triangle out[SETUP_BATCH]);
 #ifdef TINY3D_AVX512
@@ -291,6 +291,10 @@ void setup_fast_batch_avx2(const setup_batch &in, pixel_rect clip, fast_setup ve
 // `wide_edges` is the triangle's 64-bit edges when f.wide ≥ 0 (ignored otherwise).
 void fill_fast_rows(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, const triangle_edges *wide_edges,
                     depth_func test, bool depth_write, int y0, int y1, fill_kernel kernel);
+// The same with the build's rows kernel (SSE2's, or the portable one), which every table
+// uses for the triangles its narrow kernel does not take.
+void fill_fast_rows_base(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, const triangle_edges *wide_edges,
+                         depth_func test, bool depth_write, int y0, int y1);
 
 // The colour and depth lines of the band a thread draws next, brought into its cache a few
 // at a time while it draws the current band, so that the next band's clear finds them
@@ -397,10 +401,15 @@ inline void for_each_bin_triangle(const band_bin *bins, int bin_count, band_pref
 }
 
 // Draws rows [y0, y1) of every triangle of bins[0..bin_count) (none empty), bin after bin and
-// each in its order, with depth (the render context's band loop): fill_fast_rows for each,
-// the depth test and the kernel chosen once per band; ahead.step() after each triangle.
-void fill_fast_bins(canvas_t &canvas, zbuffer &depth, const band_bin *bins, int bin_count, depth_func test, int y0,
-                    int y1, fill_kernel kernel, band_prefetch &ahead);
+// each in its order, with depth (the render context's band loop, kernel_table::fill_fast_bins):
+// fill_fast_rows for each, the depth test chosen once per band; ahead.step() after each
+// triangle. The portable, SSE2, AVX2 and AVX-512 kernels.
+void fill_fast_bins_portable(canvas_t &canvas, zbuffer &depth, const band_bin *bins, int bin_count, depth_func test,
+                             int y0, int y1, band_prefetch &ahead);
+#ifdef TINY3D_SSE2
+void fill_fast_bins_sse2(canvas_t &canvas, zbuffer &depth, const band_bin *bins, int bin_count, depth_func test,
+                         int y0, int y1, band_prefetch &ahead);
+#endif
 
 // Triangles at most NARROW_WIDTH px wide whose groups of four from min_x stay inside the
 // canvas (`width`) are drawn by the narrow kernels: every row as the same groups, the lanes
@@ -411,7 +420,7 @@ inline bool narrow_fits(const fast_triangle &f, int width) {
 }
 
 #ifdef TINY3D_AVX2
-// fill_fast_bins with the AVX2 kernel for the narrow triangles (raster_fill_avx2.cpp: two
+// The AVX2 band kernel for the narrow triangles (raster_fill_avx2.cpp: two
 // groups of four per register; SSE2's for the others).
 void fill_fast_bins_avx2(canvas_t &canvas, zbuffer &depth, const band_bin *bins, int bin_count, depth_func test,
                          int y0, int y1, band_prefetch &ahead);
@@ -422,7 +431,7 @@ void fill_fast_bins_avx2(canvas_t &canvas, zbuffer &depth, const band_bin *bins,
 // [y0, y1) within f's.
 void fill_rows_narrow_avx512(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, depth_func test,
                              bool depth_write, int y0, int y1);
-// fill_fast_bins with the AVX-512 kernel for the narrow triangles (SSE2's for the others).
+// The AVX-512 band kernel for the narrow triangles (SSE2's for the others).
 void fill_fast_bins_avx512(canvas_t &canvas, zbuffer &depth, const band_bin *bins, int bin_count, depth_func test,
                            int y0, int y1, band_prefetch &ahead);
 #endif

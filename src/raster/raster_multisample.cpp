@@ -28,7 +28,7 @@ void render_context::impl::draw_multisampled_band(int band, sample_store &tile) 
     constexpr int DEPTH_TESTS = static_cast<int>(depth_func::always) + 1;  // (raster.h: never … always)
     msaa_row_fill fill_for[DEPTH_TESTS];
     for (int test = 0; test < DEPTH_TESTS; ++test)
-        fill_for[test] = msaa_fill_for(kernel, pattern->count, static_cast<depth_func>(test));
+        fill_for[test] = msaa_fill_for(kernels->simd, pattern->count, static_cast<depth_func>(test));
     constexpr int TRIANGLES_AHEAD = 6;
     struct cursor {  // an entry of the band's bins, in drawing order
         int number = 0;
@@ -66,7 +66,7 @@ void render_context::impl::draw_multisampled_band(int band, sample_store &tile) 
     }
     for (const generic_triangle &g : translucent)
         draw_generic_samples(tile, *pattern, clear_intensity, states[g.state], g, y0, y1);
-    tile.resolve(*target, depth, clear_intensity, kernel);
+    tile.resolve(*target, depth, clear_intensity, kernels->simd);
 }
 
 // Bands claimed by the threads, each in the order of its own affinity (render_bands.h): a

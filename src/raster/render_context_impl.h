@@ -82,7 +82,7 @@ struct render_context::impl {
     // band by band into a per-thread tile of samples and resolves it.
     const detail::sample_pattern *pattern = &detail::pattern_of(1);
     detail::sample_store tiles[detail::MAX_THREADS];
-    detail::fill_kernel kernel = detail::best_fill_kernel();  // every fill's instruction set (use_simd)
+    const detail::kernel_table *kernels = &detail::default_kernels();  // every fill's (use_simd)
     bool multisampled() const { return pattern->count > 1; }
 
     // One thread's transformed vertices. Aligned to a cache line of its own: the vector
