@@ -5,9 +5,9 @@
 #include <cstdlib>
 
 #include "lines/line_tabulated_internal.h"
-#include "raster/msaa.h"
-#include "raster/msaa_kernels.h"
-#include "raster/raster_internal.h"
+#include "raster/fill/fill.h"
+#include "raster/msaa/msaa_kernels.h"
+#include "raster/setup/setup.h"
 #include "simd_config.h"
 
 namespace tiny3d::detail {

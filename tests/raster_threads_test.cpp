@@ -34,9 +34,9 @@
 #include "mesh.h"
 #include "raster.h"
 #include "raster_test_util.h"
-#include "../src/raster/msaa.h"
-#include "../src/raster/raster_internal.h"
-#include "../src/raster/render_bands.h"
+#include "../src/raster/fill/fill.h"
+#include "../src/raster/msaa/msaa.h"
+#include "../src/raster/schedule/render_bands.h"
 #include "../src/simd_config.h"
 
 using namespace tiny3d;

@@ -12,7 +12,7 @@
 #include "mesh.h"
 #include "raster.h"
 #include "raster_test_util.h"
-#include "../src/raster/uv_derivatives.h"
+#include "../src/raster/texture/uv_derivatives.h"
 
 using namespace tiny3d;
 using raster_test::clip_quad;

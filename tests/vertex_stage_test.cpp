@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "../src/pipeline/project4.h"
-#include "../src/raster/msaa.h"
-#include "../src/raster/vertex_kernels_sse2.h"
-#include "../src/raster/vertex_transform.h"
+#include "../src/raster/msaa/msaa.h"
+#include "../src/raster/vertex/vertex_kernels_sse2.h"
+#include "../src/raster/vertex/vertex_transform.h"
 #include "harness.h"
 #include "../src/simd_config.h"
 

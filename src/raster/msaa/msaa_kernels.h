@@ -10,7 +10,7 @@
 #include <type_traits>
 
 #include "msaa.h"
-#include "../simd_config.h"
+#include "../../simd_config.h"
 
 namespace tiny3d::detail {
 

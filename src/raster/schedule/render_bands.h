@@ -18,7 +18,7 @@
 #include <limits>
 #include <vector>
 
-#include "../parallel/worker_pool.h"
+#include "../../parallel/worker_pool.h"
 
 namespace tiny3d::detail {
 

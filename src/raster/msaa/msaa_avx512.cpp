@@ -16,13 +16,13 @@
 #include <cstring>
 
 #include "msaa_kernels.h"
-#include "../simd_config.h"
+#include "../../simd_config.h"
 
 #ifdef TINY3D_AVX512
 #include <emmintrin.h>
 #include <immintrin.h>
 
-#include "../avx512_region_open.inc"
+#include "../../avx512_region_open.inc"
 
 namespace tiny3d::detail {
 namespace {
@@ -399,6 +399,6 @@ void resolve_blocks4_avx512(float *p, const std::uint8_t *touched0, const std::u
 
 }  // namespace tiny3d::detail
 
-#include "../avx512_region_close.inc"
+#include "../../avx512_region_close.inc"
 
 #endif  // TINY3D_AVX512

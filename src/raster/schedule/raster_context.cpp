@@ -10,7 +10,7 @@
 #include <string>
 
 #include "render_context_impl.h"
-#include "../simd_config.h"
+#include "../../simd_config.h"
 
 #ifdef TINY3D_SSE2
 #include <emmintrin.h>

@@ -1,6 +1,8 @@
-// texture_lod.h — the trilinear level of detail: the footprint shared by texture_lod (exact,
-// libm's log2) and the render context's per-pixel path (uv_derivatives::lod, with
-// fast_log2). Not installed.
+// texture_lod.h — the texture stage's level of detail (texture/: textures, mip chains,
+// lookups; in: uv and its screen derivatives, out: a filtered texel; called by the
+// per-pixel path, schedule/raster_pixel_path.cpp): the footprint shared by texture_lod
+// (exact, libm's log2) and the per-pixel path (uv_derivatives::lod, with fast_log2). Not
+// installed.
 #ifndef TINY3D_TEXTURE_LOD_H
 #define TINY3D_TEXTURE_LOD_H
 

@@ -1,6 +1,10 @@
-// render_context_impl.h — the render context's state (render_context::impl) and the
-// per-pixel path's triangle, shared by raster_context.cpp (the draw's steps) and
-// raster_pixel_path.cpp (Phong, textures, translucency). Not installed.
+// render_context_impl.h — the schedule stage (internal): the render context's state
+// (render_context::impl) and the per-pixel path's triangle. In: the program's draws
+// (raster.h). Out: the frame — each draw's vertices transformed (vertex/), its triangles set
+// up (setup/) in pieces shared by the threads and binned by band (render_bands.h), then
+// each band drawn by one thread through the context's kernel table (fill/, msaa/) or the
+// per-pixel path (raster_pixel_path.cpp: Phong, textures, translucency). Called by the
+// public render_context (raster_context.cpp, raster_multisample.cpp). Not installed.
 #ifndef TINY3D_RENDER_CONTEXT_IMPL_H
 #define TINY3D_RENDER_CONTEXT_IMPL_H
 
@@ -8,11 +12,12 @@
 #include <cstdint>
 #include <vector>
 
-#include "../parallel/worker_pool.h"
-#include "msaa.h"
-#include "raster_internal.h"
+#include "../../parallel/worker_pool.h"
+#include "../fill/fill.h"
+#include "../msaa/msaa.h"
+#include "../vertex/vertex_transform.h"
+#include "cluster_view.h"
 #include "render_bands.h"
-#include "vertex_transform.h"
 
 namespace tiny3d {
 

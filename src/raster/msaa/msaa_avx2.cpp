@@ -17,12 +17,12 @@
 #include <cstring>
 
 #include "msaa_kernels.h"
-#include "../simd_config.h"
+#include "../../simd_config.h"
 
 #ifdef TINY3D_AVX2
 #include <immintrin.h>
 
-#include "../avx2_region_open.inc"
+#include "../../avx2_region_open.inc"
 
 namespace tiny3d::detail {
 namespace {
@@ -236,6 +236,6 @@ msaa_row_fill fill_function_avx2(int samples, depth_func test) {
 
 }  // namespace tiny3d::detail
 
-#include "../avx512_region_close.inc"
+#include "../../avx512_region_close.inc"
 
 #endif  // TINY3D_AVX2

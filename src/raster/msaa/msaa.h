@@ -1,15 +1,20 @@
-// msaa.h — multisampled filled triangles for the render context: the sample patterns, the
-// per-sample colour and depth store, the per-triangle setup, the row fill (portable 64-bit
-// kernel and the SSE2 32-bit kernel beside it) and the box resolve. Not installed; the
-// contract is in raster.h (render_context::begin_frame) and documentation/antialias.md.
+// msaa.h — the multisample stage (internal). In: a multisampled frame's triangles (the
+// scalar set-up here, make_msaa_triangle; the batches in setup/) and a band's rows. Out:
+// per-sample colour and depth in a band's tile (sample_store), resolved into the canvas
+// and the depth buffer. Here: the sample patterns, the store, the per-triangle setup, the
+// row fill (portable 64-bit kernel, SSE2 32-bit beside it; AVX2 and AVX-512 in their files)
+// and the box resolve, chosen through the kernel table. Called by the schedule's
+// multisampled band loop (schedule/raster_multisample.cpp). The contract is in raster.h
+// (render_context::begin_frame) and documentation/antialias.md.
 #ifndef TINY3D_MSAA_H
 #define TINY3D_MSAA_H
 
 #include <cstdint>
 #include <vector>
 
-#include "raster_internal.h"
-#include "../simd_config.h"
+#include "../fill/fill.h"
+#include "../setup/setup.h"
+#include "../../simd_config.h"
 
 namespace tiny3d::detail {
 

@@ -2,7 +2,7 @@
 // x16): draw() sets up and bins every draw's triangles (raster_context.cpp, with the
 // pattern's sample rows), and end_frame() draws the frame band by band, each band into a
 // per-thread tile of samples that stays in cache, then resolves the tile into the canvas
-// and the depth buffer. The kernels are in msaa.cpp.
+// and the depth buffer. The kernels are in msaa/.
 #include "render_context_impl.h"
 
 namespace tiny3d {

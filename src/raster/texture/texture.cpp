@@ -4,7 +4,7 @@
 
 #include "raster.h"
 #include "texture_lod.h"
-#include "../canvas/splat.h"  // floor_to_int
+#include "../../canvas/splat.h"  // floor_to_int
 
 namespace tiny3d {
 

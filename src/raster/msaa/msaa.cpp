@@ -9,7 +9,7 @@
 #include <numeric>
 #include <string>
 
-#include "../simd_config.h"
+#include "../../simd_config.h"
 
 #ifdef TINY3D_SSE2
 #include <emmintrin.h>
