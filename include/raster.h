@@ -442,7 +442,7 @@ private:
     std::unique_ptr<impl> impl_;
 };
 
-// ---- the reference image (src/raster/raster_reference.cpp) ----------------------------
+// ---- the reference image (src/raster/reference/raster_reference.cpp) ------------------
 //
 // The converged image of a filled scene: the yardstick every anti-aliasing mode and texture
 // filter of the render context is measured against (tests/antialias_test.cpp,

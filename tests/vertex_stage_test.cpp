@@ -1,7 +1,7 @@
 // vertex_stage_test.cpp — the vertex stage's SIMD kernels against their portable references,
 // bit for bit, on ordinary, extreme and non-finite points: the 4-wide projection both
 // pipelines use (src/pipeline/project4.h) against clip_outcode and clip_to_screen, and the
-// render context's vertex kernels (src/raster/vertex_kernels_sse2.h) against
+// render context's vertex kernels (src/raster/vertex/vertex_kernels_sse2.h) against
 // vertex_transform.h's.
 #include <cstring>
 #include <random>
