@@ -40,8 +40,9 @@ constexpr kernel_table AVX512 = {
     raster_simd::avx512, "avx512", line_simd::avx512, setup_fast_batch_avx512, setup_msaa_batch_avx512,
     fill_fast_bins_avx512, fill_rows_narrow_avx512, fill_function_avx512, true, true, resolve_blocks4_avx512};
 #else
+// (Its 4-sample tiles keep the block layout: a layout, which every kernel reads.)
 constexpr kernel_table AVX512 = {raster_simd::avx512, "avx512", SSE2.lines, nullptr, nullptr, SSE2.fill_fast_bins,
-                                 nullptr, SSE2.msaa_fill, false, SSE2.resolve_rows_simd, nullptr};
+                                 nullptr, SSE2.msaa_fill, true, SSE2.resolve_rows_simd, nullptr};
 #endif
 
 constexpr line_kernels LINES_PORTABLE = {tabulated::draw_portable, nullptr, nullptr};
