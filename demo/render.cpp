@@ -178,6 +178,12 @@ int print_info(const settings &s, const tiny3d::loaded_mesh &loaded) {
     std::printf("warnings   %s\n", warnings == 0 ? "none" : std::to_string(warnings).c_str());
     for (const tiny3d::load_warning &w : loaded.warnings) std::printf("  %s\n", w.message().c_str());
     if (loaded.warnings_not_listed > 0) std::printf("  (%zu more not listed)\n", loaded.warnings_not_listed);
+    const tiny3d::raster_simd_choice kernels = tiny3d::default_raster_simd();
+    std::printf("kernels: %s", tiny3d::raster_simd_name(kernels.simd));
+    if (!kernels.requested.empty() && !kernels.honoured)
+        std::printf(" (TINY3D_KERNELS=%s: not an instruction set this CPU runs; the best one instead)",
+                    kernels.requested.c_str());
+    std::printf("\n");
     return 0;
 }
 

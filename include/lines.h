@@ -125,7 +125,9 @@ enum class line_simd {
     sse2,      // 4 pixels at a time (every x86-64 CPU)
     avx512     // 16 pixels at a time (AVX-512 F/VL/DQ/BW; blocks of 4 × 4, i.e. thickness < 1.8)
 };
-// The best of them this CPU runs (CPUID, read by the compiler's runtime).
+// The best of them this CPU runs (CPUID, read by the compiler's runtime), or the line
+// kernels of the table TINY3D_KERNELS names (raster.h, best_raster_simd: sse2 and avx2 draw
+// lines with sse2).
 line_simd best_line_simd();
 
 // End-correction table for draw_line_tabulated. A pixel near an end of a stroke gets

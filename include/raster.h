@@ -384,9 +384,22 @@ enum class raster_simd {
                // triangle per register; 1×, 4×, 8×: triangles set up eight at a time
                // (AVX-512 F/VL/DQ/BW)
 };
-// The best of them this CPU runs (CPUID, read by the compiler's runtime); what a render
-// context starts with.
+// What a render context starts with: the best of them this CPU runs (CPUID, read by the
+// compiler's runtime), unless the environment variable TINY3D_KERNELS names one this CPU
+// runs ("portable", "sse2", "avx2" or "avx512"; for tests and benchmarks). Chosen once,
+// when the process first asks; the line kernels (lines.h, best_line_simd) follow it.
 raster_simd best_raster_simd();
+// "portable", "sse2", "avx2" or "avx512".
+const char *raster_simd_name(raster_simd simd);
+// How best_raster_simd() was chosen: `requested` is TINY3D_KERNELS (empty when unset) and
+// `honoured` false when it was set but named no instruction set this CPU runs (unknown, or
+// not run here: the best one is used instead, never an error).
+struct raster_simd_choice {
+    raster_simd simd;
+    std::string requested;
+    bool honoured;
+};
+raster_simd_choice default_raster_simd();
 // The names these had when they chose the multisampled frames' kernels only.
 using multisample_simd = raster_simd;
 inline multisample_simd best_multisample_simd() { return best_raster_simd(); }
@@ -400,10 +413,8 @@ inline multisample_simd best_multisample_simd() { return best_raster_simd(); }
 // it drew in the frame before, then those holding most of its own triangles, first), each
 // band drawn by one thread piece after piece in submission order, so the image (and the
 // stats) are identical for any thread count (documentation/raster.md, "Threads and
-// buffers"). On several threads, 1-sample frames time their draws: each period of 128 such
-// frames starts with 4 frames storing the triangles meant for another core with streaming
-// stores and 4 without, and runs the rest the faster way (which way changes the speed
-// only, never a pixel).
+// buffers"). A frame's work depends on its counts only (triangles, bands, threads), never
+// on a clock.
 // No allocation per frame once buffers have grown to the scene's size.
 class render_context {
 public:
@@ -447,13 +458,22 @@ public:
     bool use_simd(raster_simd simd);
     multisample_simd multisample_simd_in_use() const { return simd_in_use(); }  // the older names
     bool use_multisample_simd(multisample_simd simd) { return use_simd(simd); }
+    // Whether 1-sample frames on several threads store the triangles a thread sets up for
+    // bands another thread is likely to draw with streaming (non-temporal) stores. Off by
+    // default. Streaming spares the drawing core the wait for cache lines another core
+    // wrote, which pays where the two cores have separate caches and costs a trip to memory
+    // where they share one (documentation/raster.md, "Threads and buffers"). Changes the
+    // speed only, never a pixel. use_streaming_stores returns false, changing nothing,
+    // between begin_frame and end_frame.
+    bool use_streaming_stores(bool on);
+    bool streaming_stores() const;
 
 private:
     struct impl;
     std::unique_ptr<impl> impl_;
 };
 
-// ---- the reference image (src/raster/raster_reference.cpp) ----------------------------
+// ---- the reference image (src/raster/reference/raster_reference.cpp) ------------------
 //
 // The converged image of a filled scene: the yardstick every anti-aliasing mode and texture
 // filter of the render context is measured against (tests/antialias_test.cpp,

@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "../src/raster/msaa.h"
+#include "../src/raster/msaa/msaa.h"
 #include "alloc_tracker.h"
 #include "harness.h"
 #include "canvas.h"

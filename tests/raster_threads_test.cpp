@@ -34,9 +34,9 @@
 #include "mesh.h"
 #include "raster.h"
 #include "raster_test_util.h"
-#include "../src/raster/msaa.h"
-#include "../src/raster/raster_internal.h"
-#include "../src/raster/render_bands.h"
+#include "../src/raster/fill/fill.h"
+#include "../src/raster/msaa/msaa.h"
+#include "../src/raster/schedule/render_bands.h"
 #include "../src/simd_config.h"
 
 using namespace tiny3d;
@@ -156,12 +156,11 @@ TEST(every_thread_count_from_1_to_16_gives_the_one_thread_frame) {
     }
 }
 
-// A context kept over frames: in the first stream_choice trial a thread's set-up streams the
-// triangles it expects another thread to draw (every one in its first frame, those reaching
-// bands it did not draw last frame after that), and the band kernels read them from that
-// list; in the second trial nothing is streamed; then whichever this machine ran faster.
-// Scene S turning, on 2, 3 and 5 threads with every 1-sample kernel this CPU runs: every
-// frame is the one-thread frame bit for bit.
+// A context kept over frames, with streaming stores on and off: streaming, a thread's set-up
+// streams the triangles it expects another thread to draw (every one in its first frame,
+// those reaching bands it did not draw last frame after that), and the band kernels read
+// them from that list; not streaming, nothing is. Scene S turning, on 2, 3 and 5 threads
+// with every 1-sample kernel this CPU runs: every frame is the one-thread frame bit for bit.
 TEST(frames_of_a_kept_context_give_the_one_thread_frame_with_every_kernel) {
     canvas_ptr c = make_canvas(192, 160).value();
     const raster_mesh sphere = smooth_raster_mesh(make_icosphere(4));
@@ -169,50 +168,29 @@ TEST(frames_of_a_kept_context_give_the_one_thread_frame_with_every_kernel) {
     int compared = 0;
     for (raster_simd simd : {raster_simd::portable, raster_simd::sse2, raster_simd::avx2, raster_simd::avx512}) {
         if (!detail::fill_kernel_runs(simd)) continue;
-        for (int threads : {2, 3, 5}) {
+        for (int threads : {2, 3, 5})
+        for (bool streaming : {true, false}) {
             render_context ctx(threads);
             CHECK(ctx.use_simd(simd));
-            for (int frame = 0; frame < 2 * detail::stream_choice::TRIAL + 2; ++frame) {
+            CHECK(!ctx.streaming_stores());
+            CHECK(ctx.use_streaming_stores(streaming));
+            CHECK_EQ(ctx.streaming_stores(), streaming);
+            for (int frame = 0; frame < 4; ++frame) {
                 draw_params p = scene_s_params(0.4f * static_cast<float>(frame));
                 p.clusters = frame % 2 ? &clusters : nullptr;
                 const rendered one = render(1, *c, {{&sphere, p}}, sample_count::x1, simd);
                 CHECK(ctx.begin_frame(*c, 0.05f, sample_count::x1).ok());
+                CHECK(!ctx.use_streaming_stores(!streaming));  // (not during a frame)
                 ctx.draw(sphere, p);
                 ctx.end_frame();
                 CHECK_MSG(same(raster_test::capture(ctx, *c), one),
-                          std::to_string(threads) + " threads, frame " + std::to_string(frame));
+                          std::to_string(threads) + " threads, frame " + std::to_string(frame) +
+                              (streaming ? ", streaming" : ""));
                 ++compared;
             }
         }
     }
-    CHECK(compared >= 30);  // (the portable kernel at least: the only one of a portable build)
-}
-
-// The choice to stream: a trial of TRIAL frames streaming and TRIAL not, each option timed
-// by the least of its runs' frames after the first, the faster one kept until the period
-// ends, then a new trial; slower frames (a system interruption) do not change a choice.
-TEST(stream_choice_keeps_the_option_its_trial_found_faster) {
-    using detail::stream_choice;
-    constexpr int T = stream_choice::TRIAL;
-    // seconds(streaming) gives the frame's time under either option.
-    auto run_period = [](stream_choice &c, auto &&seconds, std::vector<bool> &streamed) {
-        streamed.clear();
-        for (int f = 0; f < stream_choice::PERIOD; ++f) {
-            streamed.push_back(c.streaming());
-            c.frame_done(seconds(c.streaming(), f));
-        }
-    };
-    std::vector<bool> streamed;
-    stream_choice c;
-    // Streaming slower (every frame, first ones of each run the slowest): not streamed after the trial.
-    run_period(c, [](bool on, int f) { return (on ? 2.0e-3 : 1.5e-3) + (f % T == 0 ? 1.0e-3 : 0.0); }, streamed);
-    for (int f = 0; f < stream_choice::PERIOD; ++f) CHECK_EQ(streamed[f], f < T);
-    // Next period: streaming now faster; one slow streaming frame (interrupted) does not count.
-    run_period(c, [](bool on, int f) { return (on ? 1.0e-3 : 1.5e-3) + (f == 2 ? 5.0e-3 : 0.0); }, streamed);
-    for (int f = 0; f < stream_choice::PERIOD; ++f) CHECK_EQ(streamed[f], f < T || f >= 2 * T);
-    // The first frame of each run is not counted: only there is the option that lost faster.
-    run_period(c, [](bool on, int f) { return f % T == 0 ? (on ? 0.1e-3 : 9.0e-3) : (on ? 2.0e-3 : 1.0e-3); }, streamed);
-    for (int f = 0; f < stream_choice::PERIOD; ++f) CHECK_EQ(streamed[f], f < T);
+    CHECK(compared >= 24);  // (the portable kernel at least: the only one of a portable build)
 }
 
 // The streamed list keeps what was appended, in order, across its growths and a reserve,

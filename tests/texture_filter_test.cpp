@@ -14,7 +14,7 @@
 #include "raster.h"
 #include "raster_test_util.h"
 #include "grazing_plane.h"
-#include "../src/raster/uv_derivatives.h"
+#include "../src/raster/texture/uv_derivatives.h"
 
 using namespace tiny3d;
 using raster_test::clip_quad;

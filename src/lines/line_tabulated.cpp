@@ -29,7 +29,7 @@
 #include <string>
 
 #include "line_tabulated_internal.h"
-#include "../simd_config.h"
+#include "../kernels.h"
 
 namespace tiny3d {
 using namespace tabulated;
@@ -138,17 +138,6 @@ void build_stamps(line_table &t, double reach, float thickness, line_cap cap) {
 
 }  // namespace
 
-line_simd best_line_simd() {
-#ifdef TINY3D_AVX512
-    if (detail::cpu_has_avx512()) return line_simd::avx512;
-#endif
-#ifdef TINY3D_SSE2
-    return line_simd::sse2;
-#else
-    return line_simd::portable;
-#endif
-}
-
 result<line_table> line_table::make(float thickness, line_cap cap) {
     if (!std::isfinite(thickness) || !(thickness > 0.0f) || thickness > kMaxThickness)
         return error{"", 0, -1,
@@ -165,7 +154,7 @@ result<line_table> line_table::make(float thickness, line_cap cap) {
 }
 
 bool line_table::use_simd(line_simd simd) {
-    if (int(simd) > int(best_line_simd())) return false;
+    if (!detail::line_kernels_run(simd)) return false;
     simd_ = simd;
     return true;
 }
@@ -232,12 +221,9 @@ void draw_prepared(canvas_t *canvas, stroke_kind kind, const stroke_setup &s, co
         return;
     }
     if (kind != stroke_kind::tabulated) return;
-#ifdef TINY3D_AVX512
-    if (table.simd() == line_simd::avx512 && table.stamp_size == 4) return draw_batch_avx512(canvas, &s, 1, table);
-#endif
-#ifdef TINY3D_SSE2
-    if (table.simd() != line_simd::portable && canvas->width >= 4) return draw_sse2(canvas, s, table);
-#endif
+    const detail::line_kernels &k = detail::line_kernels_for(table.simd());
+    if (k.draw_batch && table.stamp_size == 4) return k.draw_batch(canvas, &s, 1, table);
+    if (canvas->width >= 4) return k.draw_one(canvas, s, table);
     draw_portable(canvas, s, table);
 }
 
@@ -253,15 +239,14 @@ void draw_lines_tabulated(canvas_t *canvas, const line_segment *segments, std::s
     if (!segments) return;
     stroke_setup strokes[kBatch];
     stroke_kind kinds[kBatch];
+    const detail::line_kernels &k = detail::line_kernels_for(table.simd());
+    const bool batched = k.draw_batch && table.stamp_size == 4;
     for (std::size_t start = 0; start < count; start += kBatch) {
         const int n = int(std::min<std::size_t>(kBatch, count - start));
         bool all_wide = true;
         unsigned ready = 0;  // set up by the vector code
-#ifdef TINY3D_AVX512
-        if (table.simd() == line_simd::avx512 && table.stamp_size == 4 && canvas && canvas->data && canvas->width > 0 &&
-            canvas->height > 0)
-            ready = prepare8_avx512(*canvas, segments + start, n, table, strokes);
-#endif
+        if (batched && canvas && canvas->data && canvas->width > 0 && canvas->height > 0)
+            ready = k.prepare8(*canvas, segments + start, n, table, strokes);
         for (int i = 0; i < n; ++i) {
             if (ready >> i & 1) {
                 kinds[i] = stroke_kind::tabulated;
@@ -271,12 +256,10 @@ void draw_lines_tabulated(canvas_t *canvas, const line_segment *segments, std::s
             kinds[i] = prepare_stroke(canvas, g.x0, g.y0, g.x1, g.y1, table, g.intensity, strokes[i]);
             all_wide = all_wide && kinds[i] == stroke_kind::tabulated;
         }
-#ifdef TINY3D_AVX512
-        if (all_wide && table.simd() == line_simd::avx512 && table.stamp_size == 4) {
-            draw_batch_avx512(canvas, strokes, n, table);
+        if (all_wide && batched) {
+            k.draw_batch(canvas, strokes, n, table);
             continue;
         }
-#endif
         for (int i = 0; i < n; ++i) draw_prepared(canvas, kinds[i], strokes[i], table);
     }
 }

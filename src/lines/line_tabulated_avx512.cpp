@@ -6,7 +6,7 @@
 // by a per-file -mavx512f: the headers are included before the region opens, so their
 // inline functions and templates stay baseline x86-64 (an AVX-512 copy of a shared inline
 // function could otherwise be the one the linker keeps, and crash CPUs without it). Run
-// only on CPUs that have it (best_line_simd). Nothing defined here is called from outside
+// only on CPUs that have it (line_kernels_run, src/kernels.cpp). Nothing defined here is called from outside
 // but draw_batch_avx512 and prepare8_avx512 (pointer and int arguments only). No FMA
 // contraction: the same arithmetic as the SSE2 path, rounding step by step.
 #include <algorithm>

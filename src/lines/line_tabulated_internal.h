@@ -193,8 +193,8 @@ struct end_source {
 };
 
 // The end at (px, py) whose stroke leaves it in direction (ex, ey) (unit). Static: each
-// kernel file keeps its own copy, which GCC then compiles with its callers in view
-// (~1 % fewer instructions in the SSE2 kernel than one shared out-of-line copy).
+// kernel file keeps its own copy, which GCC then compiles with its callers in view (the
+// flips and the swap fold into the caller's arithmetic instead of a call's stores).
 static inline end_source locate_end(const line_table &t, double px, double py, double ex, double ey) {
     end_source e;
     e.flip_x = ex < 0.0;
@@ -258,7 +258,7 @@ void draw_portable(canvas_t *canvas, const stroke_setup &s, const line_table &ta
 void draw_sse2(canvas_t *canvas, const stroke_setup &s, const line_table &table);
 #endif
 #ifdef TINY3D_AVX512
-// AVX-512 (line_simd::avx512: only on CPUs best_line_simd() reports it for; tables with
+// AVX-512 (line_simd::avx512: only on CPUs line_kernels_run() reports it for; tables with
 // 4 × 4 blocks). draw_batch_avx512 draws `count` (≤ kBatch) prepared strokes in order;
 // prepare8_avx512 sets up prepare_stroke's common case for n ≤ kBatch segments at once,
 // with the arithmetic prepare_stroke uses (stroke_math.inc, on eight lanes), so bit for

@@ -1,15 +1,11 @@
 // vector.cpp — lengths, the three normalisations, the spherical form.
 //
-// Normalisation variants, measured by tests/bench/normalize (x86-64, g++ 12 -O2, one
-// out-of-line call per vector over 4096 vectors of scale 2^±20, medians of 31 runs, three
-// runs on a shared machine; error = max over components of |computed − exact unit
-// vector|, i.e. relative to the length, over 10⁶ vectors):
-//   Quake 0x5f3759df + 1 Newton step (the report's)     3.1–3.4 ns  1.75e-3
-//   1/std::sqrt in float (vec3_normalize_fast_accurate)  0.91–0.96× Quake  1.66e-7  ← chosen
-//   double sqrt and divide (vec3_normalize, exact)       1.2× Quake  2.98e-8
-//   rsqrtss + 1 Newton step (bench-only candidate)       0.8× Quake  2.04e-7  over the 2e-7 bound
-//   rsqrtss + 2nd-order correction (candidate)           0.91–0.97× Quake  1.67e-7
-// sqrtss + divss cost no more than the integer trick on current x86 cores (its moves
+// Normalisation variants compared by tests/bench/normalize (speed and error = max over
+// components of |computed − exact unit vector|; the figures are in
+// documentation/benchmarks.md): Quake's 0x5f3759df + 1 Newton step (the report's, error
+// ~1.7e-3), 1/std::sqrt in float (vec3_normalize_fast_accurate, ~1.7e-7, the choice),
+// double sqrt and divide (vec3_normalize, exact), rsqrtss + 1 Newton step (~2e-7, over the
+// 2e-7 bound) and rsqrtss + a 2nd-order correction (~1.7e-7). sqrtss + divss cost no more than the integer trick on current x86 cores (its moves
 // between integer and float registers are not free). 1/sqrtf ties with the best rsqrtss
 // candidate and keeps its bound on every IEEE machine (sqrt and division are correctly
 // rounded, while rsqrtss's precision differs between CPU vendors), so it is the choice.

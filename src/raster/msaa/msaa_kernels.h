@@ -10,7 +10,7 @@
 #include <type_traits>
 
 #include "msaa.h"
-#include "../simd_config.h"
+#include "../../simd_config.h"
 
 namespace tiny3d::detail {
 
@@ -22,7 +22,7 @@ struct edge_extremes {
     // columns [lo_x, hi_x] (relative to min_x) where some sample could pass every edge.
     // False when that span is empty. Int: std::int64_t, or std::int32_t when f.narrow (the
     // best sample's value at column 0 lies where narrow bounds every edge value, below
-    // 2^31 − 2^24, and |a| < 2^19; 32-bit divisions made Scene S's 16× frame 9 % faster).
+    // 2^31 − 2^24, and |a| < 2^19; a 32-bit division has a fraction of a 64-bit one's latency).
     template <class Int>
     bool row(const msaa_triangle &f, int y, Int e[3], int &lo_x, int &hi_x) const {
         Int first = 0, last = static_cast<Int>(f.max_x - f.min_x);
@@ -91,8 +91,14 @@ msaa_row_fill fill_function(int samples, depth_func test, Choose &&choose) {
     return chosen;
 }
 
+#ifdef TINY3D_SSE2
+// msaa_fill_for's SSE2 functions (samples 4, 8 or 16): the SSE2 kernel where f is
+// chunkable, else the portable one.
+msaa_row_fill msaa_fill_sse2(int samples, depth_func test);
+#endif
+
 #ifdef TINY3D_AVX2
-// msaa_fill_for's AVX2 functions (msaa_kernel::avx2; only on CPUs best_fill_kernel() reports
+// msaa_fill_for's AVX2 functions (msaa_kernel::avx2; only on CPUs kernels_run() reports
 // it for, or avx512), samples 4, 8 or 16, test not never: the AVX2 kernel where f is narrow,
 // the SSE2 functions otherwise. The same integer tests and float operations as the portable
 // kernel.
@@ -100,7 +106,7 @@ msaa_row_fill fill_function_avx2(int samples, depth_func test);
 #endif
 
 #ifdef TINY3D_AVX512
-// msaa_fill_for's AVX-512 functions (msaa_kernel::avx512; only on CPUs best_fill_kernel()
+// msaa_fill_for's AVX-512 functions (msaa_kernel::avx512; only on CPUs kernels_run()
 // reports it for), samples 4, 8 or 16, test not never: the AVX-512 kernels where f is
 // chunkable, the portable one otherwise. The same integer tests and float operations as the
 // portable kernel.

@@ -1,20 +1,24 @@
-// render_context_impl.h — the render context's state (render_context::impl) and the
-// per-pixel path's triangle, shared by raster_context.cpp (the draw's steps) and
-// raster_pixel_path.cpp (Phong, textures, translucency). Not installed.
+// render_context_impl.h — the schedule stage (internal): the render context's state
+// (render_context::impl) and the per-pixel path's triangle. In: the program's draws
+// (raster.h). Out: the frame — each draw's vertices transformed (vertex/), its triangles set
+// up (setup/) in pieces shared by the threads and binned by band (render_bands.h), then
+// each band drawn by one thread through the context's kernel table (fill/, msaa/) or the
+// per-pixel path (raster_pixel_path.cpp: Phong, textures, translucency). Called by the
+// public render_context (raster_context.cpp, raster_multisample.cpp). Not installed.
 #ifndef TINY3D_RENDER_CONTEXT_IMPL_H
 #define TINY3D_RENDER_CONTEXT_IMPL_H
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <cstdint>
 #include <vector>
 
-#include "../parallel/worker_pool.h"
-#include "msaa.h"
-#include "raster_internal.h"
+#include "../../parallel/worker_pool.h"
+#include "../fill/fill.h"
+#include "../msaa/msaa.h"
+#include "../vertex/vertex_transform.h"
+#include "cluster_view.h"
 #include "render_bands.h"
-#include "vertex_transform.h"
 
 namespace tiny3d {
 
@@ -49,10 +53,10 @@ void draw_generic_samples(sample_store &tile, const sample_pattern &pat, float c
 
 // Multisampled frames: bands of band_rows(samples) rows, so that one band's samples (8 ·
 // samples bytes per pixel) stay in the core's caches while every triangle reaching it is
-// drawn, and few triangles straddle two bands: 16 rows at 8× and 16× (measured faster than
-// 8 on Scene S), 32 at 4× (1 MB of samples at 1024 px wide; against 16 rows: Scene S level
-// 6 −3 to −6 % on one thread, −4 % on two; at 8× and 16× within the noise). In every
-// frame, a band bin entry with GENERIC_BIN set names a per-pixel-path triangle.
+// drawn, and few triangles straddle two bands: 16 rows at 8× and 16× (a band of 16 rows at
+// 16 samples is 2 MB at 1024 px wide), 32 at 4× (1 MB: still within a core's L2, with half
+// the triangles straddling a band edge that 16 rows would have; documentation/benchmarks.md).
+// In every frame, a band bin entry with GENERIC_BIN set names a per-pixel-path triangle.
 inline constexpr int MSAA_BAND_ROWS = 16;
 inline constexpr int band_rows(int samples) { return samples == 1 || samples == 4 ? BAND_ROWS : MSAA_BAND_ROWS; }
 inline constexpr std::uint32_t GENERIC_BIN = 1u << 31;
@@ -84,7 +88,7 @@ struct render_context::impl {
     // band by band into a per-thread tile of samples and resolves it.
     const detail::sample_pattern *pattern = &detail::pattern_of(1);
     detail::sample_store tiles[detail::MAX_THREADS];
-    detail::fill_kernel kernel = detail::best_fill_kernel();  // every fill's instruction set (use_simd)
+    const detail::kernel_table *kernels = &detail::default_kernels();  // every fill's (use_simd)
     bool multisampled() const { return pattern->count > 1; }
 
     // One thread's transformed vertices. Aligned to a cache line of its own: the vector
@@ -123,10 +127,10 @@ struct render_context::impl {
         std::vector<detail::fast_triangle> fast;
         // The fast triangles reaching a band that another thread drew in the setting-up
         // thread's last band phase: likely drawn by that thread again, so streamed
-        // (detail::streamed_triangles) when the frame streams (stream_choice); their bin
+        // (detail::streamed_triangles) when streaming is on (use_streaming_stores); their bin
         // entries carry FAR_ENTRY.
         detail::streamed_triangles far;
-        // While set up: band_affinity::drew, or null (none far: one thread, or stream_choice says no).
+        // While set up: band_affinity::drew, or null (none far: one thread, or streaming off).
         const std::uint8_t *near_bands = nullptr;
         std::vector<detail::msaa_triangle> msaa;  // instead of `fast` in multisampled frames
         std::vector<triangle_edges> wide;
@@ -143,8 +147,7 @@ struct render_context::impl {
     detail::band_layout bands;
     detail::phase_counters counters;
     detail::band_affinity affinity[detail::MAX_THREADS];  // per thread, for the bands it claims
-    detail::stream_choice streaming;  // whether this frame's set-up streams (several threads, one sample)
-    double phase_seconds = 0.0;       // this frame's draws' parallel phases so far (measured frames)
+    bool streaming = false;  // render_context::use_streaming_stores (several threads, one sample)
     // Memory ran out in the current draw (set by any thread), and the frame's first failure.
     std::atomic<bool> out_of_memory{false};
     status failure;
@@ -184,7 +187,7 @@ struct render_context::impl {
     // Appends a set-up fast triangle — to out.fast, or streamed to out.far when a band it
     // covers was drawn by another thread last time (piece::near_bands) — and puts it into
     // the bins of the bands it covers. Out of line, so that the vector appends inline here
-    // (in the large set-up loop they were calls: +0.7 % instructions for Scene S level 6).
+    // (inside the large set-up loop GCC's inliner gives up and calls them).
     [[gnu::noinline]] void bin_fast(const detail::fast_triangle &f, piece &out) {
         const int first = bands.of(f.min_y), last = bands.of(f.max_y);
         const bool near = !out.near_bands || std::all_of(out.near_bands + first, out.near_bands + last + 1,
@@ -203,8 +206,8 @@ struct render_context::impl {
     [[gnu::always_inline]] void bin_rows(int y0, int y1, std::uint32_t index, piece &out) {
         bin_bands(bands.of(y0), bands.of(y1), index, out);
     }
-    // The same for bands [first, last] (inclusive). Inlined: called out of line from bin_fast
-    // it cost 0.4 % more instructions.
+    // The same for bands [first, last] (inclusive). Inlined: a call would spill bin_fast's
+    // live values around it.
     [[gnu::always_inline]] void bin_bands(int first, int last, std::uint32_t index, piece &out) {
         for (int b = first; b <= last; ++b) out.bins[b].push_back(index);
     }

@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "render_context_impl.h"
-#include "uv_derivatives.h"
+#include "../texture/uv_derivatives.h"
 
 namespace tiny3d::detail {
 

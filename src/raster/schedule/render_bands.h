@@ -18,7 +18,7 @@
 #include <limits>
 #include <vector>
 
-#include "../parallel/worker_pool.h"
+#include "../../parallel/worker_pool.h"
 
 namespace tiny3d::detail {
 
@@ -103,42 +103,6 @@ struct alignas(CACHE_LINE) band_affinity {
             });
         cursor = 0;
     }
-};
-
-// Whether the threads stream the triangles they set up for bands another thread is likely
-// to draw (streamed_triangles, render_context_impl.h), decided by measuring both ways on
-// this machine: streaming saves a core the wait for lines another core read, which is long
-// when the two cores have separate caches, and costs a trip to memory where they share one
-// (Scene S level 6, two threads, on a 2-vCPU AMD EPYC VM whose vCPUs share an L3 cache in
-// some hours and not in others: −15 to −20 % in the first kind of hour, +7 % in the second).
-// Each period of PERIOD measured frames starts with a trial: TRIAL frames streaming, TRIAL
-// not, each option's time the least of its last TRIAL − 1 frames (the first of each run
-// still pays for the other option's stores; the least: a frame the system interrupted does
-// not count); the faster option is used until the period ends. Only frames drawn on
-// several threads with one sample are measured (the others never stream). Which option
-// runs changes no pixel; the images do not depend on it.
-class stream_choice {
-public:
-    static constexpr int TRIAL = 4;
-    static constexpr int PERIOD = 128;
-    // Whether the frame being drawn streams.
-    bool streaming() const { return frame_ < TRIAL || (frame_ >= 2 * TRIAL && chosen_); }
-    // A measured frame is done: its draws' parallel phases took `seconds` in all, with
-    // streaming() as it was during the frame.
-    void frame_done(double seconds) {
-        if (frame_ < 2 * TRIAL && frame_ % TRIAL != 0) {
-            double &best = trial_[frame_ < TRIAL ? 1 : 0];
-            best = std::min(best, seconds);
-        }
-        if (frame_ == 2 * TRIAL - 1) chosen_ = trial_[1] < trial_[0];
-        if (++frame_ == PERIOD) frame_ = 0, trial_[0] = trial_[1] = NOT_TIMED;
-    }
-
-private:
-    static constexpr double NOT_TIMED = std::numeric_limits<double>::infinity();
-    int frame_ = 0;                              // position in the period
-    double trial_[2] = {NOT_TIMED, NOT_TIMED};  // least trial time: [0] not streaming, [1] streaming
-    bool chosen_ = true;
 };
 
 // The shared state of one draw's phase, each on a cache line of its own: the pieces dealt

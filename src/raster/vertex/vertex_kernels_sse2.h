@@ -6,14 +6,14 @@
 #ifndef TINY3D_VERTEX_KERNELS_SSE2_H
 #define TINY3D_VERTEX_KERNELS_SSE2_H
 
-#include "../simd_config.h"
+#include "../../simd_config.h"
 
 #ifdef TINY3D_SSE2
 #include <emmintrin.h>
 
 #include <limits>
 
-#include "../pipeline/project4.h"
+#include "../../pipeline/project4.h"
 #include "vertex_transform.h"
 
 namespace tiny3d::detail {

@@ -9,20 +9,20 @@
 // Compiled for AVX-512 inside the target region of avx512_region_open.inc (as
 // line_tabulated_avx512.cpp is): the headers are included before the region opens, so
 // their inline functions stay baseline x86-64. Run only on CPUs that have it
-// (best_fill_kernel). No FMA contraction: the portable kernel's float operations, rounded
+// (kernels_run, src/kernels.cpp). No FMA contraction: the portable kernel's float operations, rounded
 // step by step, lane by lane.
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
 
 #include "msaa_kernels.h"
-#include "../simd_config.h"
+#include "../../simd_config.h"
 
 #ifdef TINY3D_AVX512
 #include <emmintrin.h>
 #include <immintrin.h>
 
-#include "../avx512_region_open.inc"
+#include "../../avx512_region_open.inc"
 
 namespace tiny3d::detail {
 namespace {
@@ -32,8 +32,8 @@ namespace {
 
 // One register of S samples: 16 floats (zmm) for 16×, 8 (ymm) for 8× — a pixel's depths or
 // colours exactly, so no access reaches a neighbouring pixel (a 16-lane access with lanes
-// masked off still overlaps the next pixel's samples and defeats store-to-load forwarding:
-// 8× in zmm took 21 ms against 12 in ymm here). Masks: bit s = sample s.
+// masked off still overlaps the next pixel's samples and defeats store-to-load forwarding).
+// Masks: bit s = sample s.
 template <int S>
 struct samples;
 
@@ -104,9 +104,9 @@ inline typename samples<S>::mask passing(typename samples<S>::mask in, typename 
 }
 
 // Narrow triangles whose boxes are at most this many columns wide are walked whole, every
-// pixel of the box, without the row spans' divisions (most of Scene S's triangles: at 16×
-// 10.1 → 8.9 ms, 8× 9.5 → 7.6; the torus knot's larger triangles ±4 %); the others row span
-// by row span. The 4× block kernel likewise.
+// pixel of the box, without the row spans' divisions (most of Scene S's triangles: a few
+// empty pixels cost less than two divisions per row); the others row span by row span. The
+// 4× block kernel likewise.
 constexpr int SCAN_COLUMNS_AVX512 = 16;
 
 // S = 8 or 16 samples, one register per pixel's depths and one per its colours.
@@ -147,7 +147,7 @@ void fill_rows(sample_store &store, const msaa_triangle &f, const sample_pattern
     const __m128 one = _mm_set1_ps(1.0f), zero = _mm_setzero_ps();
     const bool scan = f.narrow && f.max_x - f.min_x < SCAN_COLUMNS_AVX512;
     for (int y = y0; y < y1; ++y) {
-        // The row's span: 32-bit divisions when narrow (9 % faster at 16×), else 64-bit.
+        // The row's span: 32-bit divisions when narrow (shorter latency), else 64-bit.
         std::int64_t e64[3];
         int lo, hi;
         if (scan) {
@@ -171,8 +171,7 @@ void fill_rows(sample_store &store, const msaa_triangle &f, const sample_pattern
             std::uint8_t *touched = store.touched_row(y) + f.min_x + first;
             float *p = store.pixel(f.min_x + first, y);
             // The next row's first pixels are most likely below this row's: fetched ahead, as a
-            // row of a small triangle has too few pixels for the hardware prefetcher (−2 % for
-            // the 8× and 16× frames of Scene S).
+            // row of a small triangle has too few pixels for the hardware prefetcher to start.
             if (y + 1 < y1 && first == lo) {
                 const char *below = reinterpret_cast<const char *>(p + static_cast<std::size_t>(store.stride()) * 2 * S);
                 for (int line = 0; line < 2 * S * 4; line += 64) _mm_prefetch(below + line, _MM_HINT_T0);
@@ -181,7 +180,7 @@ void fill_rows(sample_store &store, const msaa_triangle &f, const sample_pattern
             for (int x = first; x <= last; ++x, p += 2 * S, ++touched, column = _mm_add_ps(column, one)) {
                 // A sample is in when all three edge values are ≥ 0. A pixel without one is
                 // stored back as it was, without a branch (cheaper than its mispredictions at
-                // the spans' ends: Scene S level 6 16× 10.8 → 10.3 ms, 8× 10.5 → 10.1).
+                // the spans' ends).
                 const mask in = static_cast<mask>(~V::outside(b0, b1, b2));
                 b0 = V::add(b0, step0), b1 = V::add(b1, step1), b2 = V::add(b2, step2);
                 const __m128 at = _mm_add_ps(plane_row, _mm_mul_ps(plane_dx, column));
@@ -208,13 +207,12 @@ void fill_rows(sample_store &store, const msaa_triangle &f, const sample_pattern
 // origin), its 16 depths and 16 colours two aligned 64-byte lines, loaded and stored whole
 // as they are, so a later triangle's loads of the same block are forwarded from this one's
 // stores. For small triangles (Scene S's are ~13 px) a 2 × 2 block beats four pixels of a
-// row: 10 % fewer groups to visit and half as many row starts (documentation/antialias.md,
+// row: fewer groups to visit and half as many row starts (documentation/antialias.md,
 // "How a multisampled frame is drawn").
 
 // Clipped (f.clipped_x): the pixels beside the bounds may hold covered samples, so the lanes
 // of a block's column past them are masked off; otherwise no sample there is inside f and
-// the mask is left out, the block's column stepped in float (Scene S level 6 4× −3.1 %, one
-// thread).
+// the mask is left out, the block's column stepped in float (no mask to build per block).
 template <depth_func Test, bool Clipped>
 void fill_rows_blocks(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, bool depth_write, int y0,
                       int y1) {
@@ -278,7 +276,7 @@ void fill_rows_blocks(sample_store &store, const msaa_triangle &f, const sample_
         const int dy = y - f.min_y;
         int lo = 0, hi = columns - 1;
         __m512i b0, b1, b2;
-        if (scan) {  // every row pair from the same first block: the last pair's values + 2·b (−2 %)
+        if (scan) {  // every row pair from the same first block: the last pair's values + 2·b
             b0 = scan_b0, b1 = scan_b1, b2 = scan_b2;
             scan_b0 = V::add(scan_b0, down0), scan_b1 = V::add(scan_b1, down1), scan_b2 = V::add(scan_b2, down2);
         } else {
@@ -311,15 +309,15 @@ void fill_rows_blocks(sample_store &store, const msaa_triangle &f, const sample_
             b0 = V::add(b0, step0), b1 = V::add(b1, step1), b2 = V::add(b2, step2);
             // No early exit for a block without a covered sample: it is loaded and stored back
             // as it was, which costs less than the branch's mispredictions (about half the
-            // blocks of a small triangle's box are empty; Scene S level 6 4×: 6.6 → 5.3 ms).
+            // blocks of a small triangle's box are empty, unpredictably).
             const __m512 z = V::add(V::add(z_row, V::mul(zdx, at)), dz);
             const __m512 shade = _mm512_min_ps(_mm512_max_ps(V::add(i_row, V::mul(idx, at)), zero), ones);  // clamp01
             // The 4-sample tile is at rest between bands (sample_store): an untouched pixel's
             // samples hold depth 1 and the clear colour in memory too, so the lines are used as
-            // loaded, touched or not (no test of the touched bytes: Scene S level 6 4× −5.7 %,
-            // frames identical). The block's mark is set without a test of the coverage (−5 %).
+            // loaded, touched or not (no test of the touched bytes; frames identical). The
+            // block's mark is set without a test of the coverage (a store beats a branch).
             // The depth write is a mask, not a branch (with the branch GCC moved the pass mask
-            // through a general register: +4 %).
+            // through a general register and back).
             const __m512 stored = _mm512_load_ps(p), colours = _mm512_load_ps(p + sample_store::colour_offset(S, true));
             const __mmask16 pass = passing<16, Test>(in, z, stored);
             _mm512_store_ps(p, _mm512_mask_blend_ps(_kand_mask16(pass, writes), stored, z));
@@ -401,6 +399,6 @@ void resolve_blocks4_avx512(float *p, const std::uint8_t *touched0, const std::u
 
 }  // namespace tiny3d::detail
 
-#include "../avx512_region_close.inc"
+#include "../../avx512_region_close.inc"
 
 #endif  // TINY3D_AVX512

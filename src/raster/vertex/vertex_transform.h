@@ -1,6 +1,7 @@
-// vertex_transform.h — the render context's vertex stage: every vertex of a draw to clip
-// space, outcode, snapped screen position, window depth and shading (the per-pixel path's
-// attributes too). Not installed. The kernels: a portable reference (vertex_transform.cpp)
+// vertex_transform.h — the render context's vertex stage (internal). In: a draw's mesh and
+// parameters. Out: every vertex to clip space, outcode, snapped screen position, window
+// depth and shading (the per-pixel path's attributes too). Called by the schedule's set-up
+// loop (schedule/raster_context.cpp) before the set-up stage. Not installed. The kernels: a portable reference (vertex_transform.cpp)
 // and SSE2 ones (vertex_kernels_sse2.h), chosen in transform_vertices.
 #ifndef TINY3D_VERTEX_TRANSFORM_H
 #define TINY3D_VERTEX_TRANSFORM_H
@@ -10,7 +11,7 @@
 
 #include "lighting.h"
 #include "pipeline.h"
-#include "raster_internal.h"
+#include "../setup/setup.h"
 
 namespace tiny3d::detail {
 

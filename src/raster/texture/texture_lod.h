@@ -1,6 +1,8 @@
-// texture_lod.h — the trilinear level of detail: the footprint shared by texture_lod (exact,
-// libm's log2) and the render context's per-pixel path (uv_derivatives::lod, with
-// fast_log2). Not installed.
+// texture_lod.h — the texture stage's level of detail (texture/: textures, mip chains,
+// lookups; in: uv and its screen derivatives, out: a filtered texel; called by the
+// per-pixel path, schedule/raster_pixel_path.cpp): the footprint shared by texture_lod
+// (exact, libm's log2) and the per-pixel path (uv_derivatives::lod, with fast_log2). Not
+// installed.
 #ifndef TINY3D_TEXTURE_LOD_H
 #define TINY3D_TEXTURE_LOD_H
 
@@ -26,7 +28,7 @@ inline float texel_footprint2(float a_x, float b_x, float a_y, float b_y) {
 // on that interval (iteratively reweighted least squares on Chebyshev nodes: 1.5e-5, the
 // rest is float rounding); exact at powers of two. Below FLT_MIN (0, denormals, negatives)
 // it returns −∞; +∞ and NaN pass through. Inline, two predictable branches and a short
-// chain of multiply-adds, where libm's log2f is a call (~13 % of a trilinear frame).
+// chain of multiply-adds, where libm's log2f is a call on every trilinear lookup.
 inline float fast_log2(float x) {
     const std::int32_t bits = std::bit_cast<std::int32_t>(x);
     // One unsigned compare for "positive, normal and finite": exponent field 1..254.

@@ -3,7 +3,7 @@
 #include "vertex_transform.h"
 
 #include "vertex_kernels_sse2.h"  // the SIMD kernels (nothing without SSE2)
-#include "../simd_config.h"
+#include "../../simd_config.h"
 
 namespace tiny3d::detail {
 

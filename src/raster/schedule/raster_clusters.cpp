@@ -7,8 +7,9 @@
 #include <limits>
 #include <string>
 
-#include "../math3d/dvec3.h"
-#include "raster_internal.h"
+#include "../../math3d/dvec3.h"
+#include "../setup/setup.h"
+#include "cluster_view.h"
 
 namespace tiny3d {
 

@@ -11,7 +11,7 @@
 #include <string>
 
 #include "render_context_impl.h"
-#include "../simd_config.h"
+#include "../../simd_config.h"
 
 #ifdef TINY3D_SSE2
 #include <emmintrin.h>
@@ -141,7 +141,7 @@ void render_context::impl::set_up_piece(int thread, int number, const raster_mes
     piece &out = pieces[static_cast<std::size_t>(number)];
     out.fast.clear();
     out.far.clear();
-    out.near_bands = pool.size() > 1 && streaming.streaming() ? affinity[thread].drew : nullptr;
+    out.near_bands = pool.size() > 1 && streaming ? affinity[thread].drew : nullptr;
     out.msaa.clear();
     out.wide.clear();
     out.generic.clear();
@@ -216,17 +216,17 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
             add_fast(t, depth, shade, out);
         }
     };
-    // With the AVX-512 and AVX2 kernels, fast triangles are set up eight at a time (in
-    // submission order: the batch is finished before a clipped triangle and at the end), and
-    // so are the multisampled ones on the 1/16 px grid (4 and 8 samples).
+    // With a table that has set-up batches (AVX-512, AVX2), fast triangles are set up eight at
+    // a time (in submission order: the batch is finished before a clipped triangle and at the
+    // end), and so are the multisampled ones on the 1/16 px grid (4 and 8 samples).
     setup_batch batch;
-    const bool batched = batched_setup(kernel) && (!msaa || pattern->bits == RASTER_SUBPIXEL_BITS);
+    const bool batched = kernels->setup_fast_batch && (!msaa || pattern->bits == RASTER_SUBPIXEL_BITS);
     auto finish_batch = [&] {
         if (batch.count == 0) return;
         fast_setup verdict[SETUP_BATCH];
         if (msaa) {
             msaa_triangle set_up[SETUP_BATCH];
-            setup_msaa_batch(kernel, batch, *pattern, full, verdict, set_up);
+            kernels->setup_msaa_batch(batch, *pattern, full, verdict, set_up);
             for (int l = 0; l < batch.count; ++l) {
                 if (verdict[l] == fast_setup::ready) add_msaa(set_up[l], state, out);
                 if (verdict[l] != fast_setup::scalar) continue;
@@ -240,7 +240,7 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
             return;
         }
         fast_triangle set_up[SETUP_BATCH];
-        setup_fast_batch(kernel, batch, full, verdict, set_up);
+        kernels->setup_fast_batch(batch, full, verdict, set_up);
         for (int l = 0; l < batch.count; ++l) {
             if (verdict[l] == fast_setup::ready) {  // (the common case: no lane gathered)
                 bin_ready(set_up[l]);
@@ -377,7 +377,7 @@ void render_context::impl::draw_band(int band, const draw_params &p, const draw_
             const std::vector<std::uint32_t> &bin = from.bins[band];
             if (!bin.empty()) bins[count++] = {from.fast.data(), from.far.data(), from.wide.data(), bin.data(), bin.size()};
         }
-        fill_fast_bins(*target, depth, bins, count, p.depth, y0, y1, kernel, ahead);
+        kernels->fill_fast_bins(*target, depth, bins, count, p.depth, y0, y1, ahead);
         return;
     }
     for (int number = plan.first; number < plan.first + plan.count; ++number) {
@@ -504,10 +504,7 @@ void render_context::impl::draw(const raster_mesh &mesh, const draw_params &para
     s.grow_segments(mesh.positions.size(), generic, plan.shared_vertices ? 1 : s.pool.size());
     s.counters.reset(plan.count, s.pool.size(), s.bands.count);
     auto phase = [&](int t) { s.set_up_and_draw(t, mesh, params, job, state, use_clusters ? &view : nullptr, plan); };
-    const bool measured = s.pool.size() > 1 && !s.multisampled();  // (stream_choice)
-    const auto start = measured ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
     s.pool.run(phase);
-    if (measured) s.phase_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     s.pending_clear = false;
     if (s.counters.bad_indices.load(std::memory_order_relaxed)) {  // an index out of range: nothing drawn
         s.piece_count = plan.first;  // (a multisampled frame's earlier draws stay)
@@ -524,13 +521,20 @@ render_context::~render_context() = default;
 int render_context::threads() const { return impl_->pool.size(); }
 const zbuffer &render_context::depth() const { return impl_->depth; }
 const frame_stats &render_context::stats() const { return impl_->stats; }
-raster_simd render_context::simd_in_use() const { return impl_->kernel; }
+raster_simd render_context::simd_in_use() const { return impl_->kernels->simd; }
 
 bool render_context::use_simd(raster_simd simd) {
-    if (impl_->target || !detail::fill_kernel_runs(simd)) return false;
-    impl_->kernel = simd;
+    if (impl_->target || !detail::kernels_run(simd)) return false;
+    impl_->kernels = &detail::kernels_for(simd);
     return true;
 }
+
+bool render_context::use_streaming_stores(bool on) {
+    if (impl_->target) return false;
+    impl_->streaming = on;
+    return true;
+}
+bool render_context::streaming_stores() const { return impl_->streaming; }
 
 status render_context::begin_frame(canvas_t &target, float clear_intensity, sample_count samples) {
     impl &s = *impl_;
@@ -547,14 +551,13 @@ status render_context::begin_frame(canvas_t &target, float clear_intensity, samp
         s.piece_count = 0;
         s.clear_intensity = detail::clamp01(clear_intensity);
         s.pending_clear = true;
-        s.phase_seconds = 0.0;
         s.stats = {};
         s.states.clear();
         s.translucent.clear();
         s.bands.plan(target.height, s.pool.size(), band_rows(count));
         if (count > 1) {
             const int tile_rows = (target.height + s.bands.count - 1) / s.bands.count;
-            const bool blocks = detail::sample_store::blocks_for(s.kernel, count);
+            const bool blocks = detail::sample_store::blocks_for(s.kernels->simd, count);
             for (int t = 0; t < s.pool.size(); ++t)
                 s.tiles[t].resize(target.width, tile_rows, count, s.clear_intensity, blocks);
         }
@@ -570,7 +573,6 @@ status render_context::begin_frame(canvas_t &target, float clear_intensity, samp
 void render_context::end_frame() {
     impl &s = *impl_;
     if (!s.target) return;
-    if (s.phase_seconds > 0.0) s.streaming.frame_done(s.phase_seconds);  // (begin_frame resets it)
     // Back to front; equal depths keep submission order (std::sort: no temporary buffer).
     std::sort(s.translucent.begin(), s.translucent.end(), [](const generic_triangle &a, const generic_triangle &b) {
         return a.mean_depth != b.mean_depth ? a.mean_depth > b.mean_depth : a.sequence < b.sequence;

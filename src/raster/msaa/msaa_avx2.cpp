@@ -10,19 +10,19 @@
 // AVX-512 block kernel's scheme (msaa_avx512.cpp), with 8 lanes and without mask registers.
 //
 // Compiled for AVX2 inside the target region of avx2_region_open.inc; run only on CPUs that
-// have it (best_fill_kernel). No FMA contraction: the portable kernel's float operations,
+// have it (kernels_run, src/kernels.cpp). No FMA contraction: the portable kernel's float operations,
 // rounded step by step, lane by lane, so the samples are bit-identical.
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
 
 #include "msaa_kernels.h"
-#include "../simd_config.h"
+#include "../../simd_config.h"
 
 #ifdef TINY3D_AVX2
 #include <immintrin.h>
 
-#include "../avx2_region_open.inc"
+#include "../../avx2_region_open.inc"
 
 namespace tiny3d::detail {
 namespace {
@@ -47,7 +47,7 @@ inline __m256 passing(__m256 z, __m256 stored) {
 
 // Clipped (f.clipped_x): a pair reaching a column past the bounds masks it off; otherwise no
 // sample there is inside f and the mask is left out, the pair's column stepped in float
-// (as the AVX-512 block kernel; Scene S level 6 4× with this kernel forced: −4 %).
+// (as the AVX-512 block kernel: the unclipped loop carries no mask).
 template <depth_func Test, bool Clipped>
 void fill_rows_pairs(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, bool depth_write, int y0,
                      int y1) {
@@ -236,6 +236,6 @@ msaa_row_fill fill_function_avx2(int samples, depth_func test) {
 
 }  // namespace tiny3d::detail
 
-#include "../avx512_region_close.inc"
+#include "../../avx512_region_close.inc"
 
 #endif  // TINY3D_AVX2

@@ -1,15 +1,20 @@
-// msaa.h — multisampled filled triangles for the render context: the sample patterns, the
-// per-sample colour and depth store, the per-triangle setup, the row fill (portable 64-bit
-// kernel and the SSE2 32-bit kernel beside it) and the box resolve. Not installed; the
-// contract is in raster.h (render_context::begin_frame) and documentation/antialias.md.
+// msaa.h — the multisample stage (internal). In: a multisampled frame's triangles (the
+// scalar set-up here, make_msaa_triangle; the batches in setup/) and a band's rows. Out:
+// per-sample colour and depth in a band's tile (sample_store), resolved into the canvas
+// and the depth buffer. Here: the sample patterns, the store, the per-triangle setup, the
+// row fill (portable 64-bit kernel, SSE2 32-bit beside it; AVX2 and AVX-512 in their files)
+// and the box resolve, chosen through the kernel table. Called by the schedule's
+// multisampled band loop (schedule/raster_multisample.cpp). The contract is in raster.h
+// (render_context::begin_frame) and documentation/antialias.md.
 #ifndef TINY3D_MSAA_H
 #define TINY3D_MSAA_H
 
 #include <cstdint>
 #include <vector>
 
-#include "raster_internal.h"
-#include "../simd_config.h"
+#include "../fill/fill.h"
+#include "../setup/setup.h"
+#include "../../simd_config.h"
 
 namespace tiny3d::detail {
 
@@ -58,8 +63,8 @@ const sample_pattern &pattern_of(int samples);
 // is SSE2's for all but the portable one. All give bit-identical samples and images; a
 // faster one runs where its precondition holds (msaa_triangle::chunkable, narrow) and the
 // portable one elsewhere.
-// Which of them this build runs on this CPU, and the fastest: fill_kernel_runs and
-// best_fill_kernel (raster_internal.h; the 1-sample fill's kernels are chosen alike).
+// Which of them runs: the render context's kernel table (src/kernels.h), as for the
+// 1-sample fill.
 using msaa_kernel = raster_simd;  // raster.h
 
 // The samples of a tile of rows [origin, origin + rows) of the canvas: per pixel S sample
@@ -81,7 +86,7 @@ using msaa_kernel = raster_simd;  // raster.h
 // their pixels were touched, and the portable kernel and the per-pixel path initialise
 // nothing (touch). In a tile at rest the marks are only the resolve's hint of where to
 // read: the AVX-512 block kernel marks the first pixel of each block it stores (one byte
-// store per block instead of two: Scene S level 6 4× −1.2 to −2.4 %), and the block
+// store per block instead of two), and the block
 // resolve reads every 8 × 2 group of pixels with a mark, its per-pixel tail every pixel.
 //
 // Two layouts. Rows: pixel after pixel along a row, each its S depths then its S colours
@@ -91,9 +96,8 @@ using msaa_kernel = raster_simd;  // raster.h
 // paired with padding — each block 128 bytes, aligned: its 16 depths, then its 16 colours,
 // sample s of the block's pixel q = 2·(row in block) + (column in block) at float 4q + s
 // of each: the block kernel's two registers, loaded and stored as they are, with no
-// permutes (Scene S level 6 4×: −6.5 % on one thread, −7.5 % on two; the row kernels walk
-// a row through twice the lines in it, so SSE2's frame was 6 % slower and AVX2's no faster
-// in blocks: they keep rows). Every kernel takes either layout (pixel, colour_offset,
+// permutes (the row kernels walk a row through twice the lines in it, so SSE2 and AVX2
+// keep rows). Every kernel takes either layout (pixel, colour_offset,
 // pixel_step), so a tile's layout and the kernel need not match.
 class sample_store {
 public:
@@ -104,7 +108,7 @@ public:
     void resize(int width, int rows, int samples, float clear_colour, bool blocks = false);
     // The layout the render context gives `kernel`'s tiles: blocks for the AVX-512 kernels
     // at 4 samples.
-    static bool blocks_for(msaa_kernel kernel, int samples) { return samples == 4 && kernel == msaa_kernel::avx512; }
+    static bool blocks_for(msaa_kernel kernel, int samples) { return samples == 4 && kernels_for(kernel).msaa_blocks4; }
     int samples() const { return samples_; }
     int width() const { return width_; }
     bool blocks() const { return blocks_; }
@@ -260,10 +264,8 @@ void fill_msaa_rows(sample_store &store, const msaa_triangle &f, const sample_pa
 // fill_msaa_rows with its kernel, sample count and depth test chosen once: the function
 // msaa_fill_for(kernel, pat.count, test) draws what fill_msaa_rows(…, test, …, kernel) draws
 // (which calls it), given the same pattern and test. A band's loop picks its functions
-// before its triangles: the choice per triangle went through three calls (Scene S level 6
-// 4×, one thread, alternated runs: −2.7 % with the AVX-512 kernel, −1.8 % with AVX2's).
-using msaa_row_fill = void (*)(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
-                               bool depth_write, float clear_colour, int y0, int y1);
+// before its triangles: the choice per triangle went through three calls.
+// (msaa_row_fill: src/kernels.h)
 msaa_row_fill msaa_fill_for(msaa_kernel kernel, int samples, depth_func test);
 
 // The per-pixel path's multisampled walk: for each pixel of `t` (valid triangle_edges on the

@@ -1,7 +1,7 @@
 // zbuffer.cpp — the float depth buffer: one contiguous block, cleared without reallocation.
 #include <algorithm>
 
-#include "raster_internal.h"
+#include "fill.h"
 
 namespace tiny3d {
 

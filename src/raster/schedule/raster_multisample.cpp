@@ -2,7 +2,7 @@
 // x16): draw() sets up and bins every draw's triangles (raster_context.cpp, with the
 // pattern's sample rows), and end_frame() draws the frame band by band, each band into a
 // per-thread tile of samples that stays in cache, then resolves the tile into the canvas
-// and the depth buffer. The kernels are in msaa.cpp.
+// and the depth buffer. The kernels are in msaa/.
 #include "render_context_impl.h"
 
 namespace tiny3d {
@@ -20,8 +20,7 @@ void render_context::impl::add_msaa(const msaa_triangle &f, std::uint32_t state,
 // of every draw: the opaque fast and per-pixel-path ones in its bins), then the translucent
 // queue (sorted), into the tile; then the resolve. The set-up triangle TRIANGLES_AHEAD bin
 // entries on is fetched meanwhile (the frame's list outgrows the caches, and a bin skips
-// through it where the hardware prefetcher does not follow: Scene S level 6 4×, one thread,
-// 3–4 % faster with the AVX-512 kernel, 9–14 % with AVX2's).
+// through it where the hardware prefetcher does not follow).
 void render_context::impl::draw_multisampled_band(int band, sample_store &tile) {
     const int y0 = bands.y0(band), y1 = bands.y0(band + 1);
     if (y0 >= y1) return;
@@ -29,7 +28,7 @@ void render_context::impl::draw_multisampled_band(int band, sample_store &tile) 
     constexpr int DEPTH_TESTS = static_cast<int>(depth_func::always) + 1;  // (raster.h: never … always)
     msaa_row_fill fill_for[DEPTH_TESTS];
     for (int test = 0; test < DEPTH_TESTS; ++test)
-        fill_for[test] = msaa_fill_for(kernel, pattern->count, static_cast<depth_func>(test));
+        fill_for[test] = msaa_fill_for(kernels->simd, pattern->count, static_cast<depth_func>(test));
     constexpr int TRIANGLES_AHEAD = 6;
     struct cursor {  // an entry of the band's bins, in drawing order
         int number = 0;
@@ -67,7 +66,7 @@ void render_context::impl::draw_multisampled_band(int band, sample_store &tile) 
     }
     for (const generic_triangle &g : translucent)
         draw_generic_samples(tile, *pattern, clear_intensity, states[g.state], g, y0, y1);
-    tile.resolve(*target, depth, clear_intensity, kernel);
+    tile.resolve(*target, depth, clear_intensity, kernels->simd);
 }
 
 // Bands claimed by the threads, each in the order of its own affinity (render_bands.h): a

@@ -1,11 +1,11 @@
-// raster_fill.cpp — triangle setup (snapping, orientation, top-left bias), the half-space
-// fill with depth and affine intensity (SSE2 4-wide, scalar 64-bit fallback), and the
-// faithful scan-line fill (the classic edge-walking method).
+// raster_fill.cpp — the 1-sample fill (fill.h): the half-space fill with depth and affine
+// intensity (SSE2 4-wide, scalar 64-bit fallback; the portable and SSE2 band kernels), the
+// public fill_triangle, and the faithful scan-line fill (the classic edge-walking method).
 #include <algorithm>
 #include <cmath>
 
-#include "raster_internal.h"
-#include "../simd_config.h"
+#include "fill.h"
+#include "../../simd_config.h"
 
 #ifdef TINY3D_SSE2
 #include <emmintrin.h>
@@ -13,222 +13,7 @@
 
 namespace tiny3d {
 
-namespace {
-
-constexpr std::int64_t HALF_SUBPIXEL = RASTER_SUBPIXEL_ONE / 2;  // pixel centre offset
-
-bool usable(const screen_vertex &v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::fabs(v.x) <= RASTER_MAX_COORD &&
-           std::fabs(v.y) <= RASTER_MAX_COORD;
-}
-
-}  // namespace
-
-triangle_edges triangle_setup(const screen_vertex &v0, const screen_vertex &v1, const screen_vertex &v2,
-                              pixel_rect clip, cull_mode cull) {
-    if (!usable(v0) || !usable(v1) || !usable(v2)) return {};
-    const std::int32_t X[3] = {detail::snap_coord(v0.x), detail::snap_coord(v1.x), detail::snap_coord(v2.x)};
-    const std::int32_t Y[3] = {detail::snap_coord(v0.y), detail::snap_coord(v1.y), detail::snap_coord(v2.y)};
-    return detail::triangle_setup_snapped(X, Y, clip, cull);
-}
-
 namespace detail {
-
-namespace {
-
-// Pixels p whose centre 2^bits·p + 2^bits/2 lies in [lo, hi] (sub-pixel units), within
-// [clip0, clip1) (>> is floor division: arithmetic shift, defined in C++20).
-inline void pixel_bounds(std::int64_t lo, std::int64_t hi, int clip0, int clip1, int bits, int &first, int &last) {
-    const std::int64_t half = std::int64_t{1} << (bits - 1);
-    first = static_cast<int>(std::max<std::int64_t>(-((half - lo) >> bits), clip0));
-    last = static_cast<int>(std::min<std::int64_t>((hi - half) >> bits, clip1 - 1));
-}
-
-}  // namespace
-
-bool snap_vertex(const screen_vertex &v, std::int32_t &x, std::int32_t &y, int bits) {
-    if (!usable(v)) return false;
-    x = snap_coord(v.x, bits);
-    y = snap_coord(v.y, bits);
-    return true;
-}
-
-triangle_edges triangle_setup_snapped(const std::int32_t Xs[3], const std::int32_t Ys[3], pixel_rect clip,
-                                      cull_mode cull, int bits) {
-    triangle_edges t;
-    const std::int64_t X[3] = {Xs[0], Xs[1], Xs[2]}, Y[3] = {Ys[0], Ys[1], Ys[2]};
-    const std::int64_t area2 = snapped_area2(Xs, Ys);
-    if (area2 == 0) return t;
-    t.front_facing = area2 < 0;
-    if (facing_culled(area2, cull)) {
-        t.culled = true;
-        return t;
-    }
-    const std::int64_t s = area2 > 0 ? 1 : -1;  // orient so that inside is positive
-    t.area2 = area2 * s;
-    const std::int64_t one = std::int64_t{1} << bits, half = one / 2;
-    for (int k = 0; k < 3; ++k) {
-        // E(P) with P = one·pixel + half (the pixel centre): its value at pixel (0, 0), its steps.
-        const snapped_edge edge = snapped_edge_at(Xs, Ys, s, k, half, half);
-        t.a[k] = -edge.dy * one;
-        t.b[k] = edge.dx * one;
-        t.c[k] = edge.e;
-    }
-    const std::int64_t min_X = std::min({X[0], X[1], X[2]}), max_X = std::max({X[0], X[1], X[2]});
-    const std::int64_t min_Y = std::min({Y[0], Y[1], Y[2]}), max_Y = std::max({Y[0], Y[1], Y[2]});
-    pixel_bounds(min_X, max_X, clip.x0, clip.x1, bits, t.min_x, t.max_x);
-    pixel_bounds(min_Y, max_Y, clip.y0, clip.y1, bits, t.min_y, t.max_y);
-    t.span_x = max_X - min_X;
-    t.span_y = max_Y - min_Y;
-    snapped_to_px(Xs, Ys, t.x, t.y, bits);
-    t.valid = t.min_x <= t.max_x && t.min_y <= t.max_y;
-    return t;
-}
-
-namespace {
-
-// Affine planes f(x, y) over pixel centres through the three snapped vertices, by Cramer's
-// rule in double: the triangle's geometry (vertex differences, 1/det, the reference pixel
-// centre's offset from vertex 0) once, then each attribute's value at the reference pixel
-// and its per-pixel steps.
-struct plane {
-    float at_ref, dx, dy;
-};
-
-struct plane_geometry {
-    double d1x, d1y, d2x, d2y, inv_det, ref_dx, ref_dy;
-};
-
-// x, y: the snapped vertices in px.
-inline plane_geometry make_plane_geometry(const double x[3], const double y[3], int px, int py) {
-    plane_geometry g;
-    g.d1x = x[1] - x[0];
-    g.d1y = y[1] - y[0];
-    g.d2x = x[2] - x[0];
-    g.d2y = y[2] - y[0];
-    // det = twice the signed area in px² (the snapped area2 carries the orientation sign).
-    g.inv_det = 1.0 / (g.d1x * g.d2y - g.d2x * g.d1y);
-    g.ref_dx = px + 0.5 - x[0];
-    g.ref_dy = py + 0.5 - y[0];
-    return g;
-}
-
-inline plane attribute_plane(const plane_geometry &g, const float f[3]) {
-    const double f1 = static_cast<double>(f[1]) - f[0], f2 = static_cast<double>(f[2]) - f[0];
-    const double gx = (f1 * g.d2y - f2 * g.d1y) * g.inv_det;
-    const double gy = (f2 * g.d1x - f1 * g.d2x) * g.inv_det;
-    const double ref = f[0] + gx * g.ref_dx + gy * g.ref_dy;
-    return {static_cast<float>(ref), static_cast<float>(gx), static_cast<float>(gy)};
-}
-
-}  // namespace
-
-namespace {
-
-// Rows [0, count) relative to min_y: those where no horizontal edge (a = 0, E = E0 + b·dy)
-// is negative. Narrows [first, last] (relative row numbers).
-inline void clip_rows_by_horizontal_edge(std::int64_t e0, std::int64_t b, int &first, int &last) {
-    if (b > 0) first = static_cast<int>(std::max<std::int64_t>(first, -floor_div(e0, b)));  // dy ≥ ceil(−e0 / b)
-    else last = static_cast<int>(std::min<std::int64_t>(last, floor_div(e0, -b)));         // dy ≤ floor(e0 / −b)
-}
-
-}  // namespace
-
-namespace {
-
-// Resets the crossings to "no edge" (set_crossing fills them).
-inline void clear_crossings(fast_triangle &out) {
-    constexpr double NO_EDGE = -1e30;
-    for (int j = 0; j < 4; ++j) out.cross[j] = NO_EDGE, out.cross_step[j] = 0.0;
-}
-
-// Edge E(min_x + x, min_y + dy) = e0 + a·x + b·dy with a ≠ 0 crosses zero at
-// x = −e0/a − (b/a)·dy. Left edges (a > 0) go to slots 0, 2, right edges (negated) to 1, 3.
-inline void set_crossing(std::int64_t e0, std::int64_t a, std::int64_t b, int &left, int &right, fast_triangle &out) {
-    const double inv_a = 1.0 / static_cast<double>(a);
-    const bool is_left = a > 0;
-    const int slot = is_left ? left : right;
-    (is_left ? left : right) += 2;
-    const double sign = is_left ? 1.0 : -1.0;
-    out.cross[slot] = sign * (-static_cast<double>(e0) * inv_a);
-    out.cross_step[slot] = sign * (-static_cast<double>(b) * inv_a);
-}
-
-// The depth and intensity planes at pixel (out.min_x, out.min_y) through the snapped
-// vertices (x, y in px).
-inline void set_planes(const double x[3], const double y[3], const float depth[3], const float intensity[3],
-                       fast_triangle &out) {
-    const plane_geometry g = make_plane_geometry(x, y, out.min_x, out.min_y);
-    const plane zp = attribute_plane(g, depth);
-    const plane ip = attribute_plane(g, intensity);
-    out.z = zp.at_ref;
-    out.zdx = zp.dx;
-    out.zdy = zp.dy;
-    out.i = ip.at_ref;
-    out.idx = ip.dx;
-    out.idy = ip.dy;
-}
-
-}  // namespace
-
-bool make_fast_triangle(const triangle_edges &t, const float depth[3], const float intensity[3],
-                        std::int32_t wide_index, fast_triangle &out) {
-    if (!t.valid) return false;
-    out.min_x = t.min_x;
-    out.max_x = t.max_x;
-    int first = 0, last = t.max_y - t.min_y;
-    for (int k = 0; k < 3; ++k)
-        if (t.a[k] == 0) clip_rows_by_horizontal_edge(t.c[k] + t.b[k] * t.min_y, t.b[k], first, last);
-    if (first > last) return false;
-    out.min_y = t.min_y + first;
-    out.max_y = t.min_y + last;
-    const bool fits = t.span_x < FAST_SPAN_LIMIT && t.span_y < FAST_SPAN_LIMIT;
-    out.wide = fits ? -1 : wide_index;
-    clear_crossings(out);
-    int left = 0, right = 1;
-    for (int k = 0; k < 3 && fits; ++k)
-        if (t.a[k] != 0) set_crossing(t.c[k] + t.a[k] * out.min_x + t.b[k] * out.min_y, t.a[k], t.b[k], left, right, out);
-    set_planes(t.x, t.y, depth, intensity, out);
-    return true;
-}
-
-fast_setup setup_fast_triangle(const std::int32_t X[3], const std::int32_t Y[3], std::int64_t area2, pixel_rect clip,
-                               const float depth[3], const float intensity[3], fast_triangle &out) {
-    const std::int32_t min_X = std::min(std::min(X[0], X[1]), X[2]), max_X = std::max(std::max(X[0], X[1]), X[2]);
-    const std::int32_t min_Y = std::min(std::min(Y[0], Y[1]), Y[2]), max_Y = std::max(std::max(Y[0], Y[1]), Y[2]);
-    if (max_X - min_X >= FAST_SPAN_LIMIT || max_Y - min_Y >= FAST_SPAN_LIMIT) return fast_setup::wide;
-    int min_y, max_y;
-    pixel_bounds(min_X, max_X, clip.x0, clip.x1, RASTER_SUBPIXEL_BITS, out.min_x, out.max_x);
-    pixel_bounds(min_Y, max_Y, clip.y0, clip.y1, RASTER_SUBPIXEL_BITS, min_y, max_y);
-    if (out.min_x > out.max_x || min_y > max_y) return fast_setup::empty;
-    // triangle_setup_snapped's edges (oriented by s, top-left bias), evaluated at the centre
-    // (cx, cy) of pixel (min_x, min_y): within the box, so |e| < 2^31 and the products fit.
-    const std::int64_t s = area2 > 0 ? 1 : -1;
-    const std::int64_t cx = RASTER_SUBPIXEL_ONE * static_cast<std::int64_t>(out.min_x) + HALF_SUBPIXEL;
-    const std::int64_t cy = RASTER_SUBPIXEL_ONE * static_cast<std::int64_t>(min_y) + HALF_SUBPIXEL;
-    std::int64_t e[3], dx[3], dy[3];
-    for (int k = 0; k < 3; ++k) {
-        const snapped_edge edge = snapped_edge_at(X, Y, s, k, cx, cy);
-        dx[k] = edge.dx, dy[k] = edge.dy, e[k] = edge.e;
-    }
-    int first = 0, last = max_y - min_y;
-    for (int k = 0; k < 3; ++k)
-        if (dy[k] == 0) clip_rows_by_horizontal_edge(e[k], dx[k] * RASTER_SUBPIXEL_ONE, first, last);
-    if (first > last) return fast_setup::empty;
-    out.min_y = min_y + first;
-    out.max_y = min_y + last;
-    out.wide = -1;
-    clear_crossings(out);
-    int left = 0, right = 1;
-    for (int k = 0; k < 3; ++k) {
-        const std::int64_t a = -dy[k] * RASTER_SUBPIXEL_ONE, b = dx[k] * RASTER_SUBPIXEL_ONE;
-        if (a != 0) set_crossing(e[k] + b * first, a, b, left, right, out);
-    }
-    double x[3], y[3];
-    snapped_to_px(X, Y, x, y);
-    set_planes(x, y, depth, intensity, out);
-    return fast_setup::ready;
-}
 
 namespace {
 
@@ -348,7 +133,7 @@ void fill_rows_sse2(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bo
     }
 }
 
-// Triangles that narrow_fits (raster_internal.h): every row is drawn as the same `groups`
+// Triangles that narrow_fits (fill.h): every row is drawn as the same `groups`
 // groups of four from min_x, the lanes outside the row's span masked off, so the branches
 // are the row loop and a group loop of constant trip count (the span loop's per-row trip
 // counts mispredict on small triangles).
@@ -411,28 +196,6 @@ void fill_rows_dispatch(canvas_t &canvas, zbuffer *depth, const fast_triangle &f
 
 }  // namespace
 
-void setup_fast_batch([[maybe_unused]] fill_kernel kernel, const setup_batch &in, pixel_rect clip,
-                      fast_setup verdict[SETUP_BATCH], fast_triangle out[SETUP_BATCH]) {
-#ifdef TINY3D_AVX512
-    if (kernel == fill_kernel::avx512) return setup_fast_batch_avx512(in, clip, verdict, out);
-#endif
-#ifdef TINY3D_AVX2
-    if (kernel == fill_kernel::avx2) return setup_fast_batch_avx2(in, clip, verdict, out);
-#endif
-    std::fill(verdict, verdict + in.count, fast_setup::scalar);
-    (void)clip, (void)out;
-}
-
-void attribute_planes_at(const double x[3], const double y[3], int px, int py, const float depth[3],
-                         const float intensity[3], float planes[6]) {
-    fast_triangle f;
-    f.min_x = px;
-    f.min_y = py;
-    set_planes(x, y, depth, intensity, f);
-    const float out[6] = {f.z, f.zdx, f.zdy, f.i, f.idx, f.idy};
-    std::copy(out, out + 6, planes);
-}
-
 void fill_floats(float *dst, std::size_t count, float value) {
     std::size_t i = 0;
 #ifdef TINY3D_SSE2
@@ -448,30 +211,16 @@ void fill_floats(float *dst, std::size_t count, float value) {
     for (; i < count; ++i) dst[i] = value;
 }
 
-bool fill_kernel_runs(fill_kernel k) {
-    switch (k) {
-        case fill_kernel::portable: return true;
-#ifdef TINY3D_SSE2  // the AVX2 and AVX-512 kernels resolve, and fall back, with SSE2's
-        case fill_kernel::sse2: return true;
-#ifdef TINY3D_AVX2
-        case fill_kernel::avx2: return cpu_has_avx2();
-#endif
-#ifdef TINY3D_AVX512
-        case fill_kernel::avx512: return cpu_has_avx512();
-#endif
-#endif
-        default: return false;
-    }
-}
-
-fill_kernel best_fill_kernel() {
-    for (fill_kernel k : {fill_kernel::avx512, fill_kernel::avx2, fill_kernel::sse2})
-        if (fill_kernel_runs(k)) return k;
-    return fill_kernel::portable;
-}
-
 void fill_fast_rows(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, const triangle_edges *wide_edges,
-                    depth_func test, bool depth_write, int y0, int y1, [[maybe_unused]] fill_kernel kernel) {
+                    depth_func test, bool depth_write, int y0, int y1, fill_kernel kernel) {
+    const auto narrow = kernels_for(kernel).fill_rows_narrow;
+    if (narrow && f.wide < 0 && narrow_fits(f, canvas.width) && std::max(y0, f.min_y) < std::min(y1, f.max_y + 1))
+        return narrow(canvas, depth, f, test, depth_write, std::max(y0, f.min_y), std::min(y1, f.max_y + 1));
+    fill_fast_rows_base(canvas, depth, f, wide_edges, test, depth_write, y0, y1);
+}
+
+void fill_fast_rows_base(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, const triangle_edges *wide_edges,
+                         depth_func test, bool depth_write, int y0, int y1) {
     y0 = std::max(y0, f.min_y);
     y1 = std::min(y1, f.max_y + 1);
     if (y0 >= y1) return;
@@ -480,10 +229,6 @@ void fill_fast_rows(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, co
         return;
     }
 #ifdef TINY3D_SSE2
-#ifdef TINY3D_AVX512
-    if (kernel == fill_kernel::avx512 && narrow_fits(f, canvas.width))
-        return fill_rows_narrow_avx512(canvas, depth, f, test, depth_write, y0, y1);
-#endif
     if (depth) fill_rows_dispatch<true>(canvas, depth, f, test, depth_write, y0, y1);
     else fill_rows_dispatch<false>(canvas, depth, f, depth_func::always, false, y0, y1);
 #else
@@ -501,35 +246,28 @@ void fill_fast_rows(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, co
 #endif
 }
 
-void fill_fast_bins(canvas_t &canvas, zbuffer &depth, const band_bin *bins, int bin_count, depth_func test, int y0,
-                    int y1, fill_kernel kernel, band_prefetch &ahead) {
-#ifdef TINY3D_AVX512
-    if (kernel == fill_kernel::avx512) return fill_fast_bins_avx512(canvas, depth, bins, bin_count, test, y0, y1, ahead);
-#endif
-#ifdef TINY3D_AVX2
-    if (kernel == fill_kernel::avx2) return fill_fast_bins_avx2(canvas, depth, bins, bin_count, test, y0, y1, ahead);
-#endif
 #ifdef TINY3D_SSE2
-    if (kernel != fill_kernel::portable) {
-        with_depth_test(test, [&](auto t) {
-            for_each_bin_triangle(bins, bin_count, ahead, [&](const band_bin &bin, const fast_triangle &f) {
-                const int first = std::max(y0, f.min_y), end = std::min(y1, f.max_y + 1);
-                if (first >= end) return;
-                if (f.wide >= 0) fill_rows_scalar64(canvas, &depth, f, bin.wide[f.wide], test, true, first, end);
-                else fill_rows_sse2_any<t.value, true>(canvas, &depth, f, true, first, end);
-            });
+void fill_fast_bins_sse2(canvas_t &canvas, zbuffer &depth, const band_bin *bins, int bin_count, depth_func test, int y0,
+                         int y1, band_prefetch &ahead) {
+    with_depth_test(test, [&](auto t) {
+        for_each_bin_triangle(bins, bin_count, ahead, [&](const band_bin &bin, const fast_triangle &f) {
+            const int first = std::max(y0, f.min_y), end = std::min(y1, f.max_y + 1);
+            if (first >= end) return;
+            if (f.wide >= 0) fill_rows_scalar64(canvas, &depth, f, bin.wide[f.wide], test, true, first, end);
+            else fill_rows_sse2_any<t.value, true>(canvas, &depth, f, true, first, end);
         });
-        return;
-    }
+    });
+}
 #endif
+
+void fill_fast_bins_portable(canvas_t &canvas, zbuffer &depth, const band_bin *bins, int bin_count, depth_func test,
+                             int y0, int y1, band_prefetch &ahead) {
     for_each_bin_triangle(bins, bin_count, ahead, [&](const band_bin &bin, const fast_triangle &f) {
-        fill_fast_rows(canvas, &depth, f, f.wide >= 0 ? &bin.wide[f.wide] : nullptr, test, true, y0, y1, kernel);
+        fill_fast_rows_base(canvas, &depth, f, f.wide >= 0 ? &bin.wide[f.wide] : nullptr, test, true, y0, y1);
     });
 }
 
 }  // namespace detail
-
-raster_simd best_raster_simd() { return detail::best_fill_kernel(); }
 
 void fill_triangle(canvas_t &canvas, zbuffer *depth, const screen_vertex v[3], const float intensity[3],
                    depth_func test, bool depth_write, pixel_rect clip) {
@@ -542,7 +280,7 @@ void fill_triangle(canvas_t &canvas, zbuffer *depth, const screen_vertex v[3], c
     detail::fast_triangle f;
     const float depth_z[3] = {v[0].z, v[1].z, v[2].z};
     if (!detail::make_fast_triangle(t, depth_z, intensity, 0, f)) return;
-    detail::fill_fast_rows(canvas, depth, f, &t, test, depth_write, f.min_y, f.max_y + 1, detail::best_fill_kernel());
+    detail::fill_fast_rows(canvas, depth, f, &t, test, depth_write, f.min_y, f.max_y + 1, best_raster_simd());
 }
 
 // ---- the faithful scan-line fill (classic edge walking) ---------------------------------
@@ -551,7 +289,7 @@ void fill_triangle_scanline(canvas_t &canvas, zbuffer *depth, const screen_verte
                             depth_func test) {
     if (!canvas.pixels || (depth && (depth->width() != canvas.width || depth->height() != canvas.height))) return;
     for (int k = 0; k < 3; ++k)
-        if (!usable(v[k]) || !std::isfinite(v[k].z) || !std::isfinite(intensity[k])) return;
+        if (!detail::usable(v[k]) || !std::isfinite(v[k].z) || !std::isfinite(intensity[k])) return;
     // Sort by y (a bubble sort of the three), keeping each vertex's intensity with it.
     int order[3] = {0, 1, 2};
     if (v[order[0]].y > v[order[1]].y) std::swap(order[0], order[1]);

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "raster_internal.h"
+#include "../setup/setup.h"
 
 namespace tiny3d {
 

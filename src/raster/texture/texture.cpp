@@ -4,7 +4,7 @@
 
 #include "raster.h"
 #include "texture_lod.h"
-#include "../canvas/splat.h"  // floor_to_int
+#include "../../canvas/splat.h"  // floor_to_int
 
 namespace tiny3d {
 
@@ -32,7 +32,7 @@ int address(int i, int n, texture_wrap wrap) {
 
 // ⌊t⌋ for finite t, without a libm call (x86-64's baseline has no rounding instruction):
 // from 2^23 on every float is an integer; below, truncation then one step down. (Not
-// float(floor_to_int(t)): the extra int → float conversion made a lookup ~20 % slower.)
+// float(floor_to_int(t)): the extra int → float conversion sits on the lookup's critical path.)
 float floor_of(float t) {
     if (!(std::fabs(t) < 8388608.0f)) return t;
     const float f = static_cast<float>(static_cast<int>(t));

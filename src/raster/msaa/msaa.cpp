@@ -9,7 +9,7 @@
 #include <numeric>
 #include <string>
 
-#include "../simd_config.h"
+#include "../../simd_config.h"
 
 #ifdef TINY3D_SSE2
 #include <emmintrin.h>
@@ -289,26 +289,25 @@ void sample_store::initialise(float *pixel, float clear_colour) const {
     std::fill_n(pixel + colour_offset(), samples_, clear_colour);
 }
 
-void sample_store::resolve(canvas_t &canvas, zbuffer &depth, float clear_colour, [[maybe_unused]] msaa_kernel kernel) {
+void sample_store::resolve(canvas_t &canvas, zbuffer &depth, float clear_colour, msaa_kernel kernel) {
     const int S = samples_;
     const float inv = 1.0f / static_cast<float>(S);
+    const kernel_table &k = kernels_for(kernel);
     int first_column = 0;  // (the columns before it resolved already)
-#ifdef TINY3D_AVX512
-    if (blocks_ && kernel == msaa_kernel::avx512) {  // a row of blocks at a time, eight columns per step
+    if (blocks_ && k.resolve_blocks4) {  // a row of blocks at a time, eight columns per step
         first_column = width_ / 8 * 8;
         for (int y = origin_; y < end_; y += 2) {
             const bool two = y + 1 < end_;
-            resolve_blocks4_avx512(pixel(0, y), touched_row(y), two ? touched_row(y + 1) : nullptr, first_column,
+            k.resolve_blocks4(pixel(0, y), touched_row(y), two ? touched_row(y + 1) : nullptr, first_column,
                                    clear_colour, canvas.pixels[y], depth.row(y), two ? canvas.pixels[y + 1] : nullptr,
                                    two ? depth.row(y + 1) : nullptr);
         }
     }
-#endif
     for (int y = origin_; y < end_; ++y) {
         const std::uint8_t *touched = touched_row(y);
         float *colour = canvas.pixels[y], *z = depth.row(y);
 #ifdef TINY3D_SSE2
-        switch (kernel == msaa_kernel::portable || blocks_ ? 0 : S) {
+        switch (!k.resolve_rows_simd || blocks_ ? 0 : S) {
             case 4: resolve_row_sse2<4>(pixel(0, y), touched, width_, clear_colour, colour, z); continue;
             case 8: resolve_row_sse2<8>(pixel(0, y), touched, width_, clear_colour, colour, z); continue;
             case 16: resolve_row_sse2<16>(pixel(0, y), touched, width_, clear_colour, colour, z); continue;
@@ -342,7 +341,7 @@ void msaa_candidate_rows(std::int64_t min_Y, std::int64_t max_Y, const sample_pa
 namespace {
 
 // make_msaa_triangle on the grid of 1/2^Bits px (= pat.bits): the shifts and scales are
-// constants (a runtime shift count and 1/2^bits made the 4× set-up ~25 % slower).
+// constants (a runtime shift count and 1/2^bits are a variable shift and a multiply per use).
 template <int Bits>
 bool make_msaa_triangle_on(const std::int32_t X[3], const std::int32_t Y[3], std::int64_t area2,
                            const sample_pattern &pat, pixel_rect clip, const float depth[3], const float intensity[3],
@@ -392,16 +391,10 @@ bool make_msaa_triangle(const triangle_edges &t, const sample_pattern &pat, pixe
     return make_msaa_triangle(X, Y, snapped_area2(X, Y), pat, clip, depth, intensity, out);
 }
 
-void setup_msaa_batch([[maybe_unused]] fill_kernel kernel, const setup_batch &in, const sample_pattern &pat,
-                      pixel_rect clip, fast_setup verdict[SETUP_BATCH], msaa_triangle out[SETUP_BATCH]) {
-#ifdef TINY3D_AVX512
-    if (kernel == fill_kernel::avx512) return setup_msaa_batch_avx512(in, pat, clip, verdict, out);
-#endif
-#ifdef TINY3D_AVX2
-    if (kernel == fill_kernel::avx2) return setup_msaa_batch_avx2(in, pat, clip, verdict, out);
-#endif
+void setup_msaa_batch(fill_kernel kernel, const setup_batch &in, const sample_pattern &pat, pixel_rect clip,
+                      fast_setup verdict[SETUP_BATCH], msaa_triangle out[SETUP_BATCH]) {
+    if (const auto batch = kernels_for(kernel).setup_msaa_batch) return batch(in, pat, clip, verdict, out);
     std::fill(verdict, verdict + in.count, fast_setup::scalar);
-    (void)pat, (void)clip, (void)out;
 }
 
 namespace {
@@ -415,19 +408,16 @@ void fill_portable(sample_store &store, const msaa_triangle &f, const sample_pat
 
 }  // namespace
 
-msaa_row_fill msaa_fill_for([[maybe_unused]] msaa_kernel kernel, int samples, depth_func test) {
-    if (test == depth_func::never) return fill_nothing;
-    [[maybe_unused]] const bool simd_samples = samples == 4 || samples == 8 || samples == 16;
-#ifdef TINY3D_AVX512
-    if (kernel == msaa_kernel::avx512 && simd_samples) return fill_function_avx512(samples, test);
-#endif
-#ifdef TINY3D_AVX2
-    if (kernel == msaa_kernel::avx2 && simd_samples) return fill_function_avx2(samples, test);
-#endif
 #ifdef TINY3D_SSE2
-    if (kernel != msaa_kernel::portable && simd_samples)
-        return fill_function(samples, test, [](auto s, auto t) -> msaa_row_fill { return &fill_sse2<s.value, t.value>; });
+msaa_row_fill msaa_fill_sse2(int samples, depth_func test) {
+    return fill_function(samples, test, [](auto s, auto t) -> msaa_row_fill { return &fill_sse2<s.value, t.value>; });
+}
 #endif
+
+msaa_row_fill msaa_fill_for(msaa_kernel kernel, int samples, depth_func test) {
+    if (test == depth_func::never) return fill_nothing;
+    const auto simd = kernels_for(kernel).msaa_fill;
+    if (simd && (samples == 4 || samples == 8 || samples == 16)) return simd(samples, test);
     return fill_portable;
 }
 

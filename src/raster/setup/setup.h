@@ -1,7 +1,13 @@
-// raster_internal.h — the compact per-triangle setup shared by the half-space fill
-// (raster_fill.cpp) and the render context (raster_context.cpp). Not installed.
-#ifndef TINY3D_RASTER_INTERNAL_H
-#define TINY3D_RASTER_INTERNAL_H
+// setup.h — the set-up stage (internal). In: a triangle's screen vertices (or their snapped
+// sub-pixel coordinates from the vertex stage). Out: the snapped, culled triangle as edge
+// equations and attribute planes — fast_triangle for the 1-sample fill, triangle_edges for
+// the 64-bit one (msaa/msaa.h has the multisampled form) — one at a time
+// (setup/triangle_setup.cpp) or eight at a time (setup_fast_batch: the table's
+// setup_batch_avx2/avx512.cpp). Called by the render context's set-up loop
+// (schedule/raster_context.cpp) and the public fill_triangle (fill/raster_fill.cpp).
+// Also the depth tests every stage shares. Not installed.
+#ifndef TINY3D_RASTER_SETUP_H
+#define TINY3D_RASTER_SETUP_H
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +16,8 @@
 #include <type_traits>
 
 #include "raster.h"
-#include "../simd_config.h"
+#include "../../kernels.h"
+#include "../../simd_config.h"
 
 #ifdef TINY3D_SSE2
 #include <emmintrin.h>
@@ -30,6 +37,12 @@ inline std::int32_t snap_coord(float x, int bits = RASTER_SUBPIXEL_BITS) {
 #else
     return static_cast<std::int32_t>(std::lrint(x * one));
 #endif
+}
+
+// Whether a screen vertex can be snapped: finite, |x|, |y| ≤ RASTER_MAX_COORD.
+inline bool usable(const screen_vertex &v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::fabs(v.x) <= RASTER_MAX_COORD &&
+           std::fabs(v.y) <= RASTER_MAX_COORD;
 }
 
 // Snaps one vertex to 1/2^bits px (done once per shared vertex by the render context).
@@ -209,15 +222,14 @@ fast_setup setup_fast_triangle(const std::int32_t X[3], const std::int32_t Y[3],
 // (raster.h): portable (plain C++), SSE2 (every x86-64 CPU), AVX2 and AVX-512 for narrow
 // triangles (SSE2's for the others). Every one gives the same pixels as SSE2's; the
 // portable one differs from them in the last bits of depth and intensity.
+// Each set's kernels are in its kernel_table (src/kernels.h).
 using fill_kernel = raster_simd;
-// Whether this build runs kernel k on this CPU, and the fastest it does (as for the
-// multisample kernels, msaa.h).
-bool fill_kernel_runs(fill_kernel k);
-fill_kernel best_fill_kernel();
+// Whether this build runs kernel k on this CPU.
+inline bool fill_kernel_runs(fill_kernel k) { return kernels_run(k); }
 
 // Up to SETUP_BATCH triangles for setup_fast_batch, one lane each: the arguments of
 // setup_fast_triangle (snapped vertices, area2, depths, shades), lane by lane.
-inline constexpr int SETUP_BATCH = 8;
+inline constexpr int SETUP_BATCH = BATCH_LANES;
 struct setup_batch {
     alignas(64) std::int64_t area2[SETUP_BATCH] = {};
     alignas(32) std::int32_t X[3][SETUP_BATCH] = {}, Y[3][SETUP_BATCH] = {};
@@ -275,7 +287,7 @@ struct batch_lanes {
 // for bit and the same verdict — except that a triangle with a horizontal edge gets
 // fast_setup::scalar (rare: its rows are cut in integers; setup_fast_triangle does it).
 // Other kernels: every lane fast_setup::scalar. Lanes at and after in.count are left alone.
-inline bool batched_setup(fill_kernel kernel) { return kernel == fill_kernel::avx512 || kernel == fill_kernel::avx2; }
+inline bool batched_setup(fill_kernel kernel) { return kernels_for(kernel).setup_fast_batch != nullptr; }
 void setup_fast_batch(fill_kernel kernel, const setup_batch &in, pixel_rect clip, fast_setup verdict[SETUP_BATCH],
                       fast_triangle out[SETUP_BATCH]);
 #ifdef TINY3D_AVX512
@@ -287,181 +299,11 @@ void setup_fast_batch_avx2(const setup_batch &in, pixel_rect clip, fast_setup ve
                            fast_triangle out[SETUP_BATCH]);
 #endif
 
-// Draws rows [y0, y1) ∩ [min_y, max_y] of the triangle with `kernel` (fill_kernel_runs).
-// `wide_edges` is the triangle's 64-bit edges when f.wide ≥ 0 (ignored otherwise).
-void fill_fast_rows(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, const triangle_edges *wide_edges,
-                    depth_func test, bool depth_write, int y0, int y1, fill_kernel kernel);
-
-// The colour and depth lines of the band a thread draws next, brought into its cache a few
-// at a time while it draws the current band, so that the next band's clear finds them
-// there instead of waiting for each line (Scene S level 6, one thread: ~4 % of the frame).
-struct band_prefetch {
-    static constexpr int LINES_PER_TRIANGLE = 4;  // of each buffer, per triangle drawn
-    const char *colour = nullptr, *depth = nullptr;
-    std::size_t lines = 0, next = 0;  // 64-byte lines in each; the next one to fetch
-
-    band_prefetch() = default;
-    band_prefetch(const float *colour_rows, const float *depth_rows, std::size_t floats)
-        : colour(reinterpret_cast<const char *>(colour_rows)), depth(reinterpret_cast<const char *>(depth_rows)),
-          lines(floats * sizeof(float) / 64) {}
-    void step() {
-        for (int k = 0; k < LINES_PER_TRIANGLE && next < lines; ++k, ++next) {
-            __builtin_prefetch(colour + 64 * next, 1, 3);
-            __builtin_prefetch(depth + 64 * next, 1, 3);
-        }
-    }
-};
-
-// A piece's set-up triangles that another thread is expected to draw (render_bands.h),
-// appended with streaming stores: they go to memory without first taking the lines into the
-// writing core's cache. Reading a line makes a copy in the reader's cache, and a core that
-// later stores into that line waits until the copy is gone, one line at a time; in a frame on
-// two cores of different L3 caches (the AMD EPYC of the benchmarks, in some hours: a
-// cache-line round trip of 330–700 ns instead of 50) that made the next frame's set-up of
-// Scene S level 6 take twice as long. Storage is grown (normal stores) and never shrunk; the
-// elements are not zeroed first (a zeroing store would bring the line back into the cache).
-// Portable build: plain stores. A reader on another thread needs stream_fence() by the writer
-// before the release that publishes the list.
-class streamed_triangles {
-public:
-    std::size_t size() const { return size_; }
-    bool empty() const { return size_ == 0; }
-    const fast_triangle *data() const { return data_.get(); }
-    void clear() { size_ = 0; }
-    // Appends f; returns its index.
-    std::size_t append(const fast_triangle &f) {
-        if (size_ == capacity_) grow();
-        fast_triangle *to = data_.get() + size_;
-#ifdef TINY3D_SSE2
-        const __m128i *from = reinterpret_cast<const __m128i *>(&f);
-        __m128i *out = reinterpret_cast<__m128i *>(to);
-        for (std::size_t k = 0; k < sizeof(fast_triangle) / 16; ++k) _mm_stream_si128(out + k, _mm_load_si128(from + k));
-#else
-        *to = f;
-#endif
-        return size_++;
-    }
-
-    // Room for n triangles without growing.
-    void reserve(std::size_t n) {
-        if (n > capacity_) grow(n);
-    }
-
-private:
-    void grow() { grow(std::max<std::size_t>(2 * capacity_, 64)); }
-    void grow(std::size_t n) {
-        std::unique_ptr<fast_triangle[]> bigger(new fast_triangle[n]);  // (not zeroed)
-        std::copy(data_.get(), data_.get() + size_, bigger.get());
-        data_ = std::move(bigger);
-        capacity_ = n;
-    }
-    std::unique_ptr<fast_triangle[]> data_;
-    std::size_t size_ = 0, capacity_ = 0;
-};
-static_assert(sizeof(fast_triangle) % 16 == 0, "streamed_triangles stores 16-byte blocks");
-
-// Orders a thread's streaming stores before its later stores (the release that tells the
-// other threads the data is ready).
-inline void stream_fence() {
-#ifdef TINY3D_SSE2
-    _mm_sfence();
-#endif
-}
-
-// A band bin entry with FAR_ENTRY set names a triangle of the piece's streamed list.
-inline constexpr std::uint32_t FAR_ENTRY = 1u << 30;
-
-// The triangles of one piece that reach a band: triangle(index[k]) for k < count (count ≥ 1),
-// `wide` holding the 64-bit edges of the triangles with wide ≥ 0.
-struct band_bin {
-    const fast_triangle *tris = nullptr;  // the piece's triangles stored normally
-    const fast_triangle *far = nullptr;   // and those streamed (FAR_ENTRY)
-    const triangle_edges *wide = nullptr;
-    const std::uint32_t *index = nullptr;
-    std::size_t count = 0;
-    const fast_triangle &triangle(std::uint32_t entry) const {
-        return entry & FAR_ENTRY ? far[entry & ~FAR_ENTRY] : tris[entry];
-    }
-};
-
-// draw(bin, triangle) for every triangle of bins[0..bin_count), bin after bin and each in its
-// order, ahead.step() before each: the band loop of fill_fast_bins' portable and SSE2 kernels
-// (the AVX-512 one walks the same order with a prefetch that looks into the next bin).
-template <class Draw>
-inline void for_each_bin_triangle(const band_bin *bins, int bin_count, band_prefetch &ahead, Draw &&draw) {
-    for (int j = 0; j < bin_count; ++j)
-        for (std::size_t k = 0; k < bins[j].count; ++k) {
-            ahead.step();
-            draw(bins[j], bins[j].triangle(bins[j].index[k]));
-        }
-}
-
-// Draws rows [y0, y1) of every triangle of bins[0..bin_count) (none empty), bin after bin and
-// each in its order, with depth (the render context's band loop): fill_fast_rows for each,
-// the depth test and the kernel chosen once per band; ahead.step() after each triangle.
-void fill_fast_bins(canvas_t &canvas, zbuffer &depth, const band_bin *bins, int bin_count, depth_func test, int y0,
-                    int y1, fill_kernel kernel, band_prefetch &ahead);
-
-// Triangles at most NARROW_WIDTH px wide whose groups of four from min_x stay inside the
-// canvas (`width`) are drawn by the narrow kernels: every row as the same groups, the lanes
-// outside the row's span masked off.
-inline constexpr int NARROW_WIDTH = 16;
-inline bool narrow_fits(const fast_triangle &f, int width) {
-    return f.max_x - f.min_x < NARROW_WIDTH && f.min_x + 4 * ((f.max_x - f.min_x + 4) / 4) <= width;
-}
-
-#ifdef TINY3D_AVX2
-// fill_fast_bins with the AVX2 kernel for the narrow triangles (raster_fill_avx2.cpp: two
-// groups of four per register; SSE2's for the others).
-void fill_fast_bins_avx2(canvas_t &canvas, zbuffer &depth, const band_bin *bins, int bin_count, depth_func test,
-                         int y0, int y1, band_prefetch &ahead);
-#endif
-
-#ifdef TINY3D_AVX512
-// The AVX-512 kernel (raster_fill_avx512.cpp) for a triangle that narrow_fits, rows
-// [y0, y1) within f's.
-void fill_rows_narrow_avx512(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, depth_func test,
-                             bool depth_write, int y0, int y1);
-// fill_fast_bins with the AVX-512 kernel for the narrow triangles (SSE2's for the others).
-void fill_fast_bins_avx512(canvas_t &canvas, zbuffer &depth, const band_bin *bins, int bin_count, depth_func test,
-                           int y0, int y1, band_prefetch &ahead);
-#endif
-
 // The depth and intensity planes through snapped (or any) vertices x, y (px), as the fast
 // path computes them: planes = {z, ∂z/∂x, ∂z/∂y, i, ∂i/∂x, ∂i/∂y} at the centre of pixel
 // (px, py), steps per pixel.
 void attribute_planes_at(const double x[3], const double y[3], int px, int py, const float depth[3],
                          const float intensity[3], float planes[6]);
-
-// dst[0..count) := value (SSE2 stores when available).
-void fill_floats(float *dst, std::size_t count, float value);
-
-// ---- cluster culling (raster_clusters.cpp) ------------------------------------------------
-
-// What one draw needs to classify chunks (raster_cluster): the MVP rows, the eye and the
-// screen, with the per-draw constants of cluster_back_facing precomputed.
-struct cluster_view {
-    double row[4][4];         // MVP rows x, y, z, w: row[r][c] (the float matrix, exactly)
-    double abs_row[4][4];     // |row[r][c]|
-    double row_length[4];     // |xyz part of row r|
-    double plane[6][4];       // near z + w, far w − z, x + g·w, g·w − x, y + g·w, g·w − y
-    double plane_length[6];   // |xyz part|
-    double plane_guard[6];    // the plane's w coefficient (1 or g), for its float error
-    int plane_row[6];         // the plane's x, y or z row
-    double eye[3];            // object-space eye position (when cone_usable)
-    double eye_slack;         // rounding allowance for distances to the eye
-    double area_scale;        // hw·hh·|κ|: a triangle's screen double area (px²) is
-                              // area_scale · |N| · n·(p − eye) / (w0·w1·w2)
-    double half_w, half_h;
-    bool cone_usable;         // a perspective eye with front = counter-clockwise, and cull_mode::back
-};
-cluster_view make_cluster_view(const mat4_t &mvp, int width, int height, float guard, cull_mode cull);
-
-// Whether chunk c is back-facing as a whole: every vertex has outcode 0 (inside near, far
-// and guard band) and every triangle's snapped area is nonzero and back-facing.
-// Conservative: claimed only when the float transform and the 1/16 px snapping of
-// render_context cannot make any triangle of the chunk decide otherwise.
-bool cluster_back_facing(const cluster_view &v, const raster_cluster &c);
 
 // Depth comparison as a function, shared by the scalar paths.
 // (A template so the double-precision reference renderer uses the same comparisons.)

@@ -1,0 +1,241 @@
+// triangle_setup.cpp — the set-up stage, one triangle at a time (setup.h): snapping,
+// orientation, culling, the top-left bias, and the fast path's row crossings and attribute
+// planes; the batch entry point of the kernel table's set-up batches.
+#include <algorithm>
+#include <cmath>
+
+#include "setup.h"
+
+namespace tiny3d {
+
+namespace {
+
+constexpr std::int64_t HALF_SUBPIXEL = RASTER_SUBPIXEL_ONE / 2;  // pixel centre offset
+
+}  // namespace
+
+triangle_edges triangle_setup(const screen_vertex &v0, const screen_vertex &v1, const screen_vertex &v2,
+                              pixel_rect clip, cull_mode cull) {
+    if (!detail::usable(v0) || !detail::usable(v1) || !detail::usable(v2)) return {};
+    const std::int32_t X[3] = {detail::snap_coord(v0.x), detail::snap_coord(v1.x), detail::snap_coord(v2.x)};
+    const std::int32_t Y[3] = {detail::snap_coord(v0.y), detail::snap_coord(v1.y), detail::snap_coord(v2.y)};
+    return detail::triangle_setup_snapped(X, Y, clip, cull);
+}
+
+namespace detail {
+
+namespace {
+
+// Pixels p whose centre 2^bits·p + 2^bits/2 lies in [lo, hi] (sub-pixel units), within
+// [clip0, clip1) (>> is floor division: arithmetic shift, defined in C++20).
+inline void pixel_bounds(std::int64_t lo, std::int64_t hi, int clip0, int clip1, int bits, int &first, int &last) {
+    const std::int64_t half = std::int64_t{1} << (bits - 1);
+    first = static_cast<int>(std::max<std::int64_t>(-((half - lo) >> bits), clip0));
+    last = static_cast<int>(std::min<std::int64_t>((hi - half) >> bits, clip1 - 1));
+}
+
+}  // namespace
+
+bool snap_vertex(const screen_vertex &v, std::int32_t &x, std::int32_t &y, int bits) {
+    if (!usable(v)) return false;
+    x = snap_coord(v.x, bits);
+    y = snap_coord(v.y, bits);
+    return true;
+}
+
+triangle_edges triangle_setup_snapped(const std::int32_t Xs[3], const std::int32_t Ys[3], pixel_rect clip,
+                                      cull_mode cull, int bits) {
+    triangle_edges t;
+    const std::int64_t X[3] = {Xs[0], Xs[1], Xs[2]}, Y[3] = {Ys[0], Ys[1], Ys[2]};
+    const std::int64_t area2 = snapped_area2(Xs, Ys);
+    if (area2 == 0) return t;
+    t.front_facing = area2 < 0;
+    if (facing_culled(area2, cull)) {
+        t.culled = true;
+        return t;
+    }
+    const std::int64_t s = area2 > 0 ? 1 : -1;  // orient so that inside is positive
+    t.area2 = area2 * s;
+    const std::int64_t one = std::int64_t{1} << bits, half = one / 2;
+    for (int k = 0; k < 3; ++k) {
+        // E(P) with P = one·pixel + half (the pixel centre): its value at pixel (0, 0), its steps.
+        const snapped_edge edge = snapped_edge_at(Xs, Ys, s, k, half, half);
+        t.a[k] = -edge.dy * one;
+        t.b[k] = edge.dx * one;
+        t.c[k] = edge.e;
+    }
+    const std::int64_t min_X = std::min({X[0], X[1], X[2]}), max_X = std::max({X[0], X[1], X[2]});
+    const std::int64_t min_Y = std::min({Y[0], Y[1], Y[2]}), max_Y = std::max({Y[0], Y[1], Y[2]});
+    pixel_bounds(min_X, max_X, clip.x0, clip.x1, bits, t.min_x, t.max_x);
+    pixel_bounds(min_Y, max_Y, clip.y0, clip.y1, bits, t.min_y, t.max_y);
+    t.span_x = max_X - min_X;
+    t.span_y = max_Y - min_Y;
+    snapped_to_px(Xs, Ys, t.x, t.y, bits);
+    t.valid = t.min_x <= t.max_x && t.min_y <= t.max_y;
+    return t;
+}
+
+namespace {
+
+// Affine planes f(x, y) over pixel centres through the three snapped vertices, by Cramer's
+// rule in double: the triangle's geometry (vertex differences, 1/det, the reference pixel
+// centre's offset from vertex 0) once, then each attribute's value at the reference pixel
+// and its per-pixel steps.
+struct plane {
+    float at_ref, dx, dy;
+};
+
+struct plane_geometry {
+    double d1x, d1y, d2x, d2y, inv_det, ref_dx, ref_dy;
+};
+
+// x, y: the snapped vertices in px.
+inline plane_geometry make_plane_geometry(const double x[3], const double y[3], int px, int py) {
+    plane_geometry g;
+    g.d1x = x[1] - x[0];
+    g.d1y = y[1] - y[0];
+    g.d2x = x[2] - x[0];
+    g.d2y = y[2] - y[0];
+    // det = twice the signed area in px² (the snapped area2 carries the orientation sign).
+    g.inv_det = 1.0 / (g.d1x * g.d2y - g.d2x * g.d1y);
+    g.ref_dx = px + 0.5 - x[0];
+    g.ref_dy = py + 0.5 - y[0];
+    return g;
+}
+
+inline plane attribute_plane(const plane_geometry &g, const float f[3]) {
+    const double f1 = static_cast<double>(f[1]) - f[0], f2 = static_cast<double>(f[2]) - f[0];
+    const double gx = (f1 * g.d2y - f2 * g.d1y) * g.inv_det;
+    const double gy = (f2 * g.d1x - f1 * g.d2x) * g.inv_det;
+    const double ref = f[0] + gx * g.ref_dx + gy * g.ref_dy;
+    return {static_cast<float>(ref), static_cast<float>(gx), static_cast<float>(gy)};
+}
+
+}  // namespace
+
+namespace {
+
+// Rows [0, count) relative to min_y: those where no horizontal edge (a = 0, E = E0 + b·dy)
+// is negative. Narrows [first, last] (relative row numbers).
+inline void clip_rows_by_horizontal_edge(std::int64_t e0, std::int64_t b, int &first, int &last) {
+    if (b > 0) first = static_cast<int>(std::max<std::int64_t>(first, -floor_div(e0, b)));  // dy ≥ ceil(−e0 / b)
+    else last = static_cast<int>(std::min<std::int64_t>(last, floor_div(e0, -b)));         // dy ≤ floor(e0 / −b)
+}
+
+}  // namespace
+
+namespace {
+
+// Resets the crossings to "no edge" (set_crossing fills them).
+inline void clear_crossings(fast_triangle &out) {
+    constexpr double NO_EDGE = -1e30;
+    for (int j = 0; j < 4; ++j) out.cross[j] = NO_EDGE, out.cross_step[j] = 0.0;
+}
+
+// Edge E(min_x + x, min_y + dy) = e0 + a·x + b·dy with a ≠ 0 crosses zero at
+// x = −e0/a − (b/a)·dy. Left edges (a > 0) go to slots 0, 2, right edges (negated) to 1, 3.
+inline void set_crossing(std::int64_t e0, std::int64_t a, std::int64_t b, int &left, int &right, fast_triangle &out) {
+    const double inv_a = 1.0 / static_cast<double>(a);
+    const bool is_left = a > 0;
+    const int slot = is_left ? left : right;
+    (is_left ? left : right) += 2;
+    const double sign = is_left ? 1.0 : -1.0;
+    out.cross[slot] = sign * (-static_cast<double>(e0) * inv_a);
+    out.cross_step[slot] = sign * (-static_cast<double>(b) * inv_a);
+}
+
+// The depth and intensity planes at pixel (out.min_x, out.min_y) through the snapped
+// vertices (x, y in px).
+inline void set_planes(const double x[3], const double y[3], const float depth[3], const float intensity[3],
+                       fast_triangle &out) {
+    const plane_geometry g = make_plane_geometry(x, y, out.min_x, out.min_y);
+    const plane zp = attribute_plane(g, depth);
+    const plane ip = attribute_plane(g, intensity);
+    out.z = zp.at_ref;
+    out.zdx = zp.dx;
+    out.zdy = zp.dy;
+    out.i = ip.at_ref;
+    out.idx = ip.dx;
+    out.idy = ip.dy;
+}
+
+}  // namespace
+
+bool make_fast_triangle(const triangle_edges &t, const float depth[3], const float intensity[3],
+                        std::int32_t wide_index, fast_triangle &out) {
+    if (!t.valid) return false;
+    out.min_x = t.min_x;
+    out.max_x = t.max_x;
+    int first = 0, last = t.max_y - t.min_y;
+    for (int k = 0; k < 3; ++k)
+        if (t.a[k] == 0) clip_rows_by_horizontal_edge(t.c[k] + t.b[k] * t.min_y, t.b[k], first, last);
+    if (first > last) return false;
+    out.min_y = t.min_y + first;
+    out.max_y = t.min_y + last;
+    const bool fits = t.span_x < FAST_SPAN_LIMIT && t.span_y < FAST_SPAN_LIMIT;
+    out.wide = fits ? -1 : wide_index;
+    clear_crossings(out);
+    int left = 0, right = 1;
+    for (int k = 0; k < 3 && fits; ++k)
+        if (t.a[k] != 0) set_crossing(t.c[k] + t.a[k] * out.min_x + t.b[k] * out.min_y, t.a[k], t.b[k], left, right, out);
+    set_planes(t.x, t.y, depth, intensity, out);
+    return true;
+}
+
+fast_setup setup_fast_triangle(const std::int32_t X[3], const std::int32_t Y[3], std::int64_t area2, pixel_rect clip,
+                               const float depth[3], const float intensity[3], fast_triangle &out) {
+    const std::int32_t min_X = std::min(std::min(X[0], X[1]), X[2]), max_X = std::max(std::max(X[0], X[1]), X[2]);
+    const std::int32_t min_Y = std::min(std::min(Y[0], Y[1]), Y[2]), max_Y = std::max(std::max(Y[0], Y[1]), Y[2]);
+    if (max_X - min_X >= FAST_SPAN_LIMIT || max_Y - min_Y >= FAST_SPAN_LIMIT) return fast_setup::wide;
+    int min_y, max_y;
+    pixel_bounds(min_X, max_X, clip.x0, clip.x1, RASTER_SUBPIXEL_BITS, out.min_x, out.max_x);
+    pixel_bounds(min_Y, max_Y, clip.y0, clip.y1, RASTER_SUBPIXEL_BITS, min_y, max_y);
+    if (out.min_x > out.max_x || min_y > max_y) return fast_setup::empty;
+    // triangle_setup_snapped's edges (oriented by s, top-left bias), evaluated at the centre
+    // (cx, cy) of pixel (min_x, min_y): within the box, so |e| < 2^31 and the products fit.
+    const std::int64_t s = area2 > 0 ? 1 : -1;
+    const std::int64_t cx = RASTER_SUBPIXEL_ONE * static_cast<std::int64_t>(out.min_x) + HALF_SUBPIXEL;
+    const std::int64_t cy = RASTER_SUBPIXEL_ONE * static_cast<std::int64_t>(min_y) + HALF_SUBPIXEL;
+    std::int64_t e[3], dx[3], dy[3];
+    for (int k = 0; k < 3; ++k) {
+        const snapped_edge edge = snapped_edge_at(X, Y, s, k, cx, cy);
+        dx[k] = edge.dx, dy[k] = edge.dy, e[k] = edge.e;
+    }
+    int first = 0, last = max_y - min_y;
+    for (int k = 0; k < 3; ++k)
+        if (dy[k] == 0) clip_rows_by_horizontal_edge(e[k], dx[k] * RASTER_SUBPIXEL_ONE, first, last);
+    if (first > last) return fast_setup::empty;
+    out.min_y = min_y + first;
+    out.max_y = min_y + last;
+    out.wide = -1;
+    clear_crossings(out);
+    int left = 0, right = 1;
+    for (int k = 0; k < 3; ++k) {
+        const std::int64_t a = -dy[k] * RASTER_SUBPIXEL_ONE, b = dx[k] * RASTER_SUBPIXEL_ONE;
+        if (a != 0) set_crossing(e[k] + b * first, a, b, left, right, out);
+    }
+    double x[3], y[3];
+    snapped_to_px(X, Y, x, y);
+    set_planes(x, y, depth, intensity, out);
+    return fast_setup::ready;
+}
+
+void setup_fast_batch(fill_kernel kernel, const setup_batch &in, pixel_rect clip, fast_setup verdict[SETUP_BATCH],
+                      fast_triangle out[SETUP_BATCH]) {
+    if (const auto batch = kernels_for(kernel).setup_fast_batch) return batch(in, clip, verdict, out);
+    std::fill(verdict, verdict + in.count, fast_setup::scalar);
+}
+
+void attribute_planes_at(const double x[3], const double y[3], int px, int py, const float depth[3],
+                         const float intensity[3], float planes[6]) {
+    fast_triangle f;
+    f.min_x = px;
+    f.min_y = py;
+    set_planes(x, y, depth, intensity, f);
+    const float out[6] = {f.z, f.zdx, f.zdy, f.i, f.idx, f.idy};
+    std::copy(out, out + 6, planes);
+}
+
+}  // namespace detail
+
+}  // namespace tiny3d
