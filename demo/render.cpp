@@ -297,9 +297,11 @@ int main(int argc, char **argv) {
         if (!t) return cli.fail(t.message());
         tex = std::move(*t);
     }
-    if (m.corner_normals.empty() || s.crease_given) m.corner_normals = tiny3d::mesh_crease_normals(m, float(s.crease));
+    if (m.corner_normals.empty() || s.crease_given)
+        if (tiny3d::status st = tiny3d::mesh_set_crease_normals(m, float(s.crease)); !st)
+            return cli.fail(s.path + ": " + st.message());
     auto shape = tiny3d::make_raster_mesh(m, {});
-    if (!shape) return cli.fail(shape.message());
+    if (!shape) return cli.fail(s.path + ": " + shape.message());
     auto canvas = tiny3d::make_canvas(o.width, o.height);
     if (!canvas) return cli.fail(canvas.message());
 

@@ -103,6 +103,10 @@ std::vector<vec3_t> mesh_vertex_normals(const mesh &m);
 // faces with out-of-range indices, or a malformed face_start, get (0, 0, 0). Sort-based
 // weld, then O(Σ valence²) over the welded positions.
 std::vector<vec3_t> mesh_crease_normals(const mesh &m, float crease_degrees);
+// The same normals stored in m.corner_normals (what make_raster_mesh then uses). Memory
+// that runs out is an error naming the corner count, and m is left as it was (the vector
+// form above lets std::bad_alloc through, as the standard containers do).
+status mesh_set_crease_normals(mesh &m, float crease_degrees);
 
 // Which faces border each edge of m.edges, in compressed rows: the faces of edge e are
 // faces[start[e]] .. faces[start[e + 1] − 1] (a closed 2-manifold gives exactly 2 each;

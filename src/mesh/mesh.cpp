@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <limits>
 #include <memory>
+#include <new>
 #include <utility>
 #include <string>
 
@@ -149,6 +150,16 @@ std::vector<vec3_t> mesh_vertex_normals(const mesh &m) {
     });
     for (vec3_t &v : sums) v = vec3_normalize(v);
     return sums;
+}
+
+status mesh_set_crease_normals(mesh &m, float crease_degrees) {
+    try {
+        m.corner_normals = mesh_crease_normals(m, crease_degrees);
+    } catch (const std::bad_alloc &) {
+        return error{"", 0, -1, "crease normals: out of memory for a mesh of " + std::to_string(m.indices.size()) +
+                                    " corners"};
+    }
+    return {};
 }
 
 std::vector<vec3_t> mesh_crease_normals(const mesh &m, float crease_degrees) {

@@ -1,9 +1,8 @@
-// raster_context.cpp — the render context: a draw's steps (cull the mesh, transform its
-// vertices, set up, clip and bin its triangles, draw the bands in parallel), the frame's
-// begin and end (clear, translucent queue). Every buffer is owned by render_context::impl
-// (render_context_impl.h) and reused from frame to frame; the worker pool is in
-// src/parallel/, the vertex kernels in vertex_transform.*, the band sharing in
-// render_bands.h, the per-pixel path in raster_pixel_path.cpp.
+// raster_context.cpp — the render context: a draw's steps (cull, transform, set up, clip
+// and bin, draw the bands in parallel) and the frame's begin and end. Its buffers live in
+// render_context::impl (render_context_impl.h), reused from frame to frame; the vertex
+// kernels are in ../vertex/, the band sharing in render_bands.h, the per-pixel path in
+// raster_pixel_path.cpp, the draw's memory guard in raster_memory.cpp.
 #include <algorithm>
 #include <new>
 #include <cmath>
@@ -31,8 +30,7 @@ bool to_screen(const vec4_t &clip, int width, int height, screen_vertex &out) {
     return !p.behind;
 }
 
-// Whether a draw goes through the per-pixel path (Phong, a texture, translucency) rather
-// than the fast one.
+// Whether a draw takes the per-pixel path (Phong, a texture, translucency), not the fast one.
 bool per_pixel_path(const draw_params &p) { return p.shade == shading::phong || p.tex != nullptr || p.alpha < 1.0f; }
 
 // The world position of a model-space point (the xyz part of model·(p, 1)).
