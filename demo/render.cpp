@@ -16,6 +16,7 @@
 // camera's frame (x right, y up, z towards the viewer), so the lighting stays put while
 // the mesh turns. Positions of --eye/--target are in the mesh's coordinates.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -59,7 +60,32 @@ struct settings {
     double crease = kDefaultCrease;
     float specular = kSpecular, shininess = kShininess;
     bool crease_given = false;
+    double progress_every = 2.0;  // seconds between progress lines of a long frame
     std::vector<light_t> lights;  // camera frame; intensity < 0 = "split the rest evenly"
+};
+
+// Progress of a long frame on stderr: the render context reports every band it draws; a
+// line is printed once the frame has run `every` seconds, then at most every `every` seconds
+// (0: every band), so a frame of minutes does not look hung and a short one prints nothing.
+struct frame_progress {
+    using clock = std::chrono::steady_clock;
+    double every = 2.0;
+    int frame = 0;
+    clock::time_point start{}, last{};
+    void begin(int frame_number) {
+        frame = frame_number;
+        start = last = clock::now();
+    }
+    static void report(const tiny3d::render_context::progress &p, void *self) {
+        frame_progress &me = *static_cast<frame_progress *>(self);
+        const clock::time_point now = clock::now();
+        if (std::chrono::duration<double>(now - me.start).count() < me.every ||
+            (me.last != me.start && std::chrono::duration<double>(now - me.last).count() < me.every))
+            return;
+        me.last = now;
+        std::fprintf(stderr, "render: frame %d: %d of %d bands drawn (%zu triangles), %.0f s\n", me.frame, p.bands_done,
+                     p.bands_total, p.triangles, std::chrono::duration<double>(now - me.start).count());
+    }
 };
 
 // "X,Y,Z" or "X,Y,Z,I": a direction towards the light and an optional intensity.
@@ -253,6 +279,9 @@ int main(int argc, char **argv) {
     cli.choice("--format", s.format, {"auto", "obj", "ply"},
                "the mesh's format (default auto: by the name's .obj/.ply, else by the content); FILE '-' reads "
                "standard input");
+    cli.number("--progress-every", s.progress_every, 0.0, 3600.0,
+               "seconds a frame runs before its progress (bands drawn) is shown on stderr, and between two such "
+               "lines (default 2; 0 = every band)");
     cli.flag("--info", s.info, "print the mesh's counts, bounds and loader warnings; render nothing");
     if (const int status = cli.parse(argc, argv); status >= 0) return status;
     if (s.up_given && !(tiny3d::vec3_length(s.up) > 0.0f)) return cli.usage_error("--up must not be zero, got '0,0,0'");
@@ -324,6 +353,8 @@ int main(int argc, char **argv) {
                                                 : tiny3d::texture_filter::trilinear;
     params.anisotropy = s.anisotropy;
     tiny3d::render_context ctx(o.threads);
+    frame_progress progress{s.progress_every};
+    ctx.report_progress(&frame_progress::report, &progress);
     if (ctx.threads() < o.threads)
         std::fprintf(stderr, "render: warning: the system refused to create threads: rendering on %d of the %d asked for\n",
                      ctx.threads(), o.threads);
@@ -350,6 +381,7 @@ int main(int argc, char **argv) {
         const float angle = float(2.0 * kPi * frame / s.turntable);
         const mat4_t model = tiny3d::mat4_rotate_axis(s.up, angle);
         timer.start();
+        progress.begin(frame);
         if (edges_only) {
             if (s.mode == "hidden-line") {  // the surface's depth only: its colour is cleared below
                 if (tiny3d::status st = ctx.begin_frame(**canvas, kBackground); !st) return cli.fail(st.message());

@@ -449,6 +449,18 @@ public:
     // the context stays usable), otherwise ok. begin_frame returns its own errors
     // (including memory for the frame's buffers). A program checks it after end_frame.
     status frame_status() const;
+    // Progress of the bands being drawn, for a program that shows it on long frames (a file
+    // of a million full-screen triangles asks for minutes of work): after each band the
+    // caller's own thread draws, report(p, user) is called on that thread with the bands of
+    // the pass drawn so far (by every thread) of its total and the triangles the pass draws
+    // (the draw's mesh in a 1-sample frame, every draw of the frame at a multisampled
+    // end_frame). nullptr (the default) reports nothing. The library reads no clock: the
+    // program decides when to show it. The image does not depend on it.
+    struct progress {
+        std::size_t triangles = 0;
+        int bands_done = 0, bands_total = 0;
+    };
+    void report_progress(void (*report)(const progress &p, void *user), void *user);
     const zbuffer &depth() const;
     const frame_stats &stats() const;
     // The instruction set of the fills, in every frame (raster_simd above; best_raster_simd()

@@ -3,6 +3,7 @@
 // double-precision ray cast, thread-count invariance, texture sampling, transparency.
 #include <cmath>
 #include <random>
+#include <thread>
 #include <vector>
 
 #include "harness.h"
@@ -169,6 +170,50 @@ TEST(crease_normals_at_180_draw_todays_image_bit_for_bit) {
             CHECK(lit > 1000);
         }
     }
+}
+
+// Progress reports (render_context::report_progress): one call per band the caller's thread
+// draws, on that thread, counting every thread's bands; the pass ends at its band total; the
+// image is the one drawn without reports.
+struct progress_log {
+    std::thread::id caller = std::this_thread::get_id();
+    int calls = 0, last_done = 0, total = 0, off_thread = 0, not_increasing = 0;
+    std::size_t triangles = 0;
+    static void report(const render_context::progress &p, void *self) {
+        progress_log &log = *static_cast<progress_log *>(self);
+        log.off_thread += std::this_thread::get_id() != log.caller;
+        log.not_increasing += p.bands_done <= log.last_done;
+        log.last_done = p.bands_done;
+        log.total = p.bands_total;
+        log.triangles = p.triangles;
+        ++log.calls;
+    }
+};
+
+TEST(progress_is_reported_per_band_on_the_callers_thread_and_changes_no_pixel) {
+    const raster_mesh sphere = make_raster_mesh(make_icosphere(3), {}).value();
+    draw_params p = raster_test::scene_s_params();
+    for (sample_count samples : {sample_count::x1, sample_count::x4})
+        for (int threads : {1, 2}) {
+            canvas_ptr quiet = make_canvas(96, 200).value(), reported = make_canvas(96, 200).value();
+            render_context plain(threads), watched(threads);
+            progress_log log;
+            watched.report_progress(&progress_log::report, &log);
+            CHECK(draw_frame(plain, *quiet, sphere, p, 0.0f, samples).ok());
+            CHECK(draw_frame(watched, *reported, sphere, p, 0.0f, samples).ok());
+            int differing = 0;
+            for (int y = 0; y < 200; ++y)
+                for (int x = 0; x < 96; ++x) differing += quiet->pixels[y][x] != reported->pixels[y][x];
+            CHECK_EQ(differing, 0);
+            CHECK(log.calls >= 1);
+            CHECK(log.total >= 2);  // 200 rows make several bands
+            CHECK(log.calls <= log.total + 1);
+            if (threads == 1) CHECK_EQ(log.calls, log.total);  // every band is the caller's
+            CHECK_EQ(log.off_thread, 0);
+            CHECK_EQ(log.not_increasing, 0);
+            CHECK_MSG(log.triangles == sphere.triangles.size(), std::to_string(log.triangles) + " triangles reported");
+            CHECK_EQ(log.last_done, log.total);  // the pass's end is reported, whoever drew the last band
+        }
 }
 
 TEST(two_threads_give_the_same_image_as_one) {

@@ -192,6 +192,27 @@ TEST(default_turntable_writes_36_frames_of_the_default_size) {
     CHECK_EQ(img.height, 30);
 }
 
+TEST(progress_of_a_frame_is_shown_on_stderr_when_asked_for_every_band) {
+    // A long frame shows its progress; "--progress-every 0" shows every band of every frame,
+    // so a short run exercises it without timing anything: the lines count up to the total.
+    if (!render_built()) return;
+    temp_dir dir;
+    const run_result r = render(dir, {cube_obj, "--size", "40x70", "--turntable", "2", "--progress-every", "0"});
+    CHECK_MSG(r.exit_code == 0, r.err);
+    int lines = 0, finished = 0;
+    for (std::size_t at = 0; (at = r.err.find("render: frame ", at)) != std::string::npos; ++at) {
+        int frame = -1, done = 0, total = 0;
+        if (std::sscanf(r.err.c_str() + at, "render: frame %d: %d of %d bands drawn", &frame, &done, &total) != 3) continue;
+        ++lines;
+        CHECK(done >= 1 && done <= total);
+        finished += done == total;
+    }
+    CHECK(lines >= 4);  // two frames of several bands each
+    CHECK_EQ(finished, 2);
+    const run_result quiet = render(dir, {cube_obj, "--size", "40x30", "--turntable", "1"});
+    CHECK_MSG(quiet.err.find("bands drawn") == std::string::npos, quiet.err);  // a short frame by default: silent
+}
+
 TEST(flat_gouraud_phong_give_the_lambert_value_on_a_face_seen_head_on) {
     if (!render_built()) return;
     // I = ambient + intensity · n·L: n = +z (towards the camera), L from the command line

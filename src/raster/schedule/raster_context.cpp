@@ -22,8 +22,7 @@ using namespace detail;
 
 namespace {
 
-// A clipped vertex on the screen (clip_to_screen, with 1/w for perspective-correct
-// attributes); false when it has no finite screen point.
+// A clipped vertex on the screen (with 1/w for perspective-correct attributes); false if not finite.
 bool to_screen(const vec4_t &clip, int width, int height, screen_vertex &out) {
     const screen_point p = clip_to_screen(clip, width, height);
     out = {p.x, p.y, p.depth, 1.0f / p.w};
@@ -39,8 +38,7 @@ vec3_t world_of(const mat4_t &model, vec3_t p) {
     return {h.x, h.y, h.z};
 }
 
-// Whether every vertex index of triangles [first, last) is < count. Branch-free: no early
-// exit, four indices per SSE2 compare.
+// Whether every vertex index of triangles [first, last) is < count (branch-free, SSE2).
 bool indices_below(const std::vector<std::array<std::uint32_t, 3>> &triangles, std::size_t first, std::size_t last,
                    std::size_t count) {
     if (count > std::numeric_limits<std::uint32_t>::max() || first >= last) return true;
@@ -69,7 +67,6 @@ bool indices_below(const std::vector<std::array<std::uint32_t, 3>> &triangles, s
 }  // namespace
 
 // ---- a piece's triangles ---------------------------------------------------------------------
-
 // One convex polygon (already inside the near/far planes and the guard band) as a fan.
 void render_context::impl::emit(const clip_vertex *poly, int n, const draw_params &p, std::uint32_t state,
                                 bool generic, piece &out) {
@@ -450,6 +447,7 @@ void render_context::impl::set_up_and_draw(int thread, const raster_mesh &m, con
             return;
         }
         draw_band(band, p, plan, !cleared, ahead);
+        band_drawn(thread);
     };
     for (int k = 0; k < claimed_count; ++k) draw(claimed[k], true, k + 1 < claimed_count ? -1 : next);
     while (next < bands.count) {
@@ -502,7 +500,9 @@ void render_context::impl::draw(const raster_mesh &mesh, const draw_params &para
     s.grow_segments(mesh.positions.size(), generic, plan.shared_vertices ? 1 : s.pool.size());
     s.counters.reset(plan.count, s.pool.size(), s.bands.count);
     auto phase = [&](int t) { s.set_up_and_draw(t, mesh, params, job, state, use_clusters ? &view : nullptr, plan); };
+    s.start_pass(mesh.triangles.size());
     s.pool.run(phase);
+    s.end_pass();
     s.pending_clear = false;
     if (s.counters.bad_indices.load(std::memory_order_relaxed)) {  // an index out of range: nothing drawn
         s.piece_count = plan.first;  // (a multisampled frame's earlier draws stay)

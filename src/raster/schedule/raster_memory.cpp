@@ -42,4 +42,9 @@ void render_context::draw(const raster_mesh &mesh, const draw_params &params) {
 
 status render_context::frame_status() const { return impl_->failure; }
 
+void render_context::report_progress(void (*report)(const progress &, void *), void *user) {
+    impl_->progress_report = report;
+    impl_->progress_user = user;
+}
+
 }  // namespace tiny3d

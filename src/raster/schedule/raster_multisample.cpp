@@ -74,13 +74,18 @@ void render_context::impl::draw_multisampled_band(int band, sample_store &tile) 
 // until none is left keeps the threads' loads even.
 void render_context::impl::end_multisampled_frame() {
     counters.reset(0, pool.size(), bands.count);
+    start_pass(stats.triangles_in);
     auto phase = [&](int thread) {
         band_affinity &mine = affinity[thread];
         mine.rank(bands.count, pool.size() > 1 ? band_affinity::claim_order::own_entries : band_affinity::claim_order::top_down);
-        counters.claim_bands(mine, bands.count, [&](int band) { draw_multisampled_band(band, tiles[thread]); });
+        counters.claim_bands(mine, bands.count, [&](int band) {
+            draw_multisampled_band(band, tiles[thread]);
+            band_drawn(thread);
+        });
         mine.forget(bands.count);  // (counted again by the next frame's draws)
     };
     pool.run(phase);
+    end_pass();
     pending_clear = false;
     piece_count = 0;
     translucent.clear();

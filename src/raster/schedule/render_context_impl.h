@@ -152,6 +152,29 @@ struct render_context::impl {
     std::atomic<bool> out_of_memory{false};
     status failure;
     void draw(const raster_mesh &mesh, const draw_params &params);  // render_context::draw's work
+    // report_progress: the caller's callback, the bands of the current pass drawn so far and
+    // the triangles the pass draws.
+    void (*progress_report)(const render_context::progress &, void *) = nullptr;
+    void *progress_user = nullptr;
+    std::atomic<int> bands_drawn{0};
+    std::size_t pass_triangles = 0;
+    void start_pass(std::size_t triangles) {
+        bands_drawn.store(0, std::memory_order_relaxed);
+        pass_triangles = triangles;
+    }
+    int progress_shown = 0;  // bands_done of the pass's last report
+    void band_drawn(int thread) {  // after each band of a pass; reports on the caller's thread (0)
+        const int done = bands_drawn.fetch_add(1, std::memory_order_relaxed) + 1;
+        if (thread == 0 && progress_report) {
+            progress_shown = done;
+            progress_report({pass_triangles, done, bands.count}, progress_user);
+        }
+    }
+    void end_pass() {  // on the caller's thread, after the pass: its end, if not reported yet
+        const int done = bands_drawn.load(std::memory_order_relaxed);
+        if (progress_report && done > progress_shown) progress_report({pass_triangles, done, bands.count}, progress_user);
+        progress_shown = 0;
+    }
 
     void clear_band(int b) {
         const int y0 = bands.y0(b), y1 = bands.y0(b + 1);
