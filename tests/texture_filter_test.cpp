@@ -260,6 +260,53 @@ TEST(anisotropic_keeps_detail_across_a_long_footprint) {
     }
 }
 
+TEST(anisotropic_taps_are_the_mean_of_trilinear_lookups) {
+    // The definition, evaluated tap by tap with the public trilinear lookup: N = ⌈min(P_major /
+    // P_minor, limit)⌉ taps at u + (i − (N − 1)/2)·∂u/N along the major axis, all at
+    // λ = log2(P_major / N). The filter walks the taps in each level's texel space instead;
+    // this holds it to the definition on a texture of odd size (levels 37×23 … 1×1), for
+    // footprints of every direction, length and level, centres by the edges where taps wrap,
+    // and both wrap modes. Tolerance: its log2 is within 2e-5 of libm's, and float sums.
+    texture t;
+    t.width = 37;
+    t.height = 23;
+    for (int j = 0; j < t.height; ++j)
+        for (int i = 0; i < t.width; ++i) t.texels.push_back(static_cast<float>((i * 7 + j * 13) % 11) / 10.0f);
+    CHECK(build_mipmaps(t).ok());
+    std::uint32_t seed = 12345;
+    auto next = [&] {  // uniform in [0, 1)
+        seed = seed * 1664525u + 1013904223u;
+        return static_cast<float>(seed >> 8) / 16777216.0f;
+    };
+    double worst = 0.0;
+    for (int trial = 0; trial < 4000; ++trial) {
+        const texture_wrap wrap = trial % 5 == 4 ? texture_wrap::clamp : texture_wrap::repeat;
+        const float u = trial % 3 == 0 ? next() * 0.04f - 0.02f : 3.0f * next() - 1.0f;  // some centres by u = 0
+        const float v = 2.0f * next() - 0.5f;
+        const float angle = 6.2831853f * next(), length = std::exp2(10.0f * next() - 7.0f);  // 1/128 … 8 textures
+        const float aspect = 1.0f + 15.0f * next(), across = length / aspect;
+        const float du_dx = length * std::cos(angle), dv_dx = length * std::sin(angle);
+        const float du_dy = -across * std::sin(angle), dv_dy = across * std::cos(angle);
+        const int limit = 1 + trial % 16;
+        const double w = t.width, h = t.height;
+        const double px = std::hypot(du_dx * w, dv_dx * h), py = std::hypot(du_dy * w, dv_dy * h);
+        const bool x_major = px >= py;
+        const double major = x_major ? px : py, minor = x_major ? py : px;
+        const int taps = std::clamp(static_cast<int>(std::ceil(std::min(major / minor, static_cast<double>(limit)) - 1e-6)), 1, limit);
+        const float lod = static_cast<float>(std::log2(major / taps));
+        const double su = (x_major ? du_dx : du_dy) / static_cast<double>(taps), sv = (x_major ? dv_dx : dv_dy) / static_cast<double>(taps);
+        double want = 0.0;
+        for (int i = 0; i < taps; ++i) {
+            const double k = i - 0.5 * (taps - 1);
+            want += texture_sample_trilinear(t, static_cast<float>(u + k * su), static_cast<float>(v + k * sv), lod, wrap);
+        }
+        want /= taps;
+        const double got = texture_sample_anisotropic(t, u, v, du_dx, dv_dx, du_dy, dv_dy, limit, wrap);
+        worst = std::max(worst, std::fabs(got - want));
+    }
+    CHECK_MSG(worst <= 1e-4, "largest difference " + std::to_string(worst));
+}
+
 TEST(filters_on_a_grazing_plane_against_the_supersampled_reference) {
     // Mean error over all pixels (grey levels) against 256 samples per pixel. Mipmaps
     // remove bilinear's aliasing far away; anisotropic taps remove trilinear's blur at

@@ -1,5 +1,7 @@
-// texture.cpp — grey textures: from a canvas (PGM files: texture_pgm.cpp); nearest, bilinear
-// and trilinear sampling with repeat or clamp addressing (mipmaps: texture_mipmap.cpp).
+// texture.cpp — grey textures: from a canvas (PGM files: texture_pgm.cpp); nearest, bilinear,
+// trilinear and anisotropic sampling with repeat or clamp addressing (mipmaps:
+// texture_mipmap.cpp).
+#include <algorithm>
 #include <cmath>
 
 #include "raster.h"
@@ -56,25 +58,72 @@ int floor_index(float t) {
     return i;
 }
 
-// One level's texels (the base level or a mipmap), sampled bilinearly between the four
-// texel centres around (u, v), given as ru = reduce(u), rv = reduce(v) (the same for every
-// level, so trilinear reduces once).
-float bilinear_reduced(const float *texels, int width, int height, float ru, float rv, texture_wrap wrap) {
-    const float fx = ru * static_cast<float>(width) - 0.5f;  // centres at i + 0.5
-    const float fy = rv * static_cast<float>(height) - 0.5f;
-    const int i0 = floor_index(fx), j0 = floor_index(fy);  // |fx|, |fy| ≤ 2n
+// One level of the mip chain (0: the base texture).
+struct level_view {
+    const float *texels;
+    int width, height;
+};
+
+// One level sampled bilinearly between the four texel centres around the texel-space point
+// (fx, fy) = (u·width − ½, v·height − ½) (centres at i + ½), |fx|, |fy| < 2 × the level's size.
+[[gnu::always_inline]] inline float bilinear_at(const level_view &l, float fx, float fy, texture_wrap wrap) {
+    const int i0 = floor_index(fx), j0 = floor_index(fy);
     const float tx = fx - static_cast<float>(i0), ty = fy - static_cast<float>(j0);
-    const int left = address(i0, width, wrap), right = address(i0 + 1, width, wrap);
-    const float *row0 = texels + static_cast<std::size_t>(address(j0, height, wrap)) * width;
-    const float *row1 = texels + static_cast<std::size_t>(address(j0 + 1, height, wrap)) * width;
+    const int left = address(i0, l.width, wrap), right = address(i0 + 1, l.width, wrap);
+    const float *row0 = l.texels + static_cast<std::size_t>(address(j0, l.height, wrap)) * l.width;
+    const float *row1 = l.texels + static_cast<std::size_t>(address(j0 + 1, l.height, wrap)) * l.width;
     const float top = row0[left] + (row0[right] - row0[left]) * tx;
     const float bottom = row1[left] + (row1[right] - row1[left]) * tx;
     return top + (bottom - top) * ty;
 }
 
-bool usable(const texture &tex, float u, float v) {
-    return tex.width > 0 && tex.height > 0 && tex.texels.size() >= static_cast<std::size_t>(tex.width) * tex.height &&
-           std::isfinite(u) && std::isfinite(v);
+// Bilinear at (u, v) given as ru = reduce(u), rv = reduce(v) (the same for every level, so
+// trilinear reduces once).
+[[gnu::always_inline]] inline float bilinear_reduced(const level_view &l, float ru, float rv, texture_wrap wrap) {
+    return bilinear_at(l, ru * static_cast<float>(l.width) - 0.5f, rv * static_cast<float>(l.height) - 0.5f, wrap);
+}
+
+bool usable(const texture &tex) {
+    return tex.width > 0 && tex.height > 0 && tex.texels.size() >= static_cast<std::size_t>(tex.width) * tex.height;
+}
+
+bool usable(const texture &tex, float u, float v) { return usable(tex) && std::isfinite(u) && std::isfinite(v); }
+
+level_view level_at(const texture &tex, int l) {
+    if (l == 0) return {tex.texels.data(), tex.width, tex.height};
+    const texture_level &m = tex.mipmaps[static_cast<std::size_t>(l - 1)];
+    return {m.texels.data(), m.width, m.height};
+}
+
+// The two levels a trilinear lookup at λ blends, found once so that the anisotropic taps,
+// which all share λ, do not search for them again.
+struct level_pair {
+    level_view fine, coarse;
+    float t;     // λ − ⌊λ⌋
+    bool blend;  // false: `fine` alone (t = 0, or λ at the last level)
+};
+
+[[gnu::always_inline]] inline level_pair levels_for(const texture &tex, float lod) {
+    const int last = static_cast<int>(tex.mipmaps.size());
+    if (!(lod > 0.0f)) lod = 0.0f;  // also NaN
+    if (lod >= static_cast<float>(last)) lod = static_cast<float>(last);
+    // k = ⌊λ⌋ by compares and branches, not a conversion: λ varies slowly from pixel to
+    // pixel, so the processor predicts k and starts the texel loads before λ is known.
+    // (λ ≤ last, so the search stops at the last level by itself.)
+    int k = 0;
+    float floor_lod = 0.0f;
+    while (lod >= floor_lod + 1.0f) ++k, floor_lod += 1.0f;
+    const float t = lod - floor_lod;
+    const bool blend = !(t == 0.0f || k == last);
+    return {level_at(tex, k), blend ? level_at(tex, k + 1) : level_view{}, t, blend};
+}
+
+// Trilinear: both levels sampled bilinearly at the same reduced (u, v), then blended.
+[[gnu::always_inline]] inline float sample_levels(const level_pair &levels, float u, float v, texture_wrap wrap) {
+    const float ru = reduce(u, wrap), rv = reduce(v, wrap);
+    const float a = bilinear_reduced(levels.fine, ru, rv, wrap);
+    if (!levels.blend) return a;
+    return a + (bilinear_reduced(levels.coarse, ru, rv, wrap) - a) * levels.t;
 }
 
 }  // namespace
@@ -88,7 +137,7 @@ float texture_sample(const texture &tex, float u, float v, texture_filter filter
         const int j = address(detail::floor_to_int(y), tex.height, wrap);
         return tex.texels[static_cast<std::size_t>(j) * tex.width + i];
     }
-    return bilinear_reduced(tex.texels.data(), tex.width, tex.height, reduce(u, wrap), reduce(v, wrap), wrap);
+    return bilinear_reduced(level_at(tex, 0), reduce(u, wrap), reduce(v, wrap), wrap);
 }
 
 float texture_lod(const texture &tex, float du_dx, float dv_dx, float du_dy, float dv_dy) {
@@ -98,25 +147,57 @@ float texture_lod(const texture &tex, float du_dx, float dv_dx, float du_dy, flo
 
 float texture_sample_trilinear(const texture &tex, float u, float v, float lod, texture_wrap wrap) {
     if (!usable(tex, u, v)) return 0.0f;
-    const int last = static_cast<int>(tex.mipmaps.size());
-    if (!(lod > 0.0f)) lod = 0.0f;  // also NaN
-    if (lod >= static_cast<float>(last)) lod = static_cast<float>(last);
-    // k = ⌊λ⌋ by compares and branches, not a conversion: λ varies slowly from pixel to
-    // pixel, so the processor predicts k and starts the texel loads before λ is known.
-    // (λ ≤ last, so the search stops at the last level by itself.)
-    int k = 0;
-    float floor_lod = 0.0f;
-    while (lod >= floor_lod + 1.0f) ++k, floor_lod += 1.0f;
-    const float t = lod - floor_lod;
-    const float ru = reduce(u, wrap), rv = reduce(v, wrap);
-    auto level = [&](int l) {
-        if (l == 0) return bilinear_reduced(tex.texels.data(), tex.width, tex.height, ru, rv, wrap);
-        const texture_level &m = tex.mipmaps[static_cast<std::size_t>(l - 1)];
-        return bilinear_reduced(m.texels.data(), m.width, m.height, ru, rv, wrap);
-    };
-    const float a = level(k);
-    if (t == 0.0f || k == last) return a;
-    return a + (level(k + 1) - a) * t;
+    return sample_levels(levels_for(tex, lod), u, v, wrap);
+}
+
+float texture_sample_anisotropic(const texture &tex, float u, float v, float du_dx, float dv_dx, float du_dy,
+                                 float dv_dy, int max_taps, texture_wrap wrap) {
+    if (!usable(tex, u, v)) return 0.0f;
+    const float w = static_cast<float>(tex.width), h = static_cast<float>(tex.height);
+    // The footprint's two axes in texels (the parallelogram spanned by the screen steps), as
+    // in EXT_texture_filter_anisotropic: P_x = |∂(u, v)/∂x|, P_y = |∂(u, v)/∂y|.
+    const float px2 = du_dx * w * (du_dx * w) + dv_dx * h * (dv_dx * h);
+    const float py2 = du_dy * w * (du_dy * w) + dv_dy * h * (dv_dy * h);
+    if (!std::isfinite(px2 + py2)) return texture_sample_trilinear(tex, u, v, 0.0f, wrap);
+    const bool x_major = px2 >= py2;
+    const float major2 = x_major ? px2 : py2, minor2 = x_major ? py2 : px2;
+    const int limit = std::clamp(max_taps, 1, 64);
+    // N = ⌈major / minor⌉ taps, at most `limit`; each filters major / N texels across, so the
+    // level is log2(major / N) — the minor axis's when N is not clamped.
+    const float ratio = minor2 > 0.0f ? std::sqrt(major2 / minor2) : static_cast<float>(limit);
+    const int taps = std::clamp(static_cast<int>(std::ceil(std::min(ratio, static_cast<float>(limit)))), 1, limit);
+    const float n = static_cast<float>(taps), inv_n = 1.0f / n;
+    const float lod = 0.5f * detail::fast_log2(major2 * inv_n * inv_n);  // −∞ for a zero footprint: level 0
+    const level_pair levels = levels_for(tex, lod);
+    if (taps == 1) return sample_levels(levels, u, v, wrap);
+    // Taps evenly spread over the major axis, centred on (u, v): tap i at (i + ½)/N − ½ of it.
+    const float step_u = (x_major ? du_dx : du_dy) * inv_n, step_v = (x_major ? dv_dx : dv_dy) * inv_n;
+    const float first = 0.5f - 0.5f * n;  // tap 0's offset, in steps
+    float sum = 0.0f;
+    if (wrap == texture_wrap::repeat && std::fabs(step_u) * n <= 0.5f && std::fabs(step_v) * n <= 0.5f) {
+        // The usual case: walk the taps in each level's texel space from the centre, reduced
+        // once to [0, 1]. The footprint spans at most half the texture, so a tap's texel
+        // index stays within [−n, 2n) for a level n texels across, which address() wraps.
+        const float ru = reduce(u, wrap), rv = reduce(v, wrap);
+        const auto walk = [&](const level_view &l) {
+            const float w_l = static_cast<float>(l.width), h_l = static_cast<float>(l.height);
+            const float sx = step_u * w_l, sy = step_v * h_l;
+            float fx = (ru + step_u * first) * w_l - 0.5f, fy = (rv + step_v * first) * h_l - 0.5f;
+            float total = 0.0f;
+            for (int i = 0; i < taps; ++i, fx += sx, fy += sy) total += bilinear_at(l, fx, fy, wrap);
+            return total;
+        };
+        const float fine_sum = walk(levels.fine);
+        if (!levels.blend) return fine_sum * inv_n;
+        const float coarse_sum = walk(levels.coarse);
+        // The mean of the taps' trilinear blends a + (b − a)·t is the blend of their means.
+        return (fine_sum + (coarse_sum - fine_sum) * levels.t) * inv_n;
+    }
+    float tap_u = u + step_u * first, tap_v = v + step_v * first;
+    for (int i = 0; i < taps; ++i, tap_u += step_u, tap_v += step_v)
+        if (std::isfinite(tap_u) && std::isfinite(tap_v)) [[likely]]
+            sum += sample_levels(levels, tap_u, tap_v, wrap);
+    return sum * inv_n;
 }
 
 }  // namespace tiny3d
