@@ -43,6 +43,7 @@ struct band_prefetch;
 struct sample_pattern;
 class sample_store;
 struct msaa_triangle;
+struct tap_walk;
 
 inline constexpr int BATCH_LANES = 8;  // = SETUP_BATCH (the set-up batches' lanes)
 
@@ -77,6 +78,8 @@ struct kernel_table {
     bool resolve_rows_simd;  // rows resolved four samples at a time (SSE2)
     void (*resolve_blocks4)(float *p, const std::uint8_t *touched0, const std::uint8_t *touched1, int pixels,
                             float clear_colour, float *colour0, float *z0, float *colour1, float *z1);
+    // Textures: the anisotropic filter's taps over one mip level (null: walk_taps_portable).
+    float (*walk_taps)(const tap_walk &w);
 };
 
 // The table of `simd` (every one exists; kernels_run says whether this CPU and build run it).

@@ -6,11 +6,14 @@
 //    intensity; its coverage is compared with a tolerance there) — on Scene S, a bumpy
 //    unseen mesh, slivers, triangles far outside the canvas (clipped, huge coordinates) and
 //    triangles whose edges lie on band edges, on one and two threads;
-//  * the tables' line kernels draw the portable line kernel's image (to float rounding).
+//  * the tables' line kernels draw the portable line kernel's image (to float rounding);
+//  * the tables' anisotropic tap walks return the portable walk's float bit for bit.
 #include "harness.h"
 
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -21,6 +24,7 @@
 #include "raster.h"
 #include "raster_test_util.h"
 #include "../src/kernels.h"
+#include "../src/raster/texture/texture_walk.h"
 
 using namespace tiny3d;
 
@@ -207,3 +211,43 @@ TEST(every_line_table_draws_the_portable_lines) {
 }
 
 
+TEST(every_tap_walk_returns_the_portable_walks_bits) {
+    // The anisotropic filter's tap walks (src/raster/texture/texture_walk.h) on levels of odd
+    // and tiny sizes, 1 to 64 taps in every direction, starting anywhere the contract allows
+    // (indices within one wrap of the level, so across both edges): every table's kernel
+    // returns exactly the portable walk's float.
+    std::vector<float> texels;
+    std::uint32_t seed = 2024;
+    auto next = [&] {  // uniform in [0, 1)
+        seed = seed * 1664525u + 1013904223u;
+        return static_cast<float>(seed >> 8) / 16777216.0f;
+    };
+    const int sizes[][2] = {{1, 1}, {2, 1}, {3, 5}, {37, 23}, {64, 64}, {256, 7}};
+    int compared = 0;
+    for (const auto &size : sizes) {
+        const int w = size[0], h = size[1];
+        texels.resize(static_cast<std::size_t>(w) * h);
+        for (float &t : texels) t = next();
+        for (int trial = 0; trial < 300; ++trial) {
+            detail::tap_walk walk{texels.data(), w, h, 0, 0, 0, 0, 1 + trial % 64};
+            // Taps within the texel-space box [−w/4 − ½, 5w/4 − ½) × (the same in y): the
+            // filter's range (a footprint within half the texture about a centre in [0, 1]).
+            const float n = static_cast<float>(walk.taps);
+            const float span_x = 0.5f * static_cast<float>(w) * next(), span_y = 0.5f * static_cast<float>(h) * next();
+            const float angle = 6.2831853f * next();
+            walk.sx = span_x * std::cos(angle) / n;
+            walk.sy = span_y * std::sin(angle) / n;
+            walk.fx0 = static_cast<float>(w) * next() - 0.5f - 0.5f * (n - 1.0f) * walk.sx;
+            walk.fy0 = static_cast<float>(h) * next() - 0.5f - 0.5f * (n - 1.0f) * walk.sy;
+            const float want = detail::walk_taps_portable(walk);
+            for (raster_simd s : ALL) {
+                if (!detail::kernels_run(s) || !detail::kernels_for(s).walk_taps) continue;
+                const float got = detail::kernels_for(s).walk_taps(walk);
+                CHECK_MSG(std::memcmp(&got, &want, sizeof got) == 0,
+                          std::string(raster_simd_name(s)) + ": " + std::to_string(got) + " vs " + std::to_string(want));
+                ++compared;
+            }
+        }
+    }
+    std::printf("  tap walks compared: %d\n", compared);
+}

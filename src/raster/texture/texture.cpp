@@ -6,6 +6,8 @@
 
 #include "raster.h"
 #include "texture_lod.h"
+#include "texture_walk.h"
+#include "../../kernels.h"
 #include "../../canvas/splat.h"  // floor_to_int
 
 namespace tiny3d {
@@ -179,13 +181,18 @@ float texture_sample_anisotropic(const texture &tex, float u, float v, float du_
         // once to [0, 1]. The footprint spans at most half the texture, so a tap's texel
         // index stays within [−n, 2n) for a level n texels across, which address() wraps.
         const float ru = reduce(u, wrap), rv = reduce(v, wrap);
+        float (*const walk_taps)(const detail::tap_walk &) = detail::default_kernels().walk_taps;
         const auto walk = [&](const level_view &l) {
             const float w_l = static_cast<float>(l.width), h_l = static_cast<float>(l.height);
-            const float sx = step_u * w_l, sy = step_v * h_l;
-            float fx = (ru + step_u * first) * w_l - 0.5f, fy = (rv + step_v * first) * h_l - 0.5f;
-            float total = 0.0f;
-            for (int i = 0; i < taps; ++i, fx += sx, fy += sy) total += bilinear_at(l, fx, fy, wrap);
-            return total;
+            const detail::tap_walk taps_here{l.texels,
+                                             l.width,
+                                             l.height,
+                                             (ru + step_u * first) * w_l - 0.5f,
+                                             (rv + step_v * first) * h_l - 0.5f,
+                                             step_u * w_l,
+                                             step_v * h_l,
+                                             taps};
+            return walk_taps ? walk_taps(taps_here) : detail::walk_taps_portable(taps_here);
         };
         const float fine_sum = walk(levels.fine);
         if (!levels.blend) return fine_sum * inv_n;
@@ -199,5 +206,19 @@ float texture_sample_anisotropic(const texture &tex, float u, float v, float du_
             sum += sample_levels(levels, tap_u, tap_v, wrap);
     return sum * inv_n;
 }
+
+namespace detail {
+
+float walk_taps_portable(const tap_walk &w) {
+    const level_view level{w.texels, w.width, w.height};
+    float lanes[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+    for (int i = 0; i < w.taps; ++i) {
+        const float k = static_cast<float>(i);
+        lanes[i % 8] += bilinear_at(level, w.fx0 + k * w.sx, w.fy0 + k * w.sy, texture_wrap::repeat);
+    }
+    return ((lanes[0] + lanes[4]) + (lanes[2] + lanes[6])) + ((lanes[1] + lanes[5]) + (lanes[3] + lanes[7]));
+}
+
+}  // namespace detail
 
 }  // namespace tiny3d
