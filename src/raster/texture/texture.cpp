@@ -167,7 +167,10 @@ float texture_sample_anisotropic(const texture &tex, float u, float v, float du_
     // N = ⌈major / minor⌉ taps, at most `limit`; each filters major / N texels across, so the
     // level is log2(major / N) — the minor axis's when N is not clamped.
     const float ratio = minor2 > 0.0f ? std::sqrt(major2 / minor2) : static_cast<float>(limit);
-    const int taps = std::clamp(static_cast<int>(std::ceil(std::min(ratio, static_cast<float>(limit)))), 1, limit);
+    // ⌈r⌉ for r = min(ratio, limit) ∈ [1, 64] (NaN: 1 tap): truncation, then one up.
+    const float r = std::min(ratio, static_cast<float>(limit));
+    const int whole = r >= 1.0f ? static_cast<int>(r) : 1;
+    const int taps = std::min(whole + (static_cast<float>(whole) < r ? 1 : 0), limit);
     const float n = static_cast<float>(taps), inv_n = 1.0f / n;
     const float lod = 0.5f * detail::fast_log2(major2 * inv_n * inv_n);  // −∞ for a zero footprint: level 0
     const level_pair levels = levels_for(tex, lod);
