@@ -1,16 +1,16 @@
 // vertex_stage_test.cpp — the vertex stage's SIMD kernels against their portable references,
 // bit for bit, on ordinary, extreme and non-finite points: the 4-wide projection both
 // pipelines use (src/pipeline/project4.h) against clip_outcode and clip_to_screen, and the
-// render context's vertex kernels (src/raster/vertex/vertex_kernels_sse2.h) against
+// render context's vertex kernels (src/pipeline/vertex_kernels_sse2.h) against
 // vertex_transform.h's.
 #include <cstring>
 #include <random>
 #include <vector>
 
 #include "../src/pipeline/project4.h"
+#include "../src/pipeline/vertex_kernels_sse2.h"
+#include "../src/pipeline/vertex_transform.h"
 #include "../src/raster/msaa/msaa.h"
-#include "../src/raster/vertex/vertex_kernels_sse2.h"
-#include "../src/raster/vertex/vertex_transform.h"
 #include "harness.h"
 #include "../src/simd_config.h"
 

@@ -1,7 +1,7 @@
 // raster_context.cpp — the render context: a draw's steps (cull, transform, set up, clip
 // and bin, draw the bands in parallel) and the frame's begin and end. Its buffers live in
-// render_context::impl (render_context_impl.h), reused from frame to frame; the vertex
-// kernels are in ../vertex/, the band sharing in render_bands.h, the per-pixel path in
+// render_context::impl (render_context_impl.h), reused from frame to frame; the vertex stage
+// is src/pipeline/, the band sharing in render_bands.h, the per-pixel path in
 // raster_pixel_path.cpp, the draw's memory guard in raster_memory.cpp.
 #include <algorithm>
 #include <new>
@@ -156,7 +156,7 @@ void render_context::impl::set_up_piece(int thread, int number, const raster_mes
         return;
     }
     if (!view) {
-        if (!plan.shared_vertices) transform(m, p, job, {nullptr, m.positions.size()}, seg);
+        if (!plan.shared_vertices) transform(job, {nullptr, m.positions.size()}, seg);
         setup_range(m, p, state, job.generic, plan.shared_vertices ? segments[0] : seg, first, last, out);
         return;
     }
@@ -174,12 +174,12 @@ void render_context::impl::set_up_piece(int thread, int number, const raster_mes
         }
     }
     const bool per_chunk = walked_vertices < m.positions.size();
-    if (!per_chunk) transform(m, p, job, {nullptr, m.positions.size()}, seg);
+    if (!per_chunk) transform(job, {nullptr, m.positions.size()}, seg);
     const std::uint32_t *chunk_vertices = p.clusters->vertices().data();
     for (std::size_t k = first; k < last; ++k) {
         if (!seg.walk[k - first]) continue;
         const raster_cluster &c = (*chunks)[k];
-        if (per_chunk) transform(m, p, job, seg.not_yet_transformed(chunk_vertices + c.vertex_first, c.vertex_count), seg);
+        if (per_chunk) transform(job, seg.not_yet_transformed(chunk_vertices + c.vertex_first, c.vertex_count), seg);
         setup_range(m, p, state, job.generic, seg, c.first, c.first + c.count, out);
     }
 }
@@ -396,7 +396,7 @@ void render_context::impl::set_up_and_draw(int thread, const raster_mesh &m, con
         const std::size_t blocks = (m.positions.size() + 63) / 64;
         const std::size_t first = std::min(m.positions.size(), blocks * thread / n * 64);
         const std::size_t last = std::min(m.positions.size(), blocks * (thread + 1) / n * 64);
-        transform(m, p, job, {nullptr, last - first, static_cast<std::uint32_t>(first)}, segments[0]);
+        transform(job, {nullptr, last - first, static_cast<std::uint32_t>(first)}, segments[0]);
         counters.vertex_ranges_done.fetch_add(1, std::memory_order_release);
         phase_counters::wait_for(counters.vertex_ranges_done, n);
     }
@@ -494,7 +494,7 @@ void render_context::impl::draw(const raster_mesh &mesh, const draw_params &para
                               clusters->triangle_count() == mesh.triangles.size();
     cluster_view view{};
     if (use_clusters) view = make_cluster_view(mvp, s.target->width, s.target->height, s.guard, params.cull);
-    const vertex_job job = make_vertex_job(params, mvp, generic, s.target->width, s.target->height, s.pattern->bits);
+    const vertex_job job = make_vertex_job(mesh, params, mvp, generic, s.target->width, s.target->height, s.pattern->bits);
     if (!s.multisampled()) s.piece_count = 0;  // (a multisampled frame keeps every draw's pieces)
     const draw_plan plan = s.plan_draw(use_clusters ? clusters->clusters().size() : mesh.triangles.size(), use_clusters);
     s.grow_segments(mesh.positions.size(), generic, plan.shared_vertices ? 1 : s.pool.size());

@@ -1,6 +1,7 @@
 // render_context_impl.h — the schedule stage (internal): the render context's state
 // (render_context::impl) and the per-pixel path's triangle. In: the program's draws
-// (raster.h). Out: the frame — each draw's vertices transformed (vertex/), its triangles set
+// (raster.h). Out: the frame — each draw's vertices transformed (the vertex stage,
+// pipeline/vertex_transform.h, handed a vertex_job), its triangles set
 // up (setup/) in pieces shared by the threads and binned by band (render_bands.h), then
 // each band drawn by one thread through the context's kernel table (fill/, msaa/) or the
 // per-pixel path (raster_pixel_path.cpp: Phong, textures, translucency). Called by the
@@ -14,9 +15,9 @@
 #include <vector>
 
 #include "../../parallel/worker_pool.h"
+#include "../../pipeline/vertex_transform.h"
 #include "../fill/fill.h"
 #include "../msaa/msaa.h"
-#include "../vertex/vertex_transform.h"
 #include "cluster_view.h"
 #include "render_bands.h"
 
@@ -28,6 +29,33 @@ namespace detail {
 // spans fewer pixels than the 32-bit fill allows; never tighter than the frustum itself.
 inline constexpr float GUARD_SPAN_PIXELS = 2000.0f;
 inline constexpr float MAX_GUARD = 4.0f;
+
+// The vertex stage's job for drawing m with p through mvp (= view_projection · model) on a
+// width × height target, vertices snapped to 1/2^subpixel_bits px; `generic`: the per-pixel
+// path's attributes are wanted. Reads m and p, which must outlive the job.
+inline vertex_job make_vertex_job(const raster_mesh &m, const draw_params &p, const mat4_t &mvp, bool generic,
+                                  int width, int height, int subpixel_bits) {
+    vertex_job job;
+    job.positions = m.positions.data();
+    job.normals = m.normals.data();
+    job.uvs = m.uvs.data();
+    job.mvp = mvp;
+    job.model = p.model;
+    job.nt = make_normal_transform(p.model);
+    job.lights = &p.lights;
+    job.surface = &p.surface;
+    job.width = width;
+    job.height = height;
+    job.subpixel_bits = subpixel_bits;
+    job.gouraud = p.shade == shading::gouraud;
+    job.generic = generic;
+    job.material_lit = job.gouraud && !material_is_lambert(p.surface);
+    job.eye = job.material_lit ? viewer_of(p.view_projection) : viewer{};
+    job.directional_gouraud = job.gouraud && !generic && !job.material_lit &&
+                              std::all_of(p.lights.lights, p.lights.lights + p.lights.count,
+                                          [](const light_t &l) { return l.kind == light_kind::directional; });
+    return job;
+}
 
 // A triangle for the per-pixel path (Phong, textures, translucency).
 struct generic_triangle {
@@ -192,9 +220,8 @@ struct render_context::impl {
     void queue_translucent(const detail::draw_plan &plan);
     void gather_stats(const detail::draw_plan &plan);
 
-    void transform(const raster_mesh &m, const draw_params &p, const detail::vertex_job &job, detail::vertex_set set,
-                   segment &out) {
-        detail::transform_vertices(m, p, job, guard, set, out.vertices.data(), out.clip.data(), out.vertex_attr.data());
+    void transform(const detail::vertex_job &job, detail::vertex_set set, segment &out) {
+        detail::transform_vertices(job, guard, set, out.vertices.data(), out.clip.data(), out.vertex_attr.data());
     }
     void set_up_piece(int thread, int number, const raster_mesh &m, const draw_params &p, const detail::vertex_job &job,
                       std::uint32_t state, const detail::cluster_view *view, const detail::draw_plan &plan);
