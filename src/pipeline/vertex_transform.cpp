@@ -49,8 +49,7 @@ void shade_general(const vertex_job &job, vertex_set set, xvertex *vertices, flo
         xvertex &x = vertices[i];
         vec3_t world{0, 0, 0}, normal{0, 0, 0};
         if (job.gouraud || job.generic) {
-            const vec4_t h = mul_point_scalar(job.model, job.positions[i]);
-            world = {h.x, h.y, h.z};
+            world = world_of(job.model, job.positions[i]);
             normal = apply_normal_transform(job.nt, job.normals[i]);
         }
         if (!job.gouraud) x.shade = 0.0f;

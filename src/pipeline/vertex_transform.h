@@ -78,6 +78,13 @@ inline void project_one(const mat4_t &m, vec3_t position, float guard, int width
     }
 }
 
+// The world position of a model-space point (the xyz part of model·(p, 1)): the vertex's for
+// lighting, and the flat shading's corners (the render context's set-up).
+inline vec3_t world_of(const mat4_t &model, vec3_t p) {
+    const vec4_t h = mul_point_scalar(model, p);
+    return {h.x, h.y, h.z};
+}
+
 // Gouraud intensity of one vertex lit by directional lights only (no position needed).
 inline float shade_directional_one(const light_rig &rig, const normal_transform &nt, vec3_t normal) {
     return shade_gouraud_vertex(rig, {0, 0, 0}, apply_normal_transform(nt, normal));

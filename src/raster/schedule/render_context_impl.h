@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "../../parallel/worker_pool.h"
@@ -170,6 +171,9 @@ struct render_context::impl {
     segment segments[detail::MAX_THREADS];
     std::vector<piece> pieces;  // the frame's first piece_count are in use (grown, never shrunk)
     int piece_count = 0;
+    std::span<piece> pieces_of(const detail::draw_plan &plan) {  // a draw's, or the frame's: {0, piece_count}
+        return {pieces.data() + plan.first, static_cast<std::size_t>(plan.count)};
+    }
     std::vector<draw_params> states;                    // this frame's draw calls
     std::vector<detail::generic_triangle> translucent;  // queued for end_frame
     detail::band_layout bands;
@@ -251,13 +255,8 @@ struct render_context::impl {
         }
         bin_bands(first, last, index, out);
     }
-    // Bin entry `index` into the bins of the bands of rows [y0, y1] (inclusive, on the
-    // target).
-    [[gnu::always_inline]] void bin_rows(int y0, int y1, std::uint32_t index, piece &out) {
-        bin_bands(bands.of(y0), bands.of(y1), index, out);
-    }
-    // The same for bands [first, last] (inclusive). Inlined: a call would spill bin_fast's
-    // live values around it.
+    // Bin entry `index` into the bins of bands [first, last] (inclusive). Inlined: a call
+    // would spill bin_fast's live values around it.
     [[gnu::always_inline]] void bin_bands(int first, int last, std::uint32_t index, piece &out) {
         for (int b = first; b <= last; ++b) out.bins[b].push_back(index);
     }
@@ -266,14 +265,13 @@ struct render_context::impl {
     // The last of out.generic (opaque) into the bins of rows [y0, y1] (inclusive).
     void bin_generic(int y0, int y1, piece &out) {
         if (y0 > y1) return;
-        bin_rows(y0, y1, static_cast<std::uint32_t>(out.generic.size() - 1) | detail::GENERIC_BIN, out);
+        bin_bands(bands.of(y0), bands.of(y1), static_cast<std::uint32_t>(out.generic.size() - 1) | detail::GENERIC_BIN, out);
     }
 
     // Multisampled frames (raster_multisample.cpp).
     // Appends f (made by make_msaa_triangle: either form) with the draw state and bins it.
     void add_msaa(const detail::msaa_triangle &f, std::uint32_t state, piece &out);
     void draw_multisampled_band(int band, detail::sample_store &tile);
-    void end_multisampled_frame();
 };
 
 }  // namespace tiny3d
