@@ -2,8 +2,9 @@
 # Checks that the modules depend on each other one way (run by `make test-portable`). The
 # modules, lowest first; a module may include only modules before it:
 LAYERS="tiny3d_result math3d animation canvas lines lighting material mesh pipeline parallel raster wireframe lab scene"
-# Checked: every include/<module>.h and every file under src/<module>/ (its "<module>.h"
-# includes and its "../<folder>/…" includes). The compat layer's two documented exceptions
+# Checked: every include/<module>.h and every file under src/<module>/, at any depth (its
+# "<module>.h" includes and its path includes, "../<folder>/…" or "../../<folder>/…": the
+# src/<folder>/ they reach). The compat layer's two documented exceptions
 # are not module headers: include/compat/canvas_alias.h pulls in lines.h (the report's
 # canvas.h declared draw_line_f), and renderer.h / tiny3d.h gather modules for programs.
 # Prints what it found and "header layers: N passed, N failed"; exits non-zero on a failure.
@@ -18,8 +19,9 @@ check() {
   r_own=$(rank "$own")
   for inc in $(grep -oE '^[[:space:]]*#[[:space:]]*include "[^"]+"' "$f" | sed -E 's/.*"([^"]+)"/\1/'); do
     case $inc in
-      ../*/*) m=${inc#../}; m=${m%%/*} ;;          # ../<folder>/file: that folder's module
-      */*) continue ;;
+      */*)                                         # a path: the src/<module>/ folder it names
+        m=$(realpath -m --relative-to=. "$(dirname "$f")/$inc")
+        case $m in src/*/*) m=${m#src/}; m=${m%%/*} ;; *) continue ;; esac ;;
       *.h) m=${inc%.h} ;;
       *) continue ;;
     esac

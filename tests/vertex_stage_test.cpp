@@ -1,16 +1,17 @@
 // vertex_stage_test.cpp — the vertex stage's SIMD kernels against their portable references,
 // bit for bit, on ordinary, extreme and non-finite points: the 4-wide projection both
 // pipelines use (src/pipeline/project4.h) against clip_outcode and clip_to_screen, and the
-// render context's vertex kernels (src/raster/vertex/vertex_kernels_sse2.h) against
-// vertex_transform.h's.
+// render context's vertex kernels (src/pipeline/vertex_kernels_sse2.h) against
+// vertex_transform.h's; and the stage's snap (src/pipeline/screen_snap.h) against set-up's.
+#include <cmath>
 #include <cstring>
 #include <random>
 #include <vector>
 
 #include "../src/pipeline/project4.h"
+#include "../src/pipeline/vertex_kernels_sse2.h"
+#include "../src/pipeline/vertex_transform.h"
 #include "../src/raster/msaa/msaa.h"
-#include "../src/raster/vertex/vertex_kernels_sse2.h"
-#include "../src/raster/vertex/vertex_transform.h"
 #include "harness.h"
 #include "../src/simd_config.h"
 
@@ -158,3 +159,35 @@ TEST(project_one_outcodes_and_screen_position) {
     CHECK(!v.snapped);
 }
 
+
+// The vertex stage's snap is the one the set-up uses (snap_vertex, setup.h), and both round
+// to nearest, ties to even (std::lrint), whichever instruction the build uses.
+TEST(snap_screen_point_matches_set_up_snap_vertex_and_lrint) {
+    std::vector<float> xs = {0.0f, -0.0f, 0.03125f, 0.09375f, -0.09375f, 0.15625f, 511.96875f, -3.5f, 1e-30f,
+                             tiny3d::RASTER_MAX_COORD, -tiny3d::RASTER_MAX_COORD,
+                             std::nextafter(tiny3d::RASTER_MAX_COORD, INFINITY), -1e30f, INFINITY, -INFINITY, NAN};
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> u(-5000.0f, 5000.0f);
+    for (int k = 0; k < 300; ++k) xs.push_back(u(rng));
+    int mismatches = 0;
+    for (int bits : {tiny3d::RASTER_SUBPIXEL_BITS, tiny3d::detail::MSAA_16_SUBPIXEL_BITS})
+        for (float x : xs)
+            for (float y : {0.5f, -1234.40625f, x}) {
+                std::int32_t sx = -7, sy = -7, vx = -7, vy = -7;
+                const bool snapped = tiny3d::detail::snap_screen_point(x, y, bits, sx, sy);
+                const bool set_up = tiny3d::detail::snap_vertex({x, y, 0.5f, 0.0f}, vx, vy, bits);
+                mismatches += snapped != set_up || sx != vx || sy != vy;
+                const bool in_range = std::isfinite(x) && std::isfinite(y) && std::fabs(x) <= tiny3d::RASTER_MAX_COORD &&
+                                      std::fabs(y) <= tiny3d::RASTER_MAX_COORD;
+                mismatches += snapped != in_range;
+                if (snapped) mismatches += sx != std::lrint(std::ldexp(x, bits)) || sy != std::lrint(std::ldexp(y, bits));
+                else mismatches += sx != -7 || sy != -7;  // untouched
+            }
+    CHECK_EQ(mismatches, 0);
+    std::int32_t sx = 0, sy = 0;  // ties to even on the 1/16 px grid: 1.5 → 2, 2.5 → 2, −1.5 → −2
+    CHECK(tiny3d::detail::snap_screen_point(1.5f / 16, 2.5f / 16, 4, sx, sy));
+    CHECK_EQ(sx, 2);
+    CHECK_EQ(sy, 2);
+    CHECK(tiny3d::detail::snap_screen_point(-1.5f / 16, 0.0f, 4, sx, sy));
+    CHECK_EQ(sx, -2);
+}

@@ -289,7 +289,7 @@ void fill_triangle_scanline(canvas_t &canvas, zbuffer *depth, const screen_verte
                             depth_func test) {
     if (!canvas.pixels || (depth && (depth->width() != canvas.width || depth->height() != canvas.height))) return;
     for (int k = 0; k < 3; ++k)
-        if (!detail::usable(v[k]) || !std::isfinite(v[k].z) || !std::isfinite(intensity[k])) return;
+        if (!detail::snappable(v[k].x, v[k].y) || !std::isfinite(v[k].z) || !std::isfinite(intensity[k])) return;
     // Sort by y (a bubble sort of the three), keeping each vertex's intensity with it.
     int order[3] = {0, 1, 2};
     if (v[order[0]].y > v[order[1]].y) std::swap(order[0], order[1]);

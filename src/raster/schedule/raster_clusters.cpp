@@ -61,47 +61,42 @@ raster_cluster build_cluster(const raster_mesh &m, std::uint32_t first, std::uin
     // Normal cone: axis = the normalised mean of the unit face normals.
     dvec3 sum{0, 0, 0};
     double min_area = INFINITY, edge_ratio = 0;
-    auto face = [&](std::uint32_t i, dvec3 &p0) {  // unnormalised normal (p1 − p0) × (p2 − p0)
-        p0 = widen(m.positions[m.triangles[i][0]]);
-        return cross(widen(m.positions[m.triangles[i][1]]) - p0, widen(m.positions[m.triangles[i][2]]) - p0);
+    // Calls f(n, p0, p1, p2) for each face: n its unnormalised normal (p1 − p0) × (p2 − p0).
+    auto each_face = [&](auto &&f) {
+        for (std::uint32_t i = first; i < first + count; ++i) {
+            const dvec3 p0 = widen(m.positions[m.triangles[i][0]]), p1 = widen(m.positions[m.triangles[i][1]]),
+                        p2 = widen(m.positions[m.triangles[i][2]]);
+            f(cross(p1 - p0, p2 - p0), p0, p1, p2);
+        }
     };
-    for (std::uint32_t i = first; i < first + count; ++i) {
-        dvec3 p0;
-        const dvec3 n = face(i, p0);
+    each_face([&](const dvec3 &n, const dvec3 &p0, const dvec3 &p1, const dvec3 &p2) {
         const double len = length(n);
         min_area = std::min(min_area, len);
         if (len > 0) sum = sum + n * (1 / len);
-        const double edges = length(widen(m.positions[m.triangles[i][1]]) - p0) + length(widen(m.positions[m.triangles[i][2]]) - p0);
-        edge_ratio = std::max(edge_ratio, edges / len);
-    }
+        edge_ratio = std::max(edge_ratio, (length(p1 - p0) + length(p2 - p0)) / len);
+    });
     c.min_double_area = min_area * (1 - BOUND_SLACK);
     c.edge_ratio = edge_ratio * (1 + BOUND_SLACK);
     const double sum_len = length(sum);
     if (!(min_area > 0) || !(sum_len > 0)) return c;
     const dvec3 axis = sum * (1 / sum_len);
     double cone_cos = 1;
-    for (std::uint32_t i = first; i < first + count; ++i) {
-        dvec3 p0;
-        const dvec3 n = face(i, p0);
+    each_face([&](const dvec3 &n, const dvec3 &, const dvec3 &, const dvec3 &) {
         cone_cos = std::min(cone_cos, dot(n, axis) / length(n));
-    }
+    });
     cone_cos -= BOUND_SLACK;
     if (!(cone_cos > MIN_CONE_COS)) return c;
     // Apex = center − t·axis with the smallest t that puts it on or behind every plane:
     // n·(p0 − center + t·axis) ≥ 0  ⇔  t ≥ n·(center − p0) / (n·axis).
     double t = -INFINITY;
-    for (std::uint32_t i = first; i < first + count; ++i) {
-        dvec3 p0;
-        const dvec3 n = face(i, p0);
+    each_face([&](const dvec3 &n, const dvec3 &p0, const dvec3 &, const dvec3 &) {
         t = std::max(t, dot(n, center - p0) / dot(n, axis));
-    }
+    });
     const dvec3 apex = center - axis * t;
     double margin = INFINITY;  // the smallest n·(p0 − apex), ≈ 0 (rounding either way)
-    for (std::uint32_t i = first; i < first + count; ++i) {
-        dvec3 p0;
-        const dvec3 n = face(i, p0);
+    each_face([&](const dvec3 &n, const dvec3 &p0, const dvec3 &, const dvec3 &) {
         margin = std::min(margin, dot(n, p0 - apex) / length(n));
-    }
+    });
     store(axis, c.axis);
     store(apex, c.apex);
     c.cone_cos = cone_cos;

@@ -1,7 +1,7 @@
 // raster_context.cpp — the render context: a draw's steps (cull, transform, set up, clip
 // and bin, draw the bands in parallel) and the frame's begin and end. Its buffers live in
-// render_context::impl (render_context_impl.h), reused from frame to frame; the vertex
-// kernels are in ../vertex/, the band sharing in render_bands.h, the per-pixel path in
+// render_context::impl (render_context_impl.h), reused from frame to frame; the vertex stage
+// is src/pipeline/, the band sharing in render_bands.h, the per-pixel path in
 // raster_pixel_path.cpp, the draw's memory guard in raster_memory.cpp.
 #include <algorithm>
 #include <new>
@@ -31,12 +31,6 @@ bool to_screen(const vec4_t &clip, int width, int height, screen_vertex &out) {
 
 // Whether a draw takes the per-pixel path (Phong, a texture, translucency), not the fast one.
 bool per_pixel_path(const draw_params &p) { return p.shade == shading::phong || p.tex != nullptr || p.alpha < 1.0f; }
-
-// The world position of a model-space point (the xyz part of model·(p, 1)).
-vec3_t world_of(const mat4_t &model, vec3_t p) {
-    const vec4_t h = mul_point_scalar(model, p);
-    return {h.x, h.y, h.z};
-}
 
 // Whether every vertex index of triangles [first, last) is < count (branch-free, SSE2).
 bool indices_below(const std::vector<std::array<std::uint32_t, 3>> &triangles, std::size_t first, std::size_t last,
@@ -81,6 +75,7 @@ void render_context::impl::emit(const clip_vertex *poly, int n, const draw_param
             continue;
         const float shade[3] = {c[0]->attr[ATTR_SHADE], c[1]->attr[ATTR_SHADE], c[2]->attr[ATTR_SHADE]};
         const float depth[3] = {v[0].z, v[1].z, v[2].z};
+        int y0, y1;  // a per-pixel-path triangle's rows, for its bins
         if (!multisampled()) {
             const triangle_edges t = triangle_setup(v[0], v[1], v[2], full, p.cull);
             if (!t.valid) {
@@ -92,33 +87,31 @@ void render_context::impl::emit(const clip_vertex *poly, int n, const draw_param
                 add_fast(t, depth, shade, out);
                 continue;
             }
-            out.generic.push_back(make_generic_triangle(v, c, state));
-            if (p.alpha >= 1.0f) bin_generic(t.min_y, t.max_y, out);
-            continue;
-        }
-        // Multisampled: on the pattern's grid, as the unclipped triangles (setup_range); a
-        // triangle without a covered pixel centre still counts (its samples may be covered).
-        std::int32_t X[3], Y[3];
-        bool usable = true;
-        for (int j = 0; j < 3; ++j) usable = usable && detail::snap_vertex(v[j], X[j], Y[j], pattern->bits);
-        const std::int64_t area2 = usable ? detail::snapped_area2(X, Y) : 0;
-        if (area2 == 0) continue;
-        if (detail::facing_culled(area2, p.cull)) {
-            out.stats.culled_backface += 1;
-            continue;
-        }
-        out.stats.rasterized += 1;
-        if (generic) {
-            out.generic.push_back(make_generic_triangle(v, c, state));
-            if (p.alpha >= 1.0f) {
-                int x0, x1, y0, y1;
-                msaa_bounds(X, Y, *pattern, full, x0, x1, y0, y1);
-                if (x0 <= x1) bin_generic(y0, y1, out);
+            y0 = t.min_y, y1 = t.max_y;
+        } else {
+            // Multisampled: on the pattern's grid, as the unclipped triangles (setup_range); a
+            // triangle without a covered pixel centre still counts (its samples may be covered).
+            std::int32_t X[3], Y[3];
+            const bool usable = snap_vertex(v[0], X[0], Y[0], pattern->bits) &&
+                                snap_vertex(v[1], X[1], Y[1], pattern->bits) && snap_vertex(v[2], X[2], Y[2], pattern->bits);
+            const std::int64_t area2 = usable ? detail::snapped_area2(X, Y) : 0;
+            if (area2 == 0) continue;
+            if (detail::facing_culled(area2, p.cull)) {
+                out.stats.culled_backface += 1;
+                continue;
             }
-            continue;
+            out.stats.rasterized += 1;
+            if (!generic) {
+                detail::msaa_triangle f;
+                if (make_msaa_triangle(X, Y, area2, *pattern, full, depth, shade, f)) add_msaa(f, state, out);
+                continue;
+            }
+            int x0, x1;
+            msaa_bounds(X, Y, *pattern, full, x0, x1, y0, y1);
+            if (x0 > x1) y1 = y0 - 1;  // no pixel: no bin
         }
-        detail::msaa_triangle f;
-        if (make_msaa_triangle(X, Y, area2, *pattern, full, depth, shade, f)) add_msaa(f, state, out);
+        out.generic.push_back(make_generic_triangle(v, c, state));
+        if (p.alpha >= 1.0f) bin_generic(y0, y1, out);
     }
 }
 
@@ -156,7 +149,7 @@ void render_context::impl::set_up_piece(int thread, int number, const raster_mes
         return;
     }
     if (!view) {
-        if (!plan.shared_vertices) transform(m, p, job, {nullptr, m.positions.size()}, seg);
+        if (!plan.shared_vertices) transform(job, {nullptr, m.positions.size()}, seg);
         setup_range(m, p, state, job.generic, plan.shared_vertices ? segments[0] : seg, first, last, out);
         return;
     }
@@ -174,12 +167,12 @@ void render_context::impl::set_up_piece(int thread, int number, const raster_mes
         }
     }
     const bool per_chunk = walked_vertices < m.positions.size();
-    if (!per_chunk) transform(m, p, job, {nullptr, m.positions.size()}, seg);
+    if (!per_chunk) transform(job, {nullptr, m.positions.size()}, seg);
     const std::uint32_t *chunk_vertices = p.clusters->vertices().data();
     for (std::size_t k = first; k < last; ++k) {
         if (!seg.walk[k - first]) continue;
         const raster_cluster &c = (*chunks)[k];
-        if (per_chunk) transform(m, p, job, seg.not_yet_transformed(chunk_vertices + c.vertex_first, c.vertex_count), seg);
+        if (per_chunk) transform(job, seg.not_yet_transformed(chunk_vertices + c.vertex_first, c.vertex_count), seg);
         setup_range(m, p, state, job.generic, seg, c.first, c.first + c.count, out);
     }
 }
@@ -255,12 +248,12 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
         const detail::xvertex &a = vertices[tri[0]], &b = vertices[tri[1]], &c = vertices[tri[2]];
         if (a.outcode & b.outcode & c.outcode) continue;  // all outside one plane
         float flat_shade = 0.0f;
-        if (flat_material)
-            flat_shade = shade_flat_material(p.lights, p.surface, eye, world_of(p.model, m.positions[tri[0]]),
-                                             world_of(p.model, m.positions[tri[1]]), world_of(p.model, m.positions[tri[2]]));
-        else if (flat)
-            flat_shade = shade_flat(p.lights, world_of(p.model, m.positions[tri[0]]),
-                                    world_of(p.model, m.positions[tri[1]]), world_of(p.model, m.positions[tri[2]]));
+        if (flat) {
+            const vec3_t w[3] = {world_of(p.model, m.positions[tri[0]]), world_of(p.model, m.positions[tri[1]]),
+                                 world_of(p.model, m.positions[tri[2]])};
+            flat_shade = flat_material ? shade_flat_material(p.lights, p.surface, eye, w[0], w[1], w[2])
+                                       : shade_flat(p.lights, w[0], w[1], w[2]);
+        }
         if ((a.outcode | b.outcode | c.outcode) == 0 && !generic) {
             // The common case: no clipping, straight to the fast setup.
             // Snapped once per vertex in transform(); an unusable vertex skips the triangle
@@ -284,25 +277,23 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
                                     static_cast<int>(last_row), row0, row1);
                 if (row0 > row1) continue;
                 out.stats.rasterized += 1;
-                if (batched) {
-                    batch.add(X, Y, area2, depth, shade);
-                    if (batch.count == SETUP_BATCH) finish_batch();
-                    continue;
-                }
-                detail::msaa_triangle f;
-                if (make_msaa_triangle(X, Y, area2, *pattern, full, depth, shade, f)) add_msaa(f, state, out);
-                continue;
+            } else {
+                // Candidate rows (pixel centres 16·row + 8 within the snapped y range): none on
+                // the target, nothing to count.
+                const std::int64_t row0 = std::max<std::int64_t>(
+                    -((RASTER_SUBPIXEL_ONE / 2 - std::min({Y[0], Y[1], Y[2]})) >> RASTER_SUBPIXEL_BITS), 0);
+                const std::int64_t row1 = std::min<std::int64_t>(
+                    (std::max({Y[0], Y[1], Y[2]}) - RASTER_SUBPIXEL_ONE / 2) >> RASTER_SUBPIXEL_BITS, last_row);
+                if (row0 > row1) continue;
             }
-            // Candidate rows (pixel centres 16·row + 8 within the snapped y range): none on
-            // the target, nothing to count.
-            const std::int64_t row0 = std::max<std::int64_t>(
-                -((RASTER_SUBPIXEL_ONE / 2 - std::min({Y[0], Y[1], Y[2]})) >> RASTER_SUBPIXEL_BITS), 0);
-            const std::int64_t row1 = std::min<std::int64_t>(
-                (std::max({Y[0], Y[1], Y[2]}) - RASTER_SUBPIXEL_ONE / 2) >> RASTER_SUBPIXEL_BITS, last_row);
-            if (row0 > row1) continue;
             if (batched) {
                 batch.add(X, Y, area2, depth, shade);
                 if (batch.count == SETUP_BATCH) finish_batch();
+                continue;
+            }
+            if (msaa) {
+                detail::msaa_triangle f;
+                if (make_msaa_triangle(X, Y, area2, *pattern, full, depth, shade, f)) add_msaa(f, state, out);
                 continue;
             }
             // Set up in a local and appended when ready (set up in place at the list's end,
@@ -367,18 +358,15 @@ void render_context::impl::draw_band(int band, const draw_params &p, const draw_
     if (!per_pixel_path(p)) {  // one call for the band's bins of every piece (translucent triangles are not binned)
         band_bin bins[PIECES_PER_THREAD * MAX_THREADS];  // (plan_draw: at most that many pieces)
         int count = 0;
-        for (int number = plan.first; number < plan.first + plan.count; ++number) {
-            const piece &from = pieces[static_cast<std::size_t>(number)];
+        for (const piece &from : pieces_of(plan)) {
             const std::vector<std::uint32_t> &bin = from.bins[band];
             if (!bin.empty()) bins[count++] = {from.fast.data(), from.far.data(), from.wide.data(), bin.data(), bin.size()};
         }
         kernels->fill_fast_bins(*target, depth, bins, count, p.depth, y0, y1, ahead);
         return;
     }
-    for (int number = plan.first; number < plan.first + plan.count; ++number) {
-        const piece &from = pieces[static_cast<std::size_t>(number)];
+    for (const piece &from : pieces_of(plan))
         for (std::uint32_t index : from.bins[band]) draw_generic_rows(*target, depth, p, from.generic[index & ~GENERIC_BIN], y0, y1);
-    }
 }
 
 // What thread `thread` does in a draw's one parallel phase (render_bands.h): [without
@@ -396,7 +384,7 @@ void render_context::impl::set_up_and_draw(int thread, const raster_mesh &m, con
         const std::size_t blocks = (m.positions.size() + 63) / 64;
         const std::size_t first = std::min(m.positions.size(), blocks * thread / n * 64);
         const std::size_t last = std::min(m.positions.size(), blocks * (thread + 1) / n * 64);
-        transform(m, p, job, {nullptr, last - first, static_cast<std::uint32_t>(first)}, segments[0]);
+        transform(job, {nullptr, last - first, static_cast<std::uint32_t>(first)}, segments[0]);
         counters.vertex_ranges_done.fetch_add(1, std::memory_order_release);
         phase_counters::wait_for(counters.vertex_ranges_done, n);
     }
@@ -460,16 +448,16 @@ void render_context::impl::set_up_and_draw(int thread, const raster_mesh &m, con
 // Translucent triangles wait for end_frame: the draw's per-pixel-path triangles, piece by
 // piece.
 void render_context::impl::queue_translucent(const draw_plan &plan) {
-    for (int number = plan.first; number < plan.first + plan.count; ++number)
-        for (generic_triangle g : pieces[static_cast<std::size_t>(number)].generic) {
+    for (const piece &from : pieces_of(plan))
+        for (generic_triangle g : from.generic) {
             g.sequence = static_cast<std::uint32_t>(translucent.size());
             translucent.push_back(g);
         }
 }
 
 void render_context::impl::gather_stats(const draw_plan &plan) {
-    for (int number = plan.first; number < plan.first + plan.count; ++number) {
-        const frame_stats &st = pieces[static_cast<std::size_t>(number)].stats;
+    for (const piece &from : pieces_of(plan)) {
+        const frame_stats &st = from.stats;
         stats.culled_backface += st.culled_backface;
         stats.clipped += st.clipped;
         stats.rasterized += st.rasterized;
@@ -494,7 +482,7 @@ void render_context::impl::draw(const raster_mesh &mesh, const draw_params &para
                               clusters->triangle_count() == mesh.triangles.size();
     cluster_view view{};
     if (use_clusters) view = make_cluster_view(mvp, s.target->width, s.target->height, s.guard, params.cull);
-    const vertex_job job = make_vertex_job(params, mvp, generic, s.target->width, s.target->height, s.pattern->bits);
+    const vertex_job job = make_vertex_job(mesh, params, mvp, generic, s.target->width, s.target->height, s.pattern->bits);
     if (!s.multisampled()) s.piece_count = 0;  // (a multisampled frame keeps every draw's pieces)
     const draw_plan plan = s.plan_draw(use_clusters ? clusters->clusters().size() : mesh.triangles.size(), use_clusters);
     s.grow_segments(mesh.positions.size(), generic, plan.shared_vertices ? 1 : s.pool.size());
@@ -568,6 +556,8 @@ status render_context::begin_frame(canvas_t &target, float clear_intensity, samp
     return {};
 }
 
+// The frame's last band pass (bands claimed as in draw): a multisampled frame's every band,
+// a 1-sample frame's translucent queue (not binned) and any clear still pending.
 void render_context::end_frame() {
     impl &s = *impl_;
     if (!s.target) return;
@@ -575,24 +565,31 @@ void render_context::end_frame() {
     std::sort(s.translucent.begin(), s.translucent.end(), [](const generic_triangle &a, const generic_triangle &b) {
         return a.mean_depth != b.mean_depth ? a.mean_depth > b.mean_depth : a.sequence < b.sequence;
     });
-    if (s.multisampled()) return s.end_multisampled_frame();
-    if (s.translucent.empty() && !s.pending_clear) {
-        s.target = nullptr;
-        return;
+    const bool msaa = s.multisampled();
+    if (msaa || !s.translucent.empty() || s.pending_clear) {
+        s.counters.reset(0, s.pool.size(), s.bands.count);
+        if (msaa) s.start_pass(s.stats.triangles_in);
+        auto phase = [&](int thread) {
+            band_affinity &mine = s.affinity[thread];
+            mine.rank(s.bands.count, msaa && s.pool.size() > 1 ? band_affinity::claim_order::own_entries
+                                                               : band_affinity::claim_order::top_down);
+            for (int band; (band = s.counters.take_band(mine, s.bands.count)) < s.bands.count;) {
+                if (msaa) {
+                    s.draw_multisampled_band(band, s.tiles[thread]);
+                    s.band_drawn(thread);
+                    continue;
+                }
+                if (s.pending_clear) s.clear_band(band);
+                for (const generic_triangle &g : s.translucent)
+                    draw_generic_rows(*s.target, s.depth, s.states[g.state], g, s.bands.y0(band), s.bands.y0(band + 1));
+            }
+            mine.forget(s.bands.count);  // (counted again by the next frame's draws)
+        };
+        s.pool.run(phase);
+        if (msaa) s.end_pass();
     }
-    s.counters.reset(0, s.pool.size(), s.bands.count);
-    auto phase = [&](int thread) {
-        band_affinity &mine = s.affinity[thread];
-        mine.rank(s.bands.count, band_affinity::claim_order::top_down);  // (translucent triangles are not binned)
-        s.counters.claim_bands(mine, s.bands.count, [&](int band) {
-            const int y0 = s.bands.y0(band), y1 = s.bands.y0(band + 1);
-            if (s.pending_clear) s.clear_band(band);
-            for (const generic_triangle &g : s.translucent)
-                draw_generic_rows(*s.target, s.depth, s.states[g.state], g, y0, y1);
-        });
-    };
-    s.pool.run(phase);
     s.pending_clear = false;
+    s.piece_count = 0;
     s.translucent.clear();
     s.target = nullptr;
 }

@@ -1,8 +1,8 @@
 // raster_multisample.cpp — the render context's multisampled frames (sample_count x4, x8,
 // x16): draw() sets up and bins every draw's triangles (raster_context.cpp, with the
-// pattern's sample rows), and end_frame() draws the frame band by band, each band into a
-// per-thread tile of samples that stays in cache, then resolves the tile into the canvas
-// and the depth buffer. The kernels are in msaa/.
+// pattern's sample rows), and end_frame()'s band pass (raster_context.cpp) draws the frame
+// band by band here, each band into a per-thread tile of samples that stays in cache, then
+// resolves the tile into the canvas and the depth buffer. The kernels are in msaa/.
 #include "render_context_impl.h"
 
 namespace tiny3d {
@@ -13,7 +13,7 @@ void render_context::impl::add_msaa(const msaa_triangle &f, std::uint32_t state,
     const std::uint32_t index = static_cast<std::uint32_t>(out.msaa.size());
     out.msaa.push_back(f);
     out.msaa.back().state = state;
-    bin_rows(f.min_y, f.max_y, index, out);
+    bin_bands(bands.of(f.min_y), bands.of(f.max_y), index, out);
 }
 
 // Every triangle of the frame that reaches the band, in submission order (piece after piece
@@ -42,8 +42,7 @@ void render_context::impl::draw_multisampled_band(int band, sample_store &tile) 
     };
     later.k = static_cast<std::size_t>(-1);  // (the first entry, then TRIANGLES_AHEAD on)
     for (int n = 0; n <= TRIANGLES_AHEAD; ++n) advance(later);
-    for (int number = 0; number < piece_count; ++number) {
-        const piece &from = pieces[static_cast<std::size_t>(number)];
+    for (const piece &from : pieces_of({0, piece_count})) {
         for (std::uint32_t index : from.bins[band]) {
             if (later.number < piece_count) {
                 const std::uint32_t on = bin_of(later.number)[later.k];
@@ -67,29 +66,6 @@ void render_context::impl::draw_multisampled_band(int band, sample_store &tile) 
     for (const generic_triangle &g : translucent)
         draw_generic_samples(tile, *pattern, clear_intensity, states[g.state], g, y0, y1);
     tile.resolve(*target, depth, clear_intensity, kernels->simd);
-}
-
-// Bands claimed by the threads, each in the order of its own affinity (render_bands.h): a
-// band's pixels depend only on its own bins, so not on which thread draws it; claiming
-// until none is left keeps the threads' loads even.
-void render_context::impl::end_multisampled_frame() {
-    counters.reset(0, pool.size(), bands.count);
-    start_pass(stats.triangles_in);
-    auto phase = [&](int thread) {
-        band_affinity &mine = affinity[thread];
-        mine.rank(bands.count, pool.size() > 1 ? band_affinity::claim_order::own_entries : band_affinity::claim_order::top_down);
-        counters.claim_bands(mine, bands.count, [&](int band) {
-            draw_multisampled_band(band, tiles[thread]);
-            band_drawn(thread);
-        });
-        mine.forget(bands.count);  // (counted again by the next frame's draws)
-    };
-    pool.run(phase);
-    end_pass();
-    pending_clear = false;
-    piece_count = 0;
-    translucent.clear();
-    target = nullptr;
 }
 
 }  // namespace tiny3d

@@ -154,12 +154,6 @@ struct phase_counters {
         }
         return count;
     }
-    // Calls draw(band) for every band `mine` still claims (ranked first: band_affinity), in
-    // its order, until no band is left to claim.
-    template <class Draw>
-    void claim_bands(band_affinity &mine, int count, Draw &&draw) {
-        for (int band; (band = take_band(mine, count)) < count;) draw(band);
-    }
     // While waiting() holds: the next band in `mine`'s order that no thread has taken, given
     // to work(band) and recorded in claimed[] — at most `share` bands, this thread's part of
     // `count` among `threads`, so that a thread which waits long (the others' set-up

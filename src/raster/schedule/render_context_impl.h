@@ -1,6 +1,7 @@
 // render_context_impl.h — the schedule stage (internal): the render context's state
 // (render_context::impl) and the per-pixel path's triangle. In: the program's draws
-// (raster.h). Out: the frame — each draw's vertices transformed (vertex/), its triangles set
+// (raster.h). Out: the frame — each draw's vertices transformed (the vertex stage,
+// pipeline/vertex_transform.h, handed a vertex_job), its triangles set
 // up (setup/) in pieces shared by the threads and binned by band (render_bands.h), then
 // each band drawn by one thread through the context's kernel table (fill/, msaa/) or the
 // per-pixel path (raster_pixel_path.cpp: Phong, textures, translucency). Called by the
@@ -11,12 +12,13 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "../../parallel/worker_pool.h"
+#include "../../pipeline/vertex_transform.h"
 #include "../fill/fill.h"
 #include "../msaa/msaa.h"
-#include "../vertex/vertex_transform.h"
 #include "cluster_view.h"
 #include "render_bands.h"
 
@@ -28,6 +30,33 @@ namespace detail {
 // spans fewer pixels than the 32-bit fill allows; never tighter than the frustum itself.
 inline constexpr float GUARD_SPAN_PIXELS = 2000.0f;
 inline constexpr float MAX_GUARD = 4.0f;
+
+// The vertex stage's job for drawing m with p through mvp (= view_projection · model) on a
+// width × height target, vertices snapped to 1/2^subpixel_bits px; `generic`: the per-pixel
+// path's attributes are wanted. Reads m and p, which must outlive the job.
+inline vertex_job make_vertex_job(const raster_mesh &m, const draw_params &p, const mat4_t &mvp, bool generic,
+                                  int width, int height, int subpixel_bits) {
+    vertex_job job;
+    job.positions = m.positions.data();
+    job.normals = m.normals.data();
+    job.uvs = m.uvs.data();
+    job.mvp = mvp;
+    job.model = p.model;
+    job.nt = make_normal_transform(p.model);
+    job.lights = &p.lights;
+    job.surface = &p.surface;
+    job.width = width;
+    job.height = height;
+    job.subpixel_bits = subpixel_bits;
+    job.gouraud = p.shade == shading::gouraud;
+    job.generic = generic;
+    job.material_lit = job.gouraud && !material_is_lambert(p.surface);
+    job.eye = job.material_lit ? viewer_of(p.view_projection) : viewer{};
+    job.directional_gouraud = job.gouraud && !generic && !job.material_lit &&
+                              std::all_of(p.lights.lights, p.lights.lights + p.lights.count,
+                                          [](const light_t &l) { return l.kind == light_kind::directional; });
+    return job;
+}
 
 // A triangle for the per-pixel path (Phong, textures, translucency).
 struct generic_triangle {
@@ -142,6 +171,9 @@ struct render_context::impl {
     segment segments[detail::MAX_THREADS];
     std::vector<piece> pieces;  // the frame's first piece_count are in use (grown, never shrunk)
     int piece_count = 0;
+    std::span<piece> pieces_of(const detail::draw_plan &plan) {  // a draw's, or the frame's: {0, piece_count}
+        return {pieces.data() + plan.first, static_cast<std::size_t>(plan.count)};
+    }
     std::vector<draw_params> states;                    // this frame's draw calls
     std::vector<detail::generic_triangle> translucent;  // queued for end_frame
     detail::band_layout bands;
@@ -192,9 +224,8 @@ struct render_context::impl {
     void queue_translucent(const detail::draw_plan &plan);
     void gather_stats(const detail::draw_plan &plan);
 
-    void transform(const raster_mesh &m, const draw_params &p, const detail::vertex_job &job, detail::vertex_set set,
-                   segment &out) {
-        detail::transform_vertices(m, p, job, guard, set, out.vertices.data(), out.clip.data(), out.vertex_attr.data());
+    void transform(const detail::vertex_job &job, detail::vertex_set set, segment &out) {
+        detail::transform_vertices(job, guard, set, out.vertices.data(), out.clip.data(), out.vertex_attr.data());
     }
     void set_up_piece(int thread, int number, const raster_mesh &m, const draw_params &p, const detail::vertex_job &job,
                       std::uint32_t state, const detail::cluster_view *view, const detail::draw_plan &plan);
@@ -224,13 +255,8 @@ struct render_context::impl {
         }
         bin_bands(first, last, index, out);
     }
-    // Bin entry `index` into the bins of the bands of rows [y0, y1] (inclusive, on the
-    // target).
-    [[gnu::always_inline]] void bin_rows(int y0, int y1, std::uint32_t index, piece &out) {
-        bin_bands(bands.of(y0), bands.of(y1), index, out);
-    }
-    // The same for bands [first, last] (inclusive). Inlined: a call would spill bin_fast's
-    // live values around it.
+    // Bin entry `index` into the bins of bands [first, last] (inclusive). Inlined: a call
+    // would spill bin_fast's live values around it.
     [[gnu::always_inline]] void bin_bands(int first, int last, std::uint32_t index, piece &out) {
         for (int b = first; b <= last; ++b) out.bins[b].push_back(index);
     }
@@ -239,14 +265,13 @@ struct render_context::impl {
     // The last of out.generic (opaque) into the bins of rows [y0, y1] (inclusive).
     void bin_generic(int y0, int y1, piece &out) {
         if (y0 > y1) return;
-        bin_rows(y0, y1, static_cast<std::uint32_t>(out.generic.size() - 1) | detail::GENERIC_BIN, out);
+        bin_bands(bands.of(y0), bands.of(y1), static_cast<std::uint32_t>(out.generic.size() - 1) | detail::GENERIC_BIN, out);
     }
 
     // Multisampled frames (raster_multisample.cpp).
     // Appends f (made by make_msaa_triangle: either form) with the draw state and bins it.
     void add_msaa(const detail::msaa_triangle &f, std::uint32_t state, piece &out);
     void draw_multisampled_band(int band, detail::sample_store &tile);
-    void end_multisampled_frame();
 };
 
 }  // namespace tiny3d

@@ -17,6 +17,7 @@
 
 #include "raster.h"
 #include "../../kernels.h"
+#include "../../pipeline/screen_snap.h"
 #include "../../simd_config.h"
 
 #ifdef TINY3D_SSE2
@@ -25,30 +26,17 @@
 
 namespace tiny3d::detail {
 
-// Rounds a screen coordinate to the nearest 1/2^bits pixel (ties to even), in sub-pixel
-// units: 1/16 px (RASTER_SUBPIXEL_BITS) everywhere but the 16-sample frames, whose vertices
-// are snapped finer (MSAA_16_SUBPIXEL_BITS, msaa.h). std::lrint, which GCC -O2 compiles to a
-// library call; cvtss2si is one instruction. Needs |x| ≤ RASTER_MAX_COORD and bits ≤ 8
-// (then x·2^bits fits in 32 bits).
-inline std::int32_t snap_coord(float x, int bits = RASTER_SUBPIXEL_BITS) {
-    const float one = static_cast<float>(1 << bits);
-#ifdef TINY3D_SSE2
-    return _mm_cvtss_si32(_mm_set_ss(x * one));
-#else
-    return static_cast<std::int32_t>(std::lrint(x * one));
-#endif
-}
-
-// Whether a screen vertex can be snapped: finite, |x|, |y| ≤ RASTER_MAX_COORD.
-inline bool usable(const screen_vertex &v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::fabs(v.x) <= RASTER_MAX_COORD &&
-           std::fabs(v.y) <= RASTER_MAX_COORD;
-}
+// Snapping is the vertex stage's (pipeline/screen_snap.h: snap_coord, snap_screen_point): the
+// set-up snaps the same way, through it. 1/16 px (RASTER_SUBPIXEL_BITS) everywhere but the
+// 16-sample frames, whose vertices are snapped finer (MSAA_16_SUBPIXEL_BITS, msaa.h).
+static_assert(RASTER_MAX_COORD == SNAP_MAX_COORD);
 
 // Snaps one vertex to 1/2^bits px (done once per shared vertex by the render context).
 // False, with x, y untouched, when the vertex is one triangle_setup skips (non-finite or
 // beyond RASTER_MAX_COORD).
-bool snap_vertex(const screen_vertex &v, std::int32_t &x, std::int32_t &y, int bits = RASTER_SUBPIXEL_BITS);
+inline bool snap_vertex(const screen_vertex &v, std::int32_t &x, std::int32_t &y, int bits = RASTER_SUBPIXEL_BITS) {
+    return snap_screen_point(v.x, v.y, bits, x, y);
+}
 
 // floor(n / d) for d > 0 (C++ division truncates towards zero); −n + d − 1 must not overflow.
 template <class Int>

@@ -16,9 +16,9 @@ constexpr std::int64_t HALF_SUBPIXEL = RASTER_SUBPIXEL_ONE / 2;  // pixel centre
 
 triangle_edges triangle_setup(const screen_vertex &v0, const screen_vertex &v1, const screen_vertex &v2,
                               pixel_rect clip, cull_mode cull) {
-    if (!detail::usable(v0) || !detail::usable(v1) || !detail::usable(v2)) return {};
-    const std::int32_t X[3] = {detail::snap_coord(v0.x), detail::snap_coord(v1.x), detail::snap_coord(v2.x)};
-    const std::int32_t Y[3] = {detail::snap_coord(v0.y), detail::snap_coord(v1.y), detail::snap_coord(v2.y)};
+    std::int32_t X[3], Y[3];
+    if (!detail::snap_vertex(v0, X[0], Y[0]) || !detail::snap_vertex(v1, X[1], Y[1]) || !detail::snap_vertex(v2, X[2], Y[2]))
+        return {};
     return detail::triangle_setup_snapped(X, Y, clip, cull);
 }
 
@@ -35,13 +35,6 @@ inline void pixel_bounds(std::int64_t lo, std::int64_t hi, int clip0, int clip1,
 }
 
 }  // namespace
-
-bool snap_vertex(const screen_vertex &v, std::int32_t &x, std::int32_t &y, int bits) {
-    if (!usable(v)) return false;
-    x = snap_coord(v.x, bits);
-    y = snap_coord(v.y, bits);
-    return true;
-}
 
 triangle_edges triangle_setup_snapped(const std::int32_t Xs[3], const std::int32_t Ys[3], pixel_rect clip,
                                       cull_mode cull, int bits) {

@@ -6,14 +6,14 @@
 #ifndef TINY3D_VERTEX_KERNELS_SSE2_H
 #define TINY3D_VERTEX_KERNELS_SSE2_H
 
-#include "../../simd_config.h"
+#include "../simd_config.h"
 
 #ifdef TINY3D_SSE2
 #include <emmintrin.h>
 
 #include <limits>
 
-#include "../../pipeline/project4.h"
+#include "project4.h"
 #include "vertex_transform.h"
 
 namespace tiny3d::detail {
@@ -34,7 +34,7 @@ inline void unit_or_zero_x4(__m128 &x, __m128 &y, __m128 &z) {
 }
 
 // project_one for four vertices: clip = M·p (mul_point_scalar's operations on four
-// lanes), then the vertex stage's project4 and snap_vertex lane by lane, so every field
+// lanes), then project4 and snap_screen_point lane by lane, so every field
 // gets project_one's bits. Vertices index[0..3] of `positions`, written to the same indices
 // of out and out_clip.
 inline void project_x4(const mat4_t &m, const vec3_t *positions, const std::uint32_t index[4], float guard, int width,
@@ -54,8 +54,8 @@ inline void project_x4(const mat4_t &m, const vec3_t *positions, const std::uint
     _mm_store_si128(reinterpret_cast<__m128i *>(outcode), s.outcode);
     alignas(16) float depth[4];
     _mm_store_ps(depth, s.depth);
-    // snap_vertex: usable when in front and |x|, |y| ≤ RASTER_MAX_COORD (false for NaN and ±∞ too).
-    const __m128 abs_mask = _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff)), limit = _mm_set1_ps(RASTER_MAX_COORD);
+    // snap_screen_point: usable when in front and |x|, |y| ≤ SNAP_MAX_COORD (false for NaN and ±∞ too).
+    const __m128 abs_mask = _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff)), limit = _mm_set1_ps(SNAP_MAX_COORD);
     const int usable = _mm_movemask_ps(_mm_and_ps(s.in_front, _mm_and_ps(_mm_cmple_ps(_mm_and_ps(s.x, abs_mask), limit),
                                                                          _mm_cmple_ps(_mm_and_ps(s.y, abs_mask), limit))));
     const __m128 sub = _mm_set1_ps(static_cast<float>(1 << subpixel_bits));

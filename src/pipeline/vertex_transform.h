@@ -1,8 +1,10 @@
-// vertex_transform.h — the render context's vertex stage (internal). In: a draw's mesh and
-// parameters. Out: every vertex to clip space, outcode, snapped screen position, window
-// depth and shading (the per-pixel path's attributes too). Called by the schedule's set-up
-// loop (schedule/raster_context.cpp) before the set-up stage. Not installed. The kernels: a portable reference (vertex_transform.cpp)
-// and SSE2 ones (vertex_kernels_sse2.h), chosen in transform_vertices.
+// vertex_transform.h — the render context's vertex stage (internal). In: a vertex_job, plain
+// data (the mesh's positions, normals and uvs, the matrices, the lights). Out: every vertex
+// to clip space, outcode, snapped screen point (screen_snap.h), window depth and shading (the
+// per-pixel path's attributes too). Called by the render context's set-up loop
+// (raster/schedule/raster_context.cpp, which makes the job from a draw: make_vertex_job)
+// before the raster set-up stage. Not installed. The kernels: a portable reference
+// (vertex_transform.cpp) and SSE2 ones (vertex_kernels_sse2.h), chosen in transform_vertices.
 #ifndef TINY3D_VERTEX_TRANSFORM_H
 #define TINY3D_VERTEX_TRANSFORM_H
 
@@ -10,8 +12,9 @@
 #include <cstdint>
 
 #include "lighting.h"
+#include "material.h"
 #include "pipeline.h"
-#include "../setup/setup.h"
+#include "screen_snap.h"
 
 namespace tiny3d::detail {
 
@@ -23,17 +26,26 @@ struct xvertex {
     float depth;                        // window depth (z/w + 1)/2, valid when `snapped`
     float shade;                        // Gouraud intensity (or 0)
     std::uint8_t outcode;
-    bool snapped;                       // screen position usable (snap_vertex succeeded)
+    bool snapped;                       // screen position usable (snap_screen_point succeeded)
 };
 
 // Per-vertex attributes of the generic (per-pixel) path, in clip_vertex::attr order.
 enum attr_slot { ATTR_PX, ATTR_PY, ATTR_PZ, ATTR_NX, ATTR_NY, ATTR_NZ, ATTR_U, ATTR_V, ATTR_SHADE, ATTR_COUNT };
 static_assert(ATTR_COUNT <= CLIP_MAX_ATTRIBUTES);
 
-// The per-draw constants of the vertex transform.
+// One draw's vertex work, as plain data (the vertex stage knows no raster types): the mesh's
+// arrays, one entry per vertex (normals and uvs read only when the shading or the per-pixel
+// path needs them), and the per-draw constants. The screen points go to transform_vertices'
+// arrays.
 struct vertex_job {
-    mat4_t mvp;
-    normal_transform nt;
+    const vec3_t *positions;
+    const vec3_t *normals;
+    const vec2 *uvs;
+    mat4_t mvp;           // object → clip (view_projection · model)
+    mat4_t model;         // object → world (Gouraud with point lights, the per-pixel path)
+    normal_transform nt;  // the model's, for normals
+    const light_rig *lights;
+    const material *surface;
     int width, height;  // the target's, in pixels
     int subpixel_bits;  // the snapping grid, 1/2^bits px: the frame's sample pattern's (msaa.h)
     bool gouraud, generic;
@@ -53,7 +65,7 @@ struct vertex_set {
 // ---- the portable reference kernels (the SSE2 ones match them bit for bit) ----
 
 // One vertex: clip = M·p, clip_outcode, and for a vertex not outside the near plane its
-// window depth and snapped screen position (clip_to_screen, snap_vertex).
+// window depth and snapped screen position (clip_to_screen, snap_screen_point).
 inline void project_one(const mat4_t &m, vec3_t position, float guard, int width, int height, int subpixel_bits,
                         xvertex &x, vec4_t &clip) {
     clip = mul_point_scalar(m, position);
@@ -62,8 +74,15 @@ inline void project_one(const mat4_t &m, vec3_t position, float guard, int width
     if (!(x.outcode & clip_near)) {
         const screen_point p = clip_to_screen(clip, width, height);
         x.depth = p.depth;
-        x.snapped = !p.behind && snap_vertex({p.x, p.y, p.depth, 0.0f}, x.snapped_x, x.snapped_y, subpixel_bits);
+        x.snapped = !p.behind && snap_screen_point(p.x, p.y, subpixel_bits, x.snapped_x, x.snapped_y);
     }
+}
+
+// The world position of a model-space point (the xyz part of model·(p, 1)): the vertex's for
+// lighting, and the flat shading's corners (the render context's set-up).
+inline vec3_t world_of(const mat4_t &model, vec3_t p) {
+    const vec4_t h = mul_point_scalar(model, p);
+    return {h.x, h.y, h.z};
 }
 
 // Gouraud intensity of one vertex lit by directional lights only (no position needed).
@@ -71,17 +90,11 @@ inline float shade_directional_one(const light_rig &rig, const normal_transform 
     return shade_gouraud_vertex(rig, {0, 0, 0}, apply_normal_transform(nt, normal));
 }
 
-// The per-draw constants for drawing with `p` through `mvp` (= view_projection · model) on a
-// width × height target, vertices snapped to 1/2^subpixel_bits px; `generic`: the
-// per-pixel path's attributes are wanted.
-vertex_job make_vertex_job(const draw_params &p, const mat4_t &mvp, bool generic, int width, int height,
-                           int subpixel_bits);
-
-// Transforms the vertices `set` of `m`: writes vertices[i] and clip[i] (clip-space position)
-// for each i of the set, and vertex_attr[i·ATTR_COUNT ..] when job.generic; x/y planes of the
-// outcode at |x|, |y| ≤ guard·w. Arrays sized for the mesh's vertex count.
-void transform_vertices(const raster_mesh &m, const draw_params &p, const vertex_job &job, float guard, vertex_set set,
-                        xvertex *vertices, vec4_t *clip, float *vertex_attr);
+// Transforms the vertices `set` of the job: writes vertices[i] and clip[i] (clip-space
+// position) for each i of the set, and vertex_attr[i·ATTR_COUNT ..] when job.generic; x/y
+// planes of the outcode at |x|, |y| ≤ guard·w. Arrays sized for the mesh's vertex count.
+void transform_vertices(const vertex_job &job, float guard, vertex_set set, xvertex *vertices, vec4_t *clip,
+                        float *vertex_attr);
 
 }  // namespace tiny3d::detail
 
