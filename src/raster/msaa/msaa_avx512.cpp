@@ -1,8 +1,8 @@
 // msaa_avx512.cpp — the multisample fill's AVX-512 kernels (msaa_kernel::avx512). 8× and
-// 16×: one pixel's depths in one register and its colours in another. Per pixel: the three
-// edge values at every sample stepped by one add each, coverage as a mask register (the
-// sign bits of their OR), the depth test as a masked compare and the writes as blends —
-// where the SSE2 kernel needs two or four groups of four. 4×: a 2 × 2 block of pixels per
+// 16×: msaa_lanes_fill.inc's kernel with one pixel's depths in one register and its colours
+// in another (samples, below): coverage as a mask register, the depth test as a masked
+// compare and the writes as blends — where the SSE2 kernel needs two or four groups of
+// four. 4×: a 2 × 2 block of pixels per
 // register (fill_rows_blocks) for narrow triangles; for the others the SSE2 kernel's source
 // compiled here (msaa_sse2_fill.inc), where it has 32 vector registers.
 //
@@ -29,22 +29,27 @@ namespace {
 
 // 4×: the SSE2 kernel's source, compiled here for AVX-512 (msaa_sse2_fill.inc).
 #include "msaa_sse2_fill.inc"
+#include "msaa_lanes_fill.inc"  // ymm_lanes, passing, fill_rows_pixels
 
 // One register of S samples: 16 floats (zmm) for 16×, 8 (ymm) for 8× — a pixel's depths or
 // colours exactly, so no access reaches a neighbouring pixel (a 16-lane access with lanes
 // masked off still overlaps the next pixel's samples and defeats store-to-load forwarding).
-// Masks: bit s = sample s.
+// Masks and coverage: mask registers, bit s = sample s. The lane trait of
+// msaa_lanes_fill.inc: chunkable triangles too, the next row prefetched.
 template <int S>
-struct samples;
+struct registers;
 
 template <>
-struct samples<16> {
+struct registers<16> {
+    static constexpr int lanes = 16;
     using vf = __m512;
     using vi = __m512i;
     using mask = __mmask16;
+    using coverage = __mmask16;
     static vf set(float v) { return _mm512_set1_ps(v); }
     static vi set_int(std::int64_t v) { return _mm512_set1_epi32(static_cast<std::int32_t>(v)); }
-    static vi load_int(const std::int32_t *p) { return _mm512_loadu_si512(p); }
+    static vi load_int(const std::int32_t *p) { return _mm512_load_si512(p); }
+    static void store_int(std::int32_t *p, vi v) { _mm512_store_si512(p, v); }
     static vf load(const float *p) { return _mm512_loadu_ps(p); }
     static void store(float *p, mask m, vf v) { _mm512_mask_storeu_ps(p, m, v); }
     static void store(float *p, vf v) { _mm512_storeu_ps(p, v); }
@@ -53,153 +58,45 @@ struct samples<16> {
     static vf mul(vf a, vf b) { return _mm512_mul_ps(a, b); }
     static vi add(vi a, vi b) { return _mm512_add_epi32(a, b); }
     static vi to_int(vf v) { return _mm512_cvtps_epi32(v); }
-    static float min_of(vf v) { return _mm512_reduce_min_ps(v); }
-    static float max_of(vf v) { return _mm512_reduce_max_ps(v); }
     static vf broadcast(__m128 v) { return _mm512_broadcastss_ps(v); }
-    // The samples outside an edge: the sign bits of b0 | b1 | b2.
-    static mask outside(vi b0, vi b1, vi b2) { return _mm512_movepi32_mask(_mm512_ternarylogic_epi32(b0, b1, b2, 0xFE)); }
+    // In: not a sign bit of b0 | b1 | b2.
+    static coverage covered(vi b0, vi b1, vi b2) {
+        return static_cast<mask>(~_mm512_movepi32_mask(_mm512_ternarylogic_epi32(b0, b1, b2, 0xFE)));
+    }
     template <int Predicate>
-    static mask compare(mask in, vf a, vf b) { return _mm512_mask_cmp_ps_mask(in, a, b, Predicate); }
+    static mask compare(coverage in, vf a, vf b) { return _mm512_mask_cmp_ps_mask(in, a, b, Predicate); }
 };
 
 template <>
-struct samples<8> {
-    using vf = __m256;
-    using vi = __m256i;
+struct registers<8> : ymm_lanes {
     using mask = __mmask8;
-    static vf set(float v) { return _mm256_set1_ps(v); }
-    static vi set_int(std::int64_t v) { return _mm256_set1_epi32(static_cast<std::int32_t>(v)); }
-    static vi load_int(const std::int32_t *p) { return _mm256_loadu_si256(reinterpret_cast<const __m256i *>(p)); }
-    static vf load(const float *p) { return _mm256_loadu_ps(p); }
+    using coverage = __mmask8;
+    using ymm_lanes::store;
     static void store(float *p, mask m, vf v) { _mm256_mask_storeu_ps(p, m, v); }
-    static void store(float *p, vf v) { _mm256_storeu_ps(p, v); }
     static vf blend(mask m, vf a, vf b) { return _mm256_mask_blend_ps(m, a, b); }
-    static vf add(vf a, vf b) { return _mm256_add_ps(a, b); }
-    static vf mul(vf a, vf b) { return _mm256_mul_ps(a, b); }
-    static vi add(vi a, vi b) { return _mm256_add_epi32(a, b); }
-    static vi to_int(vf v) { return _mm256_cvtps_epi32(v); }
-    // (Set-up only: the eight lanes widened, the upper ones masked off.)
-    static float min_of(vf v) { return _mm512_mask_reduce_min_ps(0xFF, _mm512_castps256_ps512(v)); }
-    static float max_of(vf v) { return _mm512_mask_reduce_max_ps(0xFF, _mm512_castps256_ps512(v)); }
-    static vf broadcast(__m128 v) { return _mm256_broadcastss_ps(v); }
-    static mask outside(vi b0, vi b1, vi b2) { return _mm256_movepi32_mask(_mm256_ternarylogic_epi32(b0, b1, b2, 0xFE)); }
+    static coverage covered(vi b0, vi b1, vi b2) {
+        return static_cast<mask>(~_mm256_movepi32_mask(_mm256_ternarylogic_epi32(b0, b1, b2, 0xFE)));
+    }
     template <int Predicate>
-    static mask compare(mask in, vf a, vf b) { return _mm256_mask_cmp_ps_mask(in, a, b, Predicate); }
+    static mask compare(coverage in, vf a, vf b) { return _mm256_mask_cmp_ps_mask(in, a, b, Predicate); }
 };
 
-// The depth test, as depth_passes decides it per sample (a NaN depth passes only not_equal
-// and always), limited to the samples of `in`.
-template <int S, depth_func Test>
-inline typename samples<S>::mask passing(typename samples<S>::mask in, typename samples<S>::vf z,
-                                         typename samples<S>::vf stored) {
-    using V = samples<S>;
-    if constexpr (Test == depth_func::never) return 0;
-    else if constexpr (Test == depth_func::less) return V::template compare<_CMP_LT_OQ>(in, z, stored);
-    else if constexpr (Test == depth_func::less_equal) return V::template compare<_CMP_LE_OQ>(in, z, stored);
-    else if constexpr (Test == depth_func::equal) return V::template compare<_CMP_EQ_OQ>(in, z, stored);
-    else if constexpr (Test == depth_func::greater) return V::template compare<_CMP_GT_OQ>(in, z, stored);
-    else if constexpr (Test == depth_func::greater_equal) return V::template compare<_CMP_GE_OQ>(in, z, stored);
-    else if constexpr (Test == depth_func::not_equal) return V::template compare<_CMP_NEQ_UQ>(in, z, stored);
-    else return in;
-}
-
-// Narrow triangles whose boxes are at most this many columns wide are walked whole, every
-// pixel of the box, without the row spans' divisions (most of Scene S's triangles: a few
-// empty pixels cost less than two divisions per row); the others row span by row span. The
-// 4× block kernel likewise.
-constexpr int SCAN_COLUMNS_AVX512 = 16;
-
-// S = 8 or 16 samples, one register per pixel's depths and one per its colours.
-template <int S, depth_func Test>
-void fill_rows(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, bool depth_write,
-               float clear_colour, int y0, int y1) {
-    using V = samples<S>;
+// What the two widths share: masks are bit sets, any and all are the mask itself, the depth
+// write a blend (or, without writes, the untouched samples' depth 1 put in memory).
+template <int S>
+struct samples : registers<S> {
+    static constexpr bool wide = true, prefetch_below = true;
+    using V = registers<S>;
     using mask = typename V::mask;
-    // The edge offsets a/16·dx + b/16·dy per sample, in float: a·(dx/16) is the integer
-    // −Δy·dx, |·| < 2^18, so every product and sum is exact and converts to the portable
-    // kernel's integers; the depth offsets are the portable kernel's float operations.
-    const typename V::vf ox = V::load(pat.fdx), oy = V::load(pat.fdy);
-    edge_extremes off;
-    typename V::vi d[3];
-    for (int k = 0; k < 3; ++k) {
-        if (!f.narrow) {  // long edges: the float offsets may round; the exact integers instead
-            alignas(64) std::int32_t exact[S];
-            sample_offsets_exact(f, pat, k, exact);
-            d[k] = V::load_int(exact);
-            off.lo[k] = *std::min_element(exact, exact + S);
-            off.hi[k] = *std::max_element(exact, exact + S);
-            continue;
-        }
-        const typename V::vf v = V::add(V::mul(V::set(static_cast<float>(f.a[k])), ox),
-                                        V::mul(V::set(static_cast<float>(f.b[k])), oy));
-        d[k] = V::to_int(v);
-        off.lo[k] = static_cast<std::int64_t>(V::min_of(v));
-        off.hi[k] = static_cast<std::int64_t>(V::max_of(v));
+    static int any(mask m) { return m; }
+    static mask all(mask in) { return in; }
+    static mask held(std::uint8_t touched) { return static_cast<mask>(0u - static_cast<unsigned>(touched)); }
+    static bool writes(bool depth_write) { return depth_write; }
+    static void store_depths(float *p, bool writes, mask pass, mask held, typename V::vf stored, typename V::vf z) {
+        if (writes) V::store(p, V::blend(pass, stored, z));
+        else V::store(p, static_cast<mask>(~held), V::set(1.0f));
     }
-    const int chunk = chunk_columns(f, off);
-    const typename V::vf dz = V::add(V::mul(V::set(f.zdx), ox), V::mul(V::set(f.zdy), oy));
-    const typename V::vi step0 = V::set_int(f.a[0]), step1 = V::set_int(f.a[1]), step2 = V::set_int(f.a[2]);
-    const typename V::vf ones = V::set(1.0f), clear = V::set(clear_colour);
-    // Depth in lane 0, intensity in lane 1: both planes' row value plus step · column in one
-    // multiply and add (the portable kernel's float operations, lane by lane).
-    const __m128 plane0 = _mm_setr_ps(f.z, f.i, 0.0f, 0.0f), plane_dy = _mm_setr_ps(f.zdy, f.idy, 0.0f, 0.0f);
-    const __m128 plane_dx = _mm_setr_ps(f.zdx, f.idx, 0.0f, 0.0f);
-    const __m128 one = _mm_set1_ps(1.0f), zero = _mm_setzero_ps();
-    const bool scan = f.narrow && f.max_x - f.min_x < SCAN_COLUMNS_AVX512;
-    for (int y = y0; y < y1; ++y) {
-        // The row's span: 32-bit divisions when narrow (shorter latency), else 64-bit.
-        std::int64_t e64[3];
-        int lo, hi;
-        if (scan) {
-            for (int k = 0; k < 3; ++k) e64[k] = f.e[k] + f.b[k] * (y - f.min_y);
-            lo = 0, hi = f.max_x - f.min_x;
-        } else if (f.narrow) {
-            std::int32_t e[3];
-            if (!off.row(f, y, e, lo, hi)) continue;
-            e64[0] = e[0], e64[1] = e[1], e64[2] = e[2];
-        } else if (!off.row(f, y, e64, lo, hi)) {
-            continue;
-        }
-        const __m128 plane_row = _mm_add_ps(plane0, _mm_mul_ps(plane_dy, _mm_set1_ps(static_cast<float>(y - f.min_y))));
-        // The row in chunks of columns (one chunk unless f is wide: chunk_columns).
-        for (int first = lo, last; first <= hi; first = last + 1) {
-            last = std::min(hi, first + (chunk - 1));
-            // The samples' edge values at column `first` (32 bits), stepped by a per column.
-            typename V::vi b0 = V::add(V::set_int(chunk_start(f, e64[0] + f.a[0] * first)), d[0]);
-            typename V::vi b1 = V::add(V::set_int(chunk_start(f, e64[1] + f.a[1] * first)), d[1]);
-            typename V::vi b2 = V::add(V::set_int(chunk_start(f, e64[2] + f.a[2] * first)), d[2]);
-            std::uint8_t *touched = store.touched_row(y) + f.min_x + first;
-            float *p = store.pixel(f.min_x + first, y);
-            // The next row's first pixels are most likely below this row's: fetched ahead, as a
-            // row of a small triangle has too few pixels for the hardware prefetcher to start.
-            if (y + 1 < y1 && first == lo) {
-                const char *below = reinterpret_cast<const char *>(p + static_cast<std::size_t>(store.stride()) * 2 * S);
-                for (int line = 0; line < 2 * S * 4; line += 64) _mm_prefetch(below + line, _MM_HINT_T0);
-            }
-            __m128 column = _mm_set1_ps(static_cast<float>(first));  // exactly (< 2^24)
-            for (int x = first; x <= last; ++x, p += 2 * S, ++touched, column = _mm_add_ps(column, one)) {
-                // A sample is in when all three edge values are ≥ 0. A pixel without one is
-                // stored back as it was, without a branch (cheaper than its mispredictions at
-                // the spans' ends).
-                const mask in = static_cast<mask>(~V::outside(b0, b1, b2));
-                b0 = V::add(b0, step0), b1 = V::add(b1, step1), b2 = V::add(b2, step2);
-                const __m128 at = _mm_add_ps(plane_row, _mm_mul_ps(plane_dx, column));
-                const __m128 shade = _mm_min_ps(_mm_max_ps(_mm_shuffle_ps(at, at, 0x55), zero), one);  // clamp01
-                const typename V::vf z = V::add(V::broadcast(at), dz);
-                // Until its first touch this frame a pixel's samples hold depth 1 and the clear
-                // colour: loaded whatever they hold and selected away (the loads need not wait
-                // for the touched byte), no branch.
-                const mask held = static_cast<mask>(0u - static_cast<unsigned>(*touched));
-                *touched = static_cast<std::uint8_t>(*touched | (in != 0));
-                const typename V::vf stored = V::blend(held, ones, V::load(p));
-                const mask pass = passing<S, Test>(in, z, stored);
-                if (depth_write) V::store(p, V::blend(pass, stored, z));
-                else V::store(p, static_cast<mask>(~held), ones);
-                V::store(p + S, V::blend(pass, V::blend(held, clear, V::load(p + S)), V::broadcast(shade)));
-            }
-        }
-    }
-}
+};
 
 // 4× on narrow triangles: a 2 × 2 block of pixels per step, its 16 samples in one register
 // (lane 4q + s: sample s of pixel q = 2r + j, column j and row r of the block) — the
@@ -229,7 +126,7 @@ void fill_rows_blocks(sample_store &store, const msaa_triangle &f, const sample_
     const __m512 ox = _mm512_broadcast_f32x4(_mm_load_ps(pat.fdx)), oy = _mm512_broadcast_f32x4(_mm_load_ps(pat.fdy));
     const __m512 bx = V::add(ox, _mm512_cvtepi32_ps(lane_column)), by = V::add(oy, _mm512_cvtepi32_ps(lane_row));
     const int columns = f.max_x - f.min_x + 1;
-    const bool scan = columns <= SCAN_COLUMNS_AVX512;
+    const bool scan = columns <= SCAN_COLUMNS_WIDE;
     edge_extremes off;  // (row spans only) over pixel 0's lanes: the pattern's own offsets
     __m512i d[3];
     for (int k = 0; k < 3; ++k) {
@@ -319,7 +216,7 @@ void fill_rows_blocks(sample_store &store, const msaa_triangle &f, const sample_
             // The depth write is a mask, not a branch (with the branch GCC moved the pass mask
             // through a general register and back).
             const __m512 stored = _mm512_load_ps(p), colours = _mm512_load_ps(p + sample_store::colour_offset(S, true));
-            const __mmask16 pass = passing<16, Test>(in, z, stored);
+            const __mmask16 pass = passing<samples<16>, Test>(in, z, stored);
             _mm512_store_ps(p, _mm512_mask_blend_ps(_kand_mask16(pass, writes), stored, z));
             _mm512_store_ps(p + sample_store::colour_offset(S, true), _mm512_mask_blend_ps(pass, colours, shade));
             *touched = 1;
@@ -339,7 +236,7 @@ void fill_avx512(sample_store &store, const msaa_triangle &f, const sample_patte
         else if (f.narrow) fill_rows_blocks<Test, false>(store, f, pat, depth_write, y0, y1);
         else fill_rows_sse2<4, Test, true>(store, f, pat, depth_write, clear_colour, y0, y1);
     } else {
-        fill_rows<S, Test>(store, f, pat, depth_write, clear_colour, y0, y1);
+        fill_rows_pixels<samples<S>, S, Test>(store, f, pat, depth_write, clear_colour, y0, y1);
     }
 }
 
