@@ -1,14 +1,7 @@
 // msaa_avx2.cpp — the multisample fill's AVX2 kernels (msaa_kernel::avx2) for narrow
-// triangles on CPUs without AVX-512. 8× and 16×: msaa_lanes_fill.inc's kernel over eight
-// lanes with vector masks (lanes8, below; the AVX-512 kernel's scheme). 4×: two pixels
-// of a row per step, their 8 samples in one 256-bit register (lane 4j + s: sample s of
-// pixel j). Steps start at even columns, so the two pixels' samples are one whole, aligned
-// 64-byte line of the tile (sample_store::STRIDE_PIXELS): two 256-bit halves, each one
-// pixel's 4 depths and 4 colours, regrouped into the two pixels' depths and their colours
-// by two lane permutes, and back. Coverage (the sign bits of the three stepped edge values'
-// OR, within the box's columns), the depth test (a compare) and the writes (blends) take no
-// branch, and neither does a step without a covered sample (stored back as it was): the
-// AVX-512 block kernel's scheme (msaa_avx512.cpp), with 8 lanes and without mask registers.
+// triangles on CPUs without AVX-512: msaa_lanes_fill.inc's kernels over eight lanes with
+// vector masks (lanes8, below) — the AVX-512 kernels' schemes, without mask registers. 8×
+// and 16×: a pixel's samples in one or two registers; 4×: two pixels of a row per step.
 //
 // Compiled for AVX2 inside the target region of avx2_region_open.inc; run only on CPUs that
 // have it (kernels_run, src/kernels.cpp). No FMA contraction: the portable kernel's float operations,
@@ -81,7 +74,7 @@ struct lanes8 : ymm_lanes {
 template <int S, depth_func Test>
 void fill_avx2(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test, bool depth_write,
                float clear_colour, int y0, int y1) {
-    if (!f.narrow || store.blocks())  // (the pair kernel walks the rows layout)
+    if (!f.narrow || store.blocks())  // (lanes8's 4× steps walk the rows layout)
         return msaa_fill_for(msaa_kernel::sse2, S, test)(store, f, pat, test, depth_write, clear_colour, y0, y1);
     if (!clamp_to_rows(f, y0, y1)) return;
     if constexpr (S == 4) {

@@ -1,10 +1,9 @@
-// msaa_avx512.cpp — the multisample fill's AVX-512 kernels (msaa_kernel::avx512). 8× and
-// 16×: msaa_lanes_fill.inc's kernel with one pixel's depths in one register and its colours
-// in another (samples, below): coverage as a mask register, the depth test as a masked
-// compare and the writes as blends — where the SSE2 kernel needs two or four groups of
-// four. 4×: a 2 × 2 block of pixels per
-// register (fill_rows_blocks) for narrow triangles; for the others the SSE2 kernel's source
-// compiled here (msaa_sse2_fill.inc), where it has 32 vector registers.
+// msaa_avx512.cpp — the multisample fill's AVX-512 kernels (msaa_kernel::avx512):
+// msaa_lanes_fill.inc's kernels over mask registers (samples, below). 8× and 16×: one
+// pixel's depths in one register and its colours in another (where the SSE2 kernel needs
+// two or four groups of four); 4×: a 2 × 2 block of pixels per register for narrow
+// triangles, for the others the SSE2 kernel's source compiled here (msaa_sse2_fill.inc),
+// where it has 32 vector registers.
 //
 // Compiled for AVX-512 inside the target region of avx512_region_open.inc (as
 // line_tabulated_avx512.cpp is): the headers are included before the region opens, so
