@@ -1,5 +1,6 @@
 // msaa_kernels.h — internal to the multisample fill: what the kernels of msaa.cpp (portable,
-// SSE2), msaa_avx2.cpp and msaa_avx512.cpp share, and the AVX2 and AVX-512 kernels' entry
+// SSE2), msaa_avx2.cpp and msaa_avx512.cpp share (their SIMD source shared in
+// msaa_sse2_fill.inc and msaa_lanes_fill.inc), and the AVX2 and AVX-512 kernels' entry
 // points. Included by those files before their target regions open, so everything inline
 // here stays baseline.
 #ifndef TINY3D_MSAA_KERNELS_H
