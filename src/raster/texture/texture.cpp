@@ -164,6 +164,12 @@ float texture_sample_anisotropic(const texture &tex, float u, float v, float du_
     const bool x_major = px2 >= py2;
     const float major2 = x_major ? px2 : py2, minor2 = x_major ? py2 : px2;
     const int limit = std::clamp(max_taps, 1, 64);
+    // Magnified (the whole footprint under 1/√2 texel along its longer axis, so within a
+    // bilinear cell or two): one bilinear lookup at the centre, as a magnification filter.
+    // The taps would change little there, and such pixels are most of a near, textured
+    // surface (mipmaps.md has the cost and the error of this choice). A GPU's rule is looser:
+    // magnified whenever log2(major / N) ≤ 0.
+    if (major2 <= 0.5f) return sample_levels(levels_for(tex, 0.0f), u, v, wrap);
     // N = ⌈major / minor⌉ taps, at most `limit`; each filters major / N texels across, so the
     // level is log2(major / N) — the minor axis's when N is not clamped.
     const float ratio = minor2 > 0.0f ? std::sqrt(major2 / minor2) : static_cast<float>(limit);
