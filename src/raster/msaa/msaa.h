@@ -73,7 +73,6 @@ public:
     // samples also at rest for `clear_colour`, which every later fill and resolve must use.
     void resize(int width, int rows, int samples, float clear_colour, bool blocks = false);
     static bool blocks_for(msaa_kernel kernel, int samples) { return samples == 4 && kernels_for(kernel).msaa_blocks4; }
-    int samples() const { return samples_; }
     int width() const { return width_; }
     bool blocks() const { return blocks_; }
     // Makes the tile rows [y0, y1), every pixel untouched.
