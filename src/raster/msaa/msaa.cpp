@@ -8,6 +8,8 @@
 #include <numeric>
 #include <string>
 
+#include "../../simd_config.h"
+
 #ifdef TINY3D_SSE2
 #include <emmintrin.h>
 #endif
