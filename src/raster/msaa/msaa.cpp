@@ -1,6 +1,5 @@
 // msaa.cpp — multisampled filled triangles (msaa.h): sample patterns, the sample store and
-// its resolve, the per-triangle setup and the row fill (64-bit portable kernel, SSE2 kernel;
-// the AVX-512 kernels are in msaa_avx512.cpp).
+// its resolve, the per-triangle setup and the row fill (portable and SSE2 kernels).
 #include "msaa.h"
 #include "msaa_kernels.h"
 
@@ -144,13 +143,13 @@ void fill_sse2(sample_store &store, const msaa_triangle &f, const sample_pattern
     fill_rows_sse2<S, Test, false>(store, f, pat, depth_write, clear_colour, y0, y1);
 }
 
-// resolve() for S = 4, 8, 16, the sums in the portable loop's order (resolve_pixel).
 // A resolved pixel's samples back at rest (sample_store): depth 1, the clear colour.
 inline void restore_sse2(float *p, __m128 far, __m128 clear) {
     _mm_store_ps(p, far);
     _mm_store_ps(p + 4, clear);
 }
 
+// resolve() for S = 4, 8, 16, the sums in resolve_sum's order.
 template <int S>
 void resolve_row_sse2(float *p, const std::uint8_t *touched, int width, float clear_colour, float *colour, float *z) {
     const __m128 inv = _mm_set1_ps(1.0f / S), clear = _mm_set1_ps(clear_colour), far = _mm_set1_ps(1.0f);
@@ -216,6 +215,48 @@ void resolve_row_sse2(float *p, const std::uint8_t *touched, int width, float cl
     }
 }
 #endif
+
+// make_msaa_triangle on the grid of 1/2^Bits px (= pat.bits): the shifts and scales are
+// constants (a runtime shift count and 1/2^bits are a variable shift and a multiply per use).
+template <int Bits>
+bool make_msaa_triangle_on(const std::int32_t X[3], const std::int32_t Y[3], std::int64_t area2,
+                           const sample_pattern &pat, pixel_rect clip, const float depth[3], const float intensity[3],
+                           msaa_triangle &out) {
+    constexpr std::int64_t one = std::int64_t{1} << Bits;
+    const snapped_box box = snapped_box::of(X, Y);
+    out.clipped_x = pattern_bounds(box, pat, Bits, clip, out.min_x, out.max_x, out.min_y, out.max_y);
+    if (out.min_x > out.max_x || out.min_y > out.max_y) return false;
+    // triangle_setup_snapped's edges (oriented by s, top-left bias) at the centre (cx, cy) of
+    // pixel (min_x, min_y).
+    const std::int64_t s = area2 > 0 ? 1 : -1;
+    const std::int64_t cx = one * static_cast<std::int64_t>(out.min_x) + one / 2;
+    const std::int64_t cy = one * static_cast<std::int64_t>(out.min_y) + one / 2;
+    for (int k = 0; k < 3; ++k) {
+        const snapped_edge edge = snapped_edge_at(X, Y, s, k, cx, cy);
+        out.a[k] = -edge.dy * one;
+        out.b[k] = edge.dx * one;
+        out.e[k] = edge.e;
+    }
+    // Sample points lie within one px of the snapped box: |E| < 2·(span + one)·span < 2^31.
+    out.narrow = box.max_X - box.min_X < span_limit(Bits) && box.max_Y - box.min_Y < span_limit(Bits);
+    out.chunkable = true;
+    for (int k = 0; k < 3; ++k)
+        out.chunkable = out.chunkable && std::abs(out.a[k]) + std::abs(out.b[k]) < (std::int64_t{1} << 28);
+    double x[3], y[3];
+    snapped_to_px(X, Y, x, y, Bits);
+    float planes[6];
+    attribute_planes_at(x, y, out.min_x, out.min_y, depth, intensity, planes);
+    out.z = planes[0], out.zdx = planes[1], out.zdy = planes[2];
+    out.i = planes[3], out.idx = planes[4], out.idy = planes[5];
+    return true;
+}
+
+void fill_nothing(sample_store &, const msaa_triangle &, const sample_pattern &, depth_func, bool, float, int, int) {}
+
+void fill_portable(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
+                   bool depth_write, float clear_colour, int y0, int y1) {
+    if (clamp_to_rows(f, y0, y1)) fill_rows_portable(store, f, pat, test, depth_write, clear_colour, y0, y1);
+}
 
 }  // namespace
 
@@ -338,45 +379,6 @@ void msaa_candidate_rows(std::int64_t min_Y, std::int64_t max_Y, const sample_pa
     axis_bounds(min_Y, max_Y, pat.min_dy, pat.max_dy, pat.bits, 0, last_row + 1, row0, row1);
 }
 
-namespace {
-
-// make_msaa_triangle on the grid of 1/2^Bits px (= pat.bits): the shifts and scales are
-// constants (a runtime shift count and 1/2^bits are a variable shift and a multiply per use).
-template <int Bits>
-bool make_msaa_triangle_on(const std::int32_t X[3], const std::int32_t Y[3], std::int64_t area2,
-                           const sample_pattern &pat, pixel_rect clip, const float depth[3], const float intensity[3],
-                           msaa_triangle &out) {
-    constexpr std::int64_t one = std::int64_t{1} << Bits;
-    const snapped_box box = snapped_box::of(X, Y);
-    out.clipped_x = pattern_bounds(box, pat, Bits, clip, out.min_x, out.max_x, out.min_y, out.max_y);
-    if (out.min_x > out.max_x || out.min_y > out.max_y) return false;
-    // triangle_setup_snapped's edges (oriented by s, top-left bias) at the centre (cx, cy) of
-    // pixel (min_x, min_y).
-    const std::int64_t s = area2 > 0 ? 1 : -1;
-    const std::int64_t cx = one * static_cast<std::int64_t>(out.min_x) + one / 2;
-    const std::int64_t cy = one * static_cast<std::int64_t>(out.min_y) + one / 2;
-    for (int k = 0; k < 3; ++k) {
-        const snapped_edge edge = snapped_edge_at(X, Y, s, k, cx, cy);
-        out.a[k] = -edge.dy * one;
-        out.b[k] = edge.dx * one;
-        out.e[k] = edge.e;
-    }
-    // Sample points lie within one px of the snapped box: |E| < 2·(span + one)·span < 2^31.
-    out.narrow = box.max_X - box.min_X < span_limit(Bits) && box.max_Y - box.min_Y < span_limit(Bits);
-    out.chunkable = true;
-    for (int k = 0; k < 3; ++k)
-        out.chunkable = out.chunkable && std::abs(out.a[k]) + std::abs(out.b[k]) < (std::int64_t{1} << 28);
-    double x[3], y[3];
-    snapped_to_px(X, Y, x, y, Bits);
-    float planes[6];
-    attribute_planes_at(x, y, out.min_x, out.min_y, depth, intensity, planes);
-    out.z = planes[0], out.zdx = planes[1], out.zdy = planes[2];
-    out.i = planes[3], out.idx = planes[4], out.idy = planes[5];
-    return true;
-}
-
-}  // namespace
-
 bool make_msaa_triangle(const std::int32_t X[3], const std::int32_t Y[3], std::int64_t area2, const sample_pattern &pat,
                         pixel_rect clip, const float depth[3], const float intensity[3], msaa_triangle &out) {
     if (pat.bits == MSAA_16_SUBPIXEL_BITS)
@@ -396,17 +398,6 @@ void setup_msaa_batch(fill_kernel kernel, const setup_batch &in, const sample_pa
     if (const auto batch = kernels_for(kernel).setup_msaa_batch) return batch(in, pat, clip, verdict, out);
     std::fill(verdict, verdict + in.count, fast_setup::scalar);
 }
-
-namespace {
-
-void fill_nothing(sample_store &, const msaa_triangle &, const sample_pattern &, depth_func, bool, float, int, int) {}
-
-void fill_portable(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
-                   bool depth_write, float clear_colour, int y0, int y1) {
-    if (clamp_to_rows(f, y0, y1)) fill_rows_portable(store, f, pat, test, depth_write, clear_colour, y0, y1);
-}
-
-}  // namespace
 
 #ifdef TINY3D_SSE2
 msaa_row_fill msaa_fill_sse2(int samples, depth_func test) {
@@ -437,7 +428,6 @@ void screen_gradient(const screen_vertex v[3], const float f[3], float &fdx, flo
 }  // namespace tiny3d::detail
 
 namespace tiny3d {
-
 
 result<sample_count> parse_sample_count(const std::string &text) {
     std::string t = text;

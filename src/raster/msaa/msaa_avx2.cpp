@@ -1,11 +1,7 @@
-// msaa_avx2.cpp — the multisample fill's AVX2 kernels (msaa_kernel::avx2) for narrow
-// triangles on CPUs without AVX-512: msaa_lanes_fill.inc's kernels over eight lanes with
-// vector masks (lanes8, below) — the AVX-512 kernels' schemes, without mask registers. 8×
-// and 16×: a pixel's samples in one or two registers; 4×: two pixels of a row per step.
-//
-// Compiled for AVX2 inside the target region of avx2_region_open.inc; run only on CPUs that
-// have it (kernels_run, src/kernels.cpp). No FMA contraction: the portable kernel's float operations,
-// rounded step by step, lane by lane, so the samples are bit-identical.
+// msaa_avx2.cpp — the multisample fill's AVX2 kernels for narrow triangles: msaa_lanes_fill.inc's
+// kernels over eight lanes with vector masks (lanes8). 8× and 16×: a pixel's samples in one
+// or two registers; 4×: two pixels of a row per step. Compiled inside avx2_region_open.inc's
+// target region; no FMA contraction, so the samples are bit-identical to the portable ones.
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
@@ -23,9 +19,8 @@ namespace {
 
 #include "msaa_lanes_fill.inc"  // ymm_lanes, passing, fill_rows_pixels
 
-// Eight samples per register, masks as vectors: a mask all ones in its lanes (blendv reads
-// the sign bits), coverage the OR of the three edge values (sign bit set: the lane is out).
-// The lane trait of msaa_lanes_fill.inc: narrow triangles only, no prefetch.
+// The lane trait of msaa_lanes_fill.inc: masks as vectors (blendv reads the sign bits),
+// coverage the OR of the three edge values (sign set: out); narrow triangles, no prefetch.
 struct lanes8 : ymm_lanes {
     static constexpr bool wide = false, prefetch_below = false;
     using mask = __m256;
@@ -40,11 +35,8 @@ struct lanes8 : ymm_lanes {
     static vf writes(bool depth_write) { return depth_write ? _mm256_castsi256_ps(_mm256_set1_epi32(-1)) : _mm256_setzero_ps(); }
     static mask both(mask a, mask b) { return _mm256_and_ps(a, b); }
     static void store_depths(float *p, vf writes, mask pass, mask, vf stored, vf z) { store(p, blend(both(pass, writes), stored, z)); }
-    // 4× (fill_rows_quads): a pair of pixels of a row per register, steps at even columns,
-    // so the pair's samples are one whole, aligned 64-byte line of the rows layout
-    // (sample_store::STRIDE_PIXELS): two 256-bit halves, each one pixel's 4 depths and 4
-    // colours, regrouped into the two pixels' depths and their colours by two lane permutes,
-    // and back. The lanes left out: an "out" vector, sign bits set, like coverage's.
+    // 4× (fill_rows_quads): a pair of pixels from an even column, one aligned 64-byte line,
+    // regrouped into depths and colours by two lane permutes, and back.
     static vf write_mask(bool depth_write) { return writes(depth_write); }
     static vi rows(bool, bool) { return _mm256_setzero_si256(); }
     static vi columns_within(vi out, vi column, vi last) {
@@ -63,13 +55,11 @@ struct lanes8 : ymm_lanes {
         _mm256_store_ps(p, _mm256_permute2f128_ps(depths, shades, 0x20));
         _mm256_store_ps(p + 8, _mm256_permute2f128_ps(depths, shades, 0x31));
     }
-    // Both pixels now hold their samples in memory, covered or not (sample_store::touched_row).
     static void mark(std::uint8_t *touched) {
         constexpr std::uint16_t both_touched = 0x0101;
         std::memcpy(touched, &both_touched, sizeof both_touched);
     }
 };
-
 
 template <int S, depth_func Test>
 void fill_avx2(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test, bool depth_write,

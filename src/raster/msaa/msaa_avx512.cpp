@@ -1,15 +1,11 @@
-// msaa_avx512.cpp — the multisample fill's AVX-512 kernels (msaa_kernel::avx512):
-// msaa_lanes_fill.inc's kernels over mask registers (samples, below). 8× and 16×: one
-// pixel's depths in one register and its colours in another (where the SSE2 kernel needs
-// two or four groups of four); 4×: a 2 × 2 block of pixels per register for narrow
-// triangles, for the others the SSE2 kernel's source compiled here (msaa_sse2_fill.inc),
-// where it has 32 vector registers.
+// msaa_avx512.cpp — the multisample fill's AVX-512 kernels: msaa_lanes_fill.inc's kernels
+// over mask registers (samples, below). 8× and 16×: one pixel's depths in one register and
+// its colours in another; 4×: a 2 × 2 block of pixels per register for narrow triangles,
+// else the SSE2 kernel's source compiled here (msaa_sse2_fill.inc), with 32 registers.
 //
-// Compiled for AVX-512 inside the target region of avx512_region_open.inc (as
-// line_tabulated_avx512.cpp is): the headers are included before the region opens, so
-// their inline functions stay baseline x86-64. Run only on CPUs that have it
-// (kernels_run, src/kernels.cpp). No FMA contraction: the portable kernel's float operations, rounded
-// step by step, lane by lane.
+// Compiled inside avx512_region_open.inc's target region (headers included before it, so
+// their inline functions stay baseline); run only where kernels_run allows. No FMA
+// contraction: the portable kernel's float operations, lane by lane, so the same bits.
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
@@ -26,15 +22,12 @@
 namespace tiny3d::detail {
 namespace {
 
-// 4×: the SSE2 kernel's source, compiled here for AVX-512 (msaa_sse2_fill.inc).
 #include "msaa_sse2_fill.inc"
 #include "msaa_lanes_fill.inc"  // ymm_lanes, passing, fill_rows_pixels
 
-// One register of S samples: 16 floats (zmm) for 16×, 8 (ymm) for 8× — a pixel's depths or
-// colours exactly, so no access reaches a neighbouring pixel (a 16-lane access with lanes
-// masked off still overlaps the next pixel's samples and defeats store-to-load forwarding).
-// Masks and coverage: mask registers, bit s = sample s. The lane trait of
-// msaa_lanes_fill.inc: chunkable triangles too, the next row prefetched.
+// One register of S samples (zmm for 16×, ymm for 8×): a pixel's depths or colours exactly,
+// as a masked wider access would still overlap the next pixel and defeat store-to-load
+// forwarding. Masks: mask registers, bit s = sample s.
 template <int S>
 struct registers;
 
@@ -68,13 +61,9 @@ struct registers<16> {
     }
     template <int Predicate>
     static mask compare(coverage in, vf a, vf b) { return _mm512_mask_cmp_ps_mask(in, a, b, Predicate); }
-    // 4× (fill_rows_quads): a 2 × 2 block per register, the 4-sample tile's own block
-    // (sample_store: columns paired from 0, rows from the tile's origin; lanes 0–7 its upper
-    // row), its 16 depths and 16 colours two aligned 64-byte lines, loaded and stored whole.
-    // For small triangles (Scene S's are ~13 px) a 2 × 2 block beats four pixels of a row:
-    // fewer steps and half as many row starts (documentation/antialias.md, "How a
-    // multisampled frame is drawn"). The depth write is a mask, not a branch (with the
-    // branch GCC moved the pass mask through a general register and back).
+    // 4× (fill_rows_quads): a 2 × 2 block of the tile per register (lanes 0–7 its upper row),
+    // loaded and stored whole: for small triangles fewer steps and row starts than four
+    // pixels of a row. The depth write is a mask, not a branch (which GCC compiled worse).
     static mask write_mask(bool depth_write) { return depth_write ? 0xFFFF : 0; }
     static mask both(mask a, mask b) { return _kand_mask16(a, b); }
     static mask rows(bool upper, bool lower) { return static_cast<mask>((upper ? 0x00FF : 0) | (lower ? 0xFF00 : 0)); }
@@ -84,9 +73,7 @@ struct registers<16> {
     }
     static void load_step(const float *p, vf &stored, vf &colours) { stored = _mm512_load_ps(p), colours = _mm512_load_ps(p + 16); }
     static void store_step(float *p, vf depths, vf shades) { _mm512_store_ps(p, depths), _mm512_store_ps(p + 16, shades); }
-    // A mark only tells the resolve where to read (the tile is at rest): one per block, on
-    // its first pixel (sample_store), whatever rows or samples were drawn (a branch on the
-    // rows drawn, or a read of the marks, took the layout's gain back).
+    // At rest a mark only tells the resolve where to read: one per block, unconditionally.
     static void mark(std::uint8_t *touched) { *touched = 1; }
 };
 
@@ -104,8 +91,8 @@ struct registers<8> : ymm_lanes {
     static mask compare(coverage in, vf a, vf b) { return _mm256_mask_cmp_ps_mask(in, a, b, Predicate); }
 };
 
-// What the two widths share: masks are bit sets, any and all are the mask itself, the depth
-// write a blend (or, without writes, the untouched samples' depth 1 put in memory).
+// The lane trait of msaa_lanes_fill.inc: chunkable triangles too, the next row prefetched;
+// without depth writes the untouched samples' depth 1 is put in memory.
 template <int S>
 struct samples : registers<S> {
     static constexpr bool wide = true, prefetch_below = true;
@@ -143,20 +130,15 @@ msaa_row_fill fill_function_avx512(int samples, depth_func test) {
     return fill_function(samples, test, [](auto s, auto t) -> msaa_row_fill { return &fill_avx512<s.value, t.value>; });
 }
 
-// Eight columns of a row of blocks (four blocks: sixteen pixels of two rows) at a time.
-// Per 128-bit lane q a block's register holds pixel q's four samples. The SSE2 resolve's
-// transpose (unpacks, then the low and high halves) runs on all four lanes of two pairs
-// of blocks at once, the colour sums and depth minima both, leaving in lane q pixel q of
-// blocks 0..3; one permute puts them in column order, row 0 in the low half and row 1 in
-// the high half. An untouched pixel's samples hold (1, clear) at rest, whose sum is
-// exactly 4·clear and minimum 1: no select.
+// Eight columns of a row of blocks at a time: the SSE2 resolve's transpose on all four
+// 128-bit lanes, then one permute into column order (row 0 low half, row 1 high). At rest an
+// untouched pixel sums to exactly 4·clear with minimum 1: no select.
 void resolve_blocks4_avx512(float *p, const std::uint8_t *touched0, const std::uint8_t *touched1, int pixels,
                             float clear_colour, float *colour0, float *z0, float *colour1, float *z1) {
     const __m512 far = _mm512_set1_ps(1.0f), clear = _mm512_set1_ps(clear_colour), quarter = _mm512_set1_ps(0.25f);
     // Lane i < 8: column i of row 0 (block i/2, pixel i%2: lane 4·(i%2) + i/2); lanes 8..15 row 1.
     const __m512i column_order = _mm512_setr_epi32(0, 4, 1, 5, 2, 6, 3, 7, 8, 12, 9, 13, 10, 14, 11, 15);
     for (int x = 0; x < pixels; x += 8, p += 4 * 32) {
-        // Row 0's eight pixels from the low halves, row 1's (if any) from the high halves.
         auto put = [&](__m512 colours, __m512 depths) {
             _mm256_storeu_ps(colour0 + x, _mm512_castps512_ps256(colours));
             _mm256_storeu_ps(z0 + x, _mm512_castps512_ps256(depths));
@@ -171,8 +153,7 @@ void resolve_blocks4_avx512(float *p, const std::uint8_t *touched0, const std::u
             put(clear, far);
             continue;
         }
-        // (s0 + s2) + (s1 + s3) (op = add) or the minimum in the same order (op = min) of
-        // every pixel, from the four blocks' registers at `offset` (depths 0, colours 16).
+        // (s0 + s2) + (s1 + s3) by op of every pixel, at `offset` (depths 0, colours 16).
         auto reduce = [p](int offset, auto op) {
             const __m512 b0 = _mm512_load_ps(p + offset), b1 = _mm512_load_ps(p + 32 + offset);
             const __m512 b2 = _mm512_load_ps(p + 64 + offset), b3 = _mm512_load_ps(p + 96 + offset);

@@ -15,15 +15,12 @@
 
 namespace tiny3d::detail {
 
-// Per edge: the extremes over the pattern of the offsets of the edge value at a sample
-// from the value at the pixel centre.
+// Per edge: the extremes of the sample offsets over the pattern.
 struct edge_extremes {
     std::int64_t lo[3], hi[3];
-    // Row y of f: the edge values e[] at the centre of its first column (min_x) and the
-    // columns [lo_x, hi_x] (relative to min_x) where some sample could pass every edge.
-    // False when that span is empty. Int: std::int64_t, or std::int32_t when f.narrow (the
-    // best sample's value at column 0 lies where narrow bounds every edge value, below
-    // 2^31 − 2^24, and |a| < 2^19; a 32-bit division has a fraction of a 64-bit one's latency).
+    // Row y of f: the edge values e[] at column min_x and the columns [lo_x, hi_x] (from
+    // min_x) where some sample could pass every edge; false when none. Int may be 32-bit
+    // when f.narrow (every value then fits), as a 32-bit division is much cheaper.
     template <class Int>
     bool row(const msaa_triangle &f, int y, Int e[3], int &lo_x, int &hi_x) const {
         Int first = 0, last = static_cast<Int>(f.max_x - f.min_x);
@@ -41,12 +38,10 @@ struct edge_extremes {
     }
 };
 
-// The SIMD kernels' walk along a row of a triangle that is not narrow (chunkable): chunks
-// of columns short enough that, from a value clamped to ±2^30 at the chunk's first
-// column, every step and sample offset in it moves the value by less than 2^29. A value
-// beyond ±2^30 therefore keeps its sign over the whole chunk, and so does the clamped one:
-// every sample test is the exact 64-bit test, in 32 bits. Narrow triangles: one chunk per
-// row, no clamp (their values fit as they are).
+// A chunkable triangle's row is walked in chunks short enough that every step and offset in
+// one moves a value by less than 2^29: a value beyond ±2^30 at the chunk's start keeps its
+// sign over it, and so does the clamped one, so every 32-bit test is the exact 64-bit one.
+// Narrow triangles: one chunk per row, no clamp.
 inline constexpr std::int64_t CHUNK_CLAMP = std::int64_t{1} << 30;
 
 // Columns per chunk for f with sample offset extremes `off` (≥ 1 when f.chunkable).
@@ -66,8 +61,7 @@ inline std::int32_t chunk_start(const msaa_triangle &f, std::int64_t v) {
     return static_cast<std::int32_t>(v);
 }
 
-// Edge k's sample offsets (sample_edge_offset) in 32 bits: the SIMD kernels compute them in
-// float where that is exact (f.narrow) and take these otherwise.
+// Edge k's sample offsets in 32 bits, where the float ones are not exact (not f.narrow).
 inline void sample_offsets_exact(const msaa_triangle &f, const sample_pattern &pat, int k, std::int32_t *out) {
     for (int s = 0; s < pat.count; ++s) out[s] = static_cast<std::int32_t>(sample_edge_offset(f.a[k], f.b[k], pat, s));
 }
@@ -79,8 +73,7 @@ inline bool clamp_to_rows(const msaa_triangle &f, int &y0, int &y1) {
     return y0 < y1;
 }
 
-// The msaa_row_fill choose(S, Test) returns for samples (4, 8 or 16) and test (not never),
-// S and Test as std::integral_constant: one kernel file's functions by sample count and test.
+// choose(S, Test) for samples 4, 8 or 16 and a test (not never), as integral constants.
 template <class Choose>
 msaa_row_fill fill_function(int samples, depth_func test, Choose &&choose) {
     msaa_row_fill chosen = nullptr;
@@ -93,32 +86,22 @@ msaa_row_fill fill_function(int samples, depth_func test, Choose &&choose) {
 }
 
 #ifdef TINY3D_SSE2
-// msaa_fill_for's SSE2 functions (samples 4, 8 or 16): the SSE2 kernel where f is
-// chunkable, else the portable one.
+// The kernel table's multisample fills for 4, 8, 16 samples (test not never), bit-identical
+// to the portable kernel. SSE2: where f is chunkable, else the portable one.
 msaa_row_fill msaa_fill_sse2(int samples, depth_func test);
 #endif
 
 #ifdef TINY3D_AVX2
-// msaa_fill_for's AVX2 functions (msaa_kernel::avx2; only on CPUs kernels_run() reports
-// it for, or avx512), samples 4, 8 or 16, test not never: the AVX2 kernel where f is narrow,
-// the SSE2 functions otherwise. The same integer tests and float operations as the portable
-// kernel.
+// AVX2: where f is narrow, else the SSE2 functions.
 msaa_row_fill fill_function_avx2(int samples, depth_func test);
 #endif
 
 #ifdef TINY3D_AVX512
-// msaa_fill_for's AVX-512 functions (msaa_kernel::avx512; only on CPUs kernels_run()
-// reports it for), samples 4, 8 or 16, test not never: the AVX-512 kernels where f is
-// chunkable, the portable one otherwise. The same integer tests and float operations as the
-// portable kernel.
+// AVX-512: where f is chunkable, else the portable one.
 msaa_row_fill fill_function_avx512(int samples, depth_func test);
-// The 4-sample resolve of one row of blocks' first `pixels` columns (a multiple of 8): p at
-// its first block, the tile at rest (sample_store), its two rows' touched bytes, canvas
-// colours and depths (row 1's all null when the block row's second row is padding):
-// colour := ((s0 + s2) + (s1 + s3)) · 1/4, z := min(min(s0, s2), min(s1, s3)) — the SSE2
-// resolve's operations in its order, so the same bits — and every block read put back at
-// rest. Eight columns whose pixels are all untouched get the clear values without reading
-// their samples.
+// The 4-sample resolve of a row of blocks' first `pixels` columns (a multiple of 8), in the
+// SSE2 resolve's order (same bits), blocks put back at rest; row 1's pointers null when it
+// is padding.
 void resolve_blocks4_avx512(float *p, const std::uint8_t *touched0, const std::uint8_t *touched1, int pixels,
                             float clear_colour, float *colour0, float *z0, float *colour1, float *z1);
 #endif

@@ -1,7 +1,7 @@
 // cluster_view.h — cluster culling for the render context's schedule (internal). In: a
 // draw's model-view-projection and the target. Out: per chunk, whether it is proven
-// back-facing or reaches none of a thread's bands (schedule/raster_clusters.cpp). Called by
-// the render context's set-up loop. Not installed.
+// back-facing (schedule/raster_clusters.cpp). Called by the render context's set-up loop
+// (set_up_piece). Not installed.
 #ifndef TINY3D_RASTER_CLUSTER_VIEW_H
 #define TINY3D_RASTER_CLUSTER_VIEW_H
 

@@ -1,6 +1,6 @@
 // raster_clusters.cpp — cluster culling: per chunk of consecutive triangles a bounding
 // sphere and a normal cone (built once per mesh), and the per-draw test that decides, before
-// any per-triangle work, whether a whole chunk is back-facing or which rows it can reach.
+// any per-triangle work, whether a whole chunk is back-facing.
 // The derivation and its error budget are in documentation/raster.md ("Cluster culling").
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,6 @@
 // raster_pixel_path.cpp, the draw's memory guard in raster_memory.cpp.
 #include <algorithm>
 #include <new>
-#include <cmath>
 #include <limits>
 #include <string>
 
@@ -69,7 +68,6 @@ void render_context::impl::emit(const clip_vertex *poly, int n, const draw_param
     for (int k = 1; k + 1 < n; ++k) {
         const clip_vertex *c[3] = {&poly[0], &poly[k], &poly[k + 1]};
         screen_vertex v[3];
-        // A vertex without a finite screen point: skipped, as triangle_setup would.
         if (!to_screen(c[0]->position, width, height, v[0]) || !to_screen(c[1]->position, width, height, v[1]) ||
             !to_screen(c[2]->position, width, height, v[2]))
             continue;
@@ -89,8 +87,7 @@ void render_context::impl::emit(const clip_vertex *poly, int n, const draw_param
             }
             y0 = t.min_y, y1 = t.max_y;
         } else {
-            // Multisampled: on the pattern's grid, as the unclipped triangles (setup_range); a
-            // triangle without a covered pixel centre still counts (its samples may be covered).
+            // On the pattern's grid, as the unclipped triangles (setup_range).
             std::int32_t X[3], Y[3];
             const bool usable = snap_vertex(v[0], X[0], Y[0], pattern->bits) &&
                                 snap_vertex(v[1], X[1], Y[1], pattern->bits) && snap_vertex(v[2], X[2], Y[2], pattern->bits);
@@ -115,13 +112,10 @@ void render_context::impl::emit(const clip_vertex *poly, int n, const draw_param
     }
 }
 
-// Piece `number` of the frame (piece k of the draw: number = plan.first + k) set up by thread
-// `thread` into the piece's lists and bins. With clusters (`view` not null) the piece is a
-// run of chunks: each is decided first — proven back-facing: skipped and counted as culled —
-// then the walked chunks' vertices are transformed one chunk at a time when they are fewer
-// than the mesh's (a vertex shared by walked chunks only once per draw and thread:
-// segment::not_yet_transformed), else every vertex at once (meshes whose chunks are rarely
-// skipped, drawn as one piece), and their triangles set up.
+// Piece `number` of the frame set up by `thread` into the piece's lists and bins. With
+// clusters the piece is a run of chunks: back-facing ones are skipped first, then the walked
+// chunks' vertices are transformed chunk by chunk when they are fewer than the mesh's (else
+// all at once), and their triangles set up.
 void render_context::impl::set_up_piece(int thread, int number, const raster_mesh &m, const draw_params &p,
                                         const vertex_job &job, std::uint32_t state, const cluster_view *view,
                                         const draw_plan &plan) {
@@ -188,11 +182,11 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
     const float *vertex_attr = from.vertex_attr.data();
     const pixel_rect full{0, 0, target->width, target->height};
     const std::int64_t last_row = target->height - 1;
-    // A fast triangle's set-up verdict, acted on: binned, or too wide for the fast path.
     auto bin_ready = [&](const fast_triangle &f) {
         out.stats.rasterized += 1;
         bin_fast(f, out);
     };
+    // A fast triangle's set-up verdict, acted on: binned, or too wide for the fast path.
     auto finish = [&](fast_setup verdict, const fast_triangle &f, const std::int32_t X[3], const std::int32_t Y[3],
                       const float depth[3], const float shade[3]) {
         if (verdict == fast_setup::ready) {
@@ -204,9 +198,9 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
             add_fast(t, depth, shade, out);
         }
     };
-    // With a table that has set-up batches (AVX-512, AVX2), fast triangles are set up eight at
-    // a time (in submission order: the batch is finished before a clipped triangle and at the
-    // end), and so are the multisampled ones on the 1/16 px grid (4 and 8 samples).
+    // With set-up batches in the table, triangles are set up eight at a time (the batch is
+    // finished before a clipped triangle, to keep submission order); multisampled ones only
+    // on the 1/16 px grid.
     setup_batch batch;
     const bool batched = kernels->setup_fast_batch && (!msaa || pattern->bits == RASTER_SUBPIXEL_BITS);
     auto finish_batch = [&] {
@@ -255,14 +249,10 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
                                        : shade_flat(p.lights, w[0], w[1], w[2]);
         }
         if ((a.outcode | b.outcode | c.outcode) == 0 && !generic) {
-            // The common case: no clipping, straight to the fast setup.
-            // Snapped once per vertex in transform(); an unusable vertex skips the triangle
-            // exactly as triangle_setup would.
+            // No clipping: straight to the fast set-up (vertices snapped in transform()).
             if (!(a.snapped && b.snapped && c.snapped)) continue;
             const std::int32_t X[3] = {a.snapped_x, b.snapped_x, c.snapped_x};
             const std::int32_t Y[3] = {a.snapped_y, b.snapped_y, c.snapped_y};
-            // Cheap early rejection on the snapped 2-D cross product (the same sign test
-            // triangle_setup makes), before the full edge setup.
             const std::int64_t area2 = detail::snapped_area2(X, Y);
             if (area2 == 0) continue;
             if (detail::facing_culled(area2, p.cull)) {
@@ -271,15 +261,14 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
             }
             const float depth[3] = {a.depth, b.depth, c.depth};
             const float shade[3] = {flat ? flat_shade : a.shade, flat ? flat_shade : b.shade, flat ? flat_shade : c.shade};
-            if (msaa) {  // rows with a sample row in the y range (no pixel centre inside is fine: samples may be)
+            if (msaa) {
                 int row0, row1;
                 msaa_candidate_rows(std::min({Y[0], Y[1], Y[2]}), std::max({Y[0], Y[1], Y[2]}), *pattern,
                                     static_cast<int>(last_row), row0, row1);
                 if (row0 > row1) continue;
                 out.stats.rasterized += 1;
             } else {
-                // Candidate rows (pixel centres 16·row + 8 within the snapped y range): none on
-                // the target, nothing to count.
+                // No pixel centre row of the target in the y range: nothing to count.
                 const std::int64_t row0 = std::max<std::int64_t>(
                     -((RASTER_SUBPIXEL_ONE / 2 - std::min({Y[0], Y[1], Y[2]})) >> RASTER_SUBPIXEL_BITS), 0);
                 const std::int64_t row1 = std::min<std::int64_t>(
@@ -296,8 +285,7 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
                 if (make_msaa_triangle(X, Y, area2, *pattern, full, depth, shade, f)) add_msaa(f, state, out);
                 continue;
             }
-            // Set up in a local and appended when ready (set up in place at the list's end,
-            // emplace_back() zeroed each entry first, out of line).
+            // Set up in a local (emplace_back() would zero each entry first, out of line).
             detail::fast_triangle f;
             finish(detail::setup_fast_triangle(X, Y, area2, full, depth, shade, f), f, X, Y, depth, shade);
             continue;
@@ -323,9 +311,8 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
 
 // ---- the steps of a draw -------------------------------------------------------------------
 
-// The draw's pieces over `units` cluster chunks (clustered) or triangles: one on one thread;
-// on n threads PIECES_PER_THREAD · n (fewer for a small mesh), after the frame's earlier
-// draws' (multisampled frames keep them until end_frame).
+// The draw's pieces over `units` chunks or triangles: one on one thread, else up to
+// PIECES_PER_THREAD · n, after the frame's earlier draws' (multisampled frames keep them).
 draw_plan render_context::impl::plan_draw(std::size_t units, bool clustered) {
     const int n = pool.size();
     draw_plan plan;
@@ -343,10 +330,8 @@ draw_plan render_context::impl::plan_draw(std::size_t units, bool clustered) {
     return plan;
 }
 
-// One band: cleared if the frame has not been yet (and `clear`: not already done while
-// waiting for the set-up), then the draw's triangles that reach it, piece after piece
-// (submission order), while the lines of band `next` (this thread's next, or −1) are
-// fetched for its clear.
+// One band: cleared if still pending (and `clear`), then the draw's triangles reaching it in
+// piece order, while the lines of band `next` (or −1) are fetched for its clear.
 void render_context::impl::draw_band(int band, const draw_params &p, const draw_plan &plan, bool clear, int next) {
     const int y0 = bands.y0(band), y1 = bands.y0(band + 1);
     if (clear && pending_clear) clear_band(band);
@@ -369,11 +354,9 @@ void render_context::impl::draw_band(int band, const draw_params &p, const draw_
         for (std::uint32_t index : from.bins[band]) draw_generic_rows(*target, depth, p, from.generic[index & ~GENERIC_BIN], y0, y1);
 }
 
-// What thread `thread` does in a draw's one parallel phase (render_bands.h): [without
-// clusters, on several threads: transform its range of the vertices into segment 0, and wait
-// for the others'] set up pieces one at a time, its home run first; then, in a 1-sample
-// frame, wait until every piece is set up and draw bands claimed one at a time, those with
-// most of its own triangles first (multisampled frames draw at end_frame).
+// One thread's part of a draw's parallel phase (render_bands.h): [shared vertices: transform
+// its range, wait for the others'] set up pieces; then, in a 1-sample frame, wait for every
+// piece and draw the bands it claims (multisampled frames draw at end_frame).
 void render_context::impl::set_up_and_draw(int thread, const raster_mesh &m, const draw_params &p,
                                            const vertex_job &job, std::uint32_t state, const cluster_view *view,
                                            const draw_plan &plan) {
@@ -391,8 +374,8 @@ void render_context::impl::set_up_and_draw(int thread, const raster_mesh &m, con
     band_affinity &mine = affinity[thread];
     if (!multisampled()) mine.forget(bands.count);  // (a multisampled frame counts every draw's)
     for (int k; (k = counters.take_piece(thread, pool.size())) >= 0;) {
-        // Memory running out drops the draw (as a bad index does) and fails the frame; the
-        // piece still counts as done (no thread waits for it, no exception leaves the worker).
+        // Running out of memory drops the draw (as a bad index does); the piece still counts
+        // as done, so no thread waits for it and no exception leaves the worker.
         try {
             set_up_piece(thread, plan.first + k, m, p, job, state, view, plan);
             piece &done = pieces[static_cast<std::size_t>(plan.first + k)];
@@ -414,9 +397,7 @@ void render_context::impl::set_up_and_draw(int thread, const raster_mesh &m, con
     if (multisampled()) return;  // drawn at end_frame
     mine.rank(bands.count, pool.size() > 1 ? band_affinity::claim_order::kept_then_own : band_affinity::claim_order::top_down);
     std::fill(mine.drew, mine.drew + bands.count, std::uint8_t{0});
-    // Until the other threads' last pieces are set up: claim the next bands (at most this
-    // thread's share) and clear them (the frame's first draw), to draw them first once every
-    // piece is ready.
+    // While the others still set up: claim and clear this thread's next bands (first draw).
     int claimed[MAX_BANDS], claimed_count = 0;
     if (pending_clear)
         claimed_count = counters.claim_while(
@@ -425,8 +406,7 @@ void render_context::impl::set_up_and_draw(int thread, const raster_mesh &m, con
             [&](int band) { clear_band(band); }, claimed);
     phase_counters::wait_for(counters.pieces_done, plan.count);
     const bool drop = counters.bad_indices.load(std::memory_order_relaxed);
-    // Then the bands one ahead: a thread takes its next band before drawing the current
-    // one, so that it can fetch the next one's lines meanwhile.
+    // Bands one ahead, so the next one's lines are fetched while drawing the current one.
     int next = counters.take_band(mine, bands.count);
     auto draw = [&](int band, bool cleared, int ahead) {
         mine.drew[band] = 1;
@@ -445,8 +425,7 @@ void render_context::impl::set_up_and_draw(int thread, const raster_mesh &m, con
     }
 }
 
-// Translucent triangles wait for end_frame: the draw's per-pixel-path triangles, piece by
-// piece.
+// Translucent triangles wait for end_frame.
 void render_context::impl::queue_translucent(const draw_plan &plan) {
     for (const piece &from : pieces_of(plan))
         for (generic_triangle g : from.generic) {
@@ -476,7 +455,7 @@ void render_context::impl::draw(const raster_mesh &mesh, const draw_params &para
     const bool generic = per_pixel_path(params);
     const std::uint32_t state = static_cast<std::uint32_t>(s.states.size());
     s.states.push_back(params);
-    // Cluster culling for the fast path, when the clusters were built from this mesh.
+    // Cluster culling for the fast path, when built from this mesh.
     const raster_clusters *clusters = params.clusters;
     const bool use_clusters = clusters && !generic && clusters->vertex_count() == mesh.positions.size() &&
                               clusters->triangle_count() == mesh.triangles.size();

@@ -2,7 +2,6 @@
 #include <algorithm>
 #include <array>
 #include <bit>
-#include <cmath>
 #include <compare>
 #include <cstdint>
 #include <vector>
@@ -17,10 +16,6 @@ namespace {
 
 error mesh_error(const std::string &reason) { return error{"", 0, -1, reason}; }
 
-}  // namespace
-
-namespace {
-
 // A corner's vertex attributes as bits: corners with equal keys are the same vertex.
 struct corner_key {
     std::uint32_t position;
@@ -32,9 +27,8 @@ std::uint32_t bits_of(float v) { return std::bit_cast<std::uint32_t>(v); }
 
 // One vertex per distinct (position, normal, uv) among the corners, numbered in the order of
 // each one's first corner; returns every corner's vertex. Corners that agree bit for bit
-// share a vertex, so a mesh with corner normals that are smooth across most edges is
-// transformed and stored per vertex, not per corner (three times fewer on a closed mesh).
-// The values are the corners' own, so the image is the same as with a vertex per corner.
+// share a vertex, so a smooth mesh is transformed per vertex, not per corner, with the same
+// image.
 template <class CornerNormal>
 std::vector<std::uint32_t> weld_corners(const mesh &m, CornerNormal &&corner_normal, raster_mesh &r) {
     const std::size_t n = m.indices.size();

@@ -1,13 +1,9 @@
 // render_bands.h — how the render context shares a draw between threads ("sort-middle"):
-// the draw's triangles are cut into pieces (runs of consecutive cluster chunks, or of
-// triangles), dealt to the threads in runs of neighbouring pieces (phase_counters); a thread
-// sets up the triangles of a piece into that piece's own lists and bins them by the
-// horizontal bands of the frame they reach. Once every piece is set up, each thread claims
-// bands, those it drew in the frame before and those holding most of its own triangles first
-// (band_affinity); a band is drawn by one thread, piece after piece in piece order — the
-// draw's submission order — so the pixels depend neither on the number of threads nor on
-// which thread set up or drew what, and a piece's lists grow to the same sizes every frame
-// whoever sets it up (no allocation in a steady scene). Not installed.
+// the draw's triangles are cut into pieces, dealt to the threads in runs of neighbouring
+// pieces (phase_counters); a thread sets up a piece into its own lists, binned by band.
+// Then each thread claims bands (band_affinity); a band is drawn by one thread, piece after
+// piece in submission order, so the pixels do not depend on the number of threads or on who
+// set up what, and a piece's lists grow to the same sizes every frame. Not installed.
 #ifndef TINY3D_RENDER_BANDS_H
 #define TINY3D_RENDER_BANDS_H
 
@@ -29,10 +25,8 @@ inline constexpr std::size_t CACHE_LINE = 64;  // bytes
 inline constexpr int BAND_ROWS = 32;
 inline constexpr int MAX_BANDS = 128;
 static_assert(MAX_BANDS <= 256, "band_layout stores band numbers in 8 bits");
-// Pieces per thread in a draw on more than one thread: enough that a thread whose pieces
-// were cheap (back-facing chunks) takes more of them, few enough that the per-piece
-// bookkeeping (a bin per band, visited by every band's draw) stays small. One thread sets
-// up a draw as one piece.
+// Pieces per thread on several threads: enough that a thread whose pieces were cheap takes
+// more, few enough that the per-piece bins (visited by every band's draw) stay few.
 inline constexpr int PIECES_PER_THREAD = 8;
 // Without clusters, a piece is at least this many triangles.
 inline constexpr std::size_t MIN_PIECE_TRIANGLES = 512;
@@ -43,8 +37,7 @@ struct band_layout {
     int height = 0;
     std::vector<std::uint8_t> row_band;  // the band holding each row (inverse of y0)
 
-    // Bands of band_rows rows, at least min_count (one per thread: a small target still
-    // keeps every thread busy), at most MAX_BANDS and `rows`.
+    // Bands of band_rows rows, at least min_count (one per thread), at most MAX_BANDS and `rows`.
     void plan(int rows, int min_count, int band_rows = BAND_ROWS) {
         height = rows;
         count = std::clamp(rows / band_rows, min_count, MAX_BANDS);
@@ -61,20 +54,14 @@ struct band_layout {
     int y0(int b) const { return static_cast<int>(static_cast<long long>(height) * b / count); }
 };
 
-// What one thread knows of the bands when it starts drawing: how many bin entries of each
-// band it set up itself (its own pieces' triangles, still in its cache), and from that the
-// order in which it claims bands — the bands it drew last time, then most of its own
-// entries first (rank) — so that a band is mostly drawn by the thread that set up its
-// triangles instead of fetching them from another core's cache (reading lines another core
-// has just written takes ~3× as long as reading one's own), and by the same thread as in
-// the frame before. Only speed depends on it: a band's pixels do not depend on who draws it.
-// On a cache line of its own per thread.
+// One thread's claiming order of the bands: those it drew last time, then most of its own
+// bin entries first, so a band is mostly drawn by the core that set up its triangles and
+// holds its rows in cache. Only speed depends on it.
 struct alignas(CACHE_LINE) band_affinity {
     std::uint32_t own[MAX_BANDS] = {};  // bin entries per band in the pieces this thread set up
     std::uint8_t order[MAX_BANDS] = {};
     int cursor = 0;  // order[cursor..] are still to be tried
-    // The bands this thread drew in its last band phase: where its next set-up expects to
-    // draw (none before the first; detail::streamed_triangles).
+    // The bands this thread drew in its last band phase (detail::streamed_triangles).
     std::uint8_t drew[MAX_BANDS] = {};
 
     void forget(int count) { std::fill(own, own + count, 0u); }
@@ -82,16 +69,9 @@ struct alignas(CACHE_LINE) band_affinity {
     void count(const Bins &bins, int count) {
         for (int b = 0; b < count; ++b) own[b] += static_cast<std::uint32_t>(bins[b].size());
     }
-    // The claiming order, for `count` bands:
-    //  - kept_then_own: the bands this thread drew in its last band phase (drew) first, then
-    //    the others, each group by own entries (most first; ties: top band first). A band
-    //    stays with one thread from frame to frame, and with it its colour and depth rows,
-    //    which the next clear and fill then find in that core's caches instead of the
-    //    other core's: Scene S level 6 on two threads drew 3–5 of its 32 bands on the other
-    //    thread than the frame before when ranked by own entries alone;
-    //  - own_entries: by own entries alone (multisampled frames, whose band phase comes
-    //    after all their draws' set-ups: drew may describe another band layout);
-    //  - top_down: top to bottom (one thread; translucent triangles, which are not binned).
+    // kept_then_own: drew first, then by own entries (ties: top first), so a band and its
+    // rows stay with one core from frame to frame; own_entries: multisampled frames (drew
+    // may describe another band layout); top_down: one thread, or translucent triangles.
     enum class claim_order { top_down, own_entries, kept_then_own };
     void rank(int count, claim_order how) {
         for (int b = 0; b < count; ++b) order[b] = static_cast<std::uint8_t>(b);
@@ -105,16 +85,12 @@ struct alignas(CACHE_LINE) band_affinity {
     }
 };
 
-// The shared state of one draw's phase, each on a cache line of its own: the pieces dealt
-// to the threads, which bands are taken, and how many pieces (and vertex ranges) are done.
-// Reset by the caller before the workers start (published to them by worker_pool::run).
-//
-// Pieces: thread t's home run is pieces [t·P/n, (t+1)·P/n) — consecutive pieces are
-// neighbouring triangles of the mesh, so a thread's pieces reach few bands and the same
-// thread sets up about the same pieces every frame. It takes its run from the front; a
-// thread whose run is done takes the last pieces of the runs before its own (t − 1, t − 2,
-// …, the run that ends where its own begins first), so nobody waits while pieces are left.
-// Each run is one 64-bit atomic [next, end): the owner and the takers never get one piece twice.
+// The shared state of one draw's phase, each on a cache line of its own. Reset by the
+// caller before the workers start (published by worker_pool::run).
+// Thread t's home run is pieces [t·P/n, (t+1)·P/n): neighbouring triangles, so its pieces
+// reach few bands and are the same every frame. It takes its run from the front, then the
+// back of the runs before its own, so nobody waits while pieces are left. Each run is one
+// 64-bit atomic [next, end), so no piece is taken twice.
 struct phase_counters {
     struct alignas(CACHE_LINE) piece_run {
         std::atomic<std::uint64_t> range{0};  // next | end << 32
@@ -125,7 +101,6 @@ struct phase_counters {
     std::atomic<bool> bad_indices{false};  // a piece found a vertex index out of range
     alignas(CACHE_LINE) std::atomic<std::uint8_t> band_taken[MAX_BANDS] = {};
 
-    // A new phase of `pieces` pieces shared by `threads` threads, over `bands` bands.
     void reset(int pieces, int threads, int bands) {
         bad_indices.store(false, std::memory_order_relaxed);
         for (int t = 0; t < threads; ++t) {
@@ -154,11 +129,8 @@ struct phase_counters {
         }
         return count;
     }
-    // While waiting() holds: the next band in `mine`'s order that no thread has taken, given
-    // to work(band) and recorded in claimed[] — at most `share` bands, this thread's part of
-    // `count` among `threads`, so that a thread which waits long (the others' set-up
-    // unfinished: one descheduled, or started late) cannot take every band and leave the
-    // others nothing to draw. Returns how many it claimed.
+    // While waiting() holds, claims bands for work(band) into claimed[] (returns how many):
+    // at most this thread's share, so a thread that waits long cannot leave the others none.
     template <class Waiting, class Work>
     int claim_while(band_affinity &mine, int count, int threads, Waiting &&waiting, Work &&work, int claimed[]) {
         const int share = (count + threads - 1) / threads;
@@ -171,14 +143,12 @@ struct phase_counters {
         }
         return n;
     }
-    // Waits (spinning, then yielding) until `counter` reaches n; the acquire pairs with the
-    // release of the increments, so everything written before them is visible.
+    // Waits until `counter` reaches n; the acquire pairs with the increments' release.
     static void wait_for(const std::atomic<int> &counter, int n) {
         parallel::spin_until_yielding([&] { return counter.load(std::memory_order_acquire) >= n; });
     }
 
 private:
-    // One piece of a run, from its front (its owner) or its back (another thread).
     static int take(std::atomic<std::uint64_t> &range, bool front) {
         std::uint64_t v = range.load(std::memory_order_relaxed);
         for (;;) {

@@ -1,11 +1,10 @@
 // render_context_impl.h — the schedule stage (internal): the render context's state
 // (render_context::impl) and the per-pixel path's triangle. In: the program's draws
-// (raster.h). Out: the frame — each draw's vertices transformed (the vertex stage,
-// pipeline/vertex_transform.h, handed a vertex_job), its triangles set
-// up (setup/) in pieces shared by the threads and binned by band (render_bands.h), then
-// each band drawn by one thread through the context's kernel table (fill/, msaa/) or the
-// per-pixel path (raster_pixel_path.cpp: Phong, textures, translucency). Called by the
-// public render_context (raster_context.cpp, raster_multisample.cpp). Not installed.
+// (raster.h). Out: the frame — each draw's vertices transformed (pipeline/vertex_transform.h),
+// its triangles set up (setup/) in pieces shared by the threads and binned by band
+// (render_bands.h), then each band drawn by one thread through the kernel table (fill/,
+// msaa/) or the per-pixel path (raster_pixel_path.cpp). Called by the public render_context
+// (raster_context.cpp, raster_multisample.cpp). Not installed.
 #ifndef TINY3D_RENDER_CONTEXT_IMPL_H
 #define TINY3D_RENDER_CONTEXT_IMPL_H
 
@@ -31,9 +30,8 @@ namespace detail {
 inline constexpr float GUARD_SPAN_PIXELS = 2000.0f;
 inline constexpr float MAX_GUARD = 4.0f;
 
-// The vertex stage's job for drawing m with p through mvp (= view_projection · model) on a
-// width × height target, vertices snapped to 1/2^subpixel_bits px; `generic`: the per-pixel
-// path's attributes are wanted. Reads m and p, which must outlive the job.
+// The vertex stage's job for drawing m with p through mvp; `generic`: the per-pixel path's
+// attributes are wanted. m and p must outlive the job.
 inline vertex_job make_vertex_job(const raster_mesh &m, const draw_params &p, const mat4_t &mvp, bool generic,
                                   int width, int height, int subpixel_bits) {
     vertex_job job;
@@ -67,33 +65,27 @@ struct generic_triangle {
     std::uint32_t sequence;  // submission order among the translucent ones (sort tie-break)
 };
 
-// The per-pixel path's triangle from screen vertices and clipped vertices' attributes.
 generic_triangle make_generic_triangle(const screen_vertex v[3], const clip_vertex *const c[3], std::uint32_t state);
 
-// Draws rows [y0, y1) of g with its draw's parameters p onto target and depth: per pixel
-// depth test, (perspective-correct) attributes, Phong or interpolated Gouraud intensity,
-// texture, then opaque write (colour and depth) or "over" blend with p.alpha (colour only).
+// Draws rows [y0, y1) of g: per pixel depth test, perspective-correct attributes, shade,
+// texture, then opaque write or "over" blend with p.alpha (colour only).
 void draw_generic_rows(canvas_t &target, zbuffer &depth, const draw_params &p, const generic_triangle &g, int y0,
                        int y1);
-// The same into a tile of samples (multisampled frames): coverage and depth per sample of
-// `pat`, the shade once per pixel (at its centre), opaque write or blend per passing sample.
+// The same into a tile of samples: coverage and depth per sample, the shade once per pixel.
 void draw_generic_samples(sample_store &tile, const sample_pattern &pat, float clear_colour, const draw_params &p,
                           const generic_triangle &g, int y0, int y1);
 
-// Multisampled frames: bands of band_rows(samples) rows, so that one band's samples (8 ·
-// samples bytes per pixel) stay in the core's caches while every triangle reaching it is
-// drawn, and few triangles straddle two bands: 16 rows at 8× and 16× (a band of 16 rows at
-// 16 samples is 2 MB at 1024 px wide), 32 at 4× (1 MB: still within a core's L2, with half
-// the triangles straddling a band edge that 16 rows would have; documentation/benchmarks.md).
-// In every frame, a band bin entry with GENERIC_BIN set names a per-pixel-path triangle.
+// Multisampled bands of band_rows(samples) rows: one band's samples stay in the core's
+// caches while its triangles are drawn (16 rows at 8× and 16×), yet at 4× 32 rows still fit
+// and halve the triangles straddling a band edge. A bin entry with GENERIC_BIN set names a
+// per-pixel-path triangle.
 inline constexpr int MSAA_BAND_ROWS = 16;
 inline constexpr int band_rows(int samples) { return samples == 1 || samples == 4 ? BAND_ROWS : MSAA_BAND_ROWS; }
 inline constexpr std::uint32_t GENERIC_BIN = 1u << 31;
 
-// How a draw is cut into pieces (render_bands.h): pieces [first, first + count) of the
-// frame's, each `size` cluster chunks (with clusters) or triangles; with shared_vertices,
-// the threads first transform a range of vertices each into segment 0's arrays, which every
-// piece then reads (a draw without clusters on several threads).
+// A draw's pieces [first, first + count) of the frame's, each `size` cluster chunks or
+// triangles; shared_vertices: the threads first transform a range of vertices each into
+// segment 0's arrays, which every piece reads (no clusters, several threads).
 struct draw_plan {
     int first = 0, count = 0;
     std::size_t size = 0;
@@ -112,33 +104,29 @@ struct render_context::impl {
     float clear_intensity = 0.0f;
     float guard = 1.0f;
     frame_stats stats;
-    // Multisampling (raster_multisample.cpp): the frame's pattern. draw() then only sets up
-    // and bins (the pieces keep every draw's triangles until end_frame); end_frame() draws
-    // band by band into a per-thread tile of samples and resolves it.
+    // Multisampled frames: draw() only sets up and bins; end_frame() draws band by band into
+    // a per-thread tile of samples and resolves it (raster_multisample.cpp).
     const detail::sample_pattern *pattern = &detail::pattern_of(1);
     detail::sample_store tiles[detail::MAX_THREADS];
     const detail::kernel_table *kernels = &detail::default_kernels();  // every fill's (use_simd)
     bool multisampled() const { return pattern->count > 1; }
 
-    // One thread's transformed vertices. Aligned to a cache line of its own: the vector
-    // headers are read per triangle, and another thread writing the same line (false
-    // sharing) slows every read.
+    // One thread's transformed vertices, on a cache line of its own: the vector headers are
+    // read per triangle (no false sharing).
     struct alignas(detail::CACHE_LINE) segment {
-        std::vector<detail::xvertex> vertices;  // the vertices of the draw this thread transformed
-        std::vector<vec4_t> clip;               // their clip-space positions
+        std::vector<detail::xvertex> vertices;
+        std::vector<vec4_t> clip;
         std::vector<float> vertex_attr;         // ATTR_COUNT per vertex (generic path only)
         std::vector<std::uint8_t> walk;         // a piece's cluster chunks: walked or skipped
-        // Which vertices this thread has transformed in the current draw: stamp[i] ==
-        // generation (bumped once per draw and thread). A vertex shared by several walked
-        // chunks (1.41 chunk vertices per mesh vertex in Scene S) is transformed once.
+        // Vertex i is transformed in this draw when stamp[i] == generation, so a vertex shared
+        // by several walked chunks is transformed once.
         std::vector<std::uint32_t> stamp;
         std::uint32_t generation = 0;
         std::vector<std::uint32_t> fresh;  // a chunk's vertices not yet transformed
-        // A new draw: no vertex transformed yet (stamps cleared when the counter wraps).
         void begin_draw() {
             if (++generation == 0) std::fill(stamp.begin(), stamp.end(), 0u), generation = 1;
         }
-        // The vertices of `list` not yet transformed in this draw, marked as transformed now.
+        // The vertices of `list` not yet transformed, marked as transformed now.
         detail::vertex_set not_yet_transformed(const std::uint32_t *list, std::size_t count) {
             if (fresh.size() < count) fresh.resize(count);  // (grown once: the largest chunk)
             std::size_t n = 0;
@@ -151,13 +139,11 @@ struct render_context::impl {
             return {fresh.data(), n};
         }
     };
-    // What the set-up of one piece produced (render_bands.h), on cache lines of its own.
+    // What the set-up of one piece produced, on cache lines of its own.
     struct alignas(detail::CACHE_LINE) piece {
         std::vector<detail::fast_triangle> fast;
-        // The fast triangles reaching a band that another thread drew in the setting-up
-        // thread's last band phase: likely drawn by that thread again, so streamed
-        // (detail::streamed_triangles) when streaming is on (use_streaming_stores); their bin
-        // entries carry FAR_ENTRY.
+        // Fast triangles reaching a band another thread drew last time: likely drawn there
+        // again, so streamed when streaming is on; their bin entries carry FAR_ENTRY.
         detail::streamed_triangles far;
         // While set up: band_affinity::drew, or null (none far: one thread, or streaming off).
         const std::uint8_t *near_bands = nullptr;
@@ -184,8 +170,7 @@ struct render_context::impl {
     std::atomic<bool> out_of_memory{false};
     status failure;
     void draw(const raster_mesh &mesh, const draw_params &params);  // render_context::draw's work
-    // report_progress: the caller's callback, the bands of the current pass drawn so far and
-    // the triangles the pass draws.
+    // report_progress: the caller's callback and the current pass's progress.
     void (*progress_report)(const render_context::progress &, void *) = nullptr;
     void *progress_user = nullptr;
     std::atomic<int> bands_drawn{0};
@@ -238,10 +223,8 @@ struct render_context::impl {
         if (f.wide >= 0) out.wide.push_back(t);
         bin_fast(f, out);
     }
-    // Appends a set-up fast triangle — to out.fast, or streamed to out.far when a band it
-    // covers was drawn by another thread last time (piece::near_bands) — and puts it into
-    // the bins of the bands it covers. Out of line, so that the vector appends inline here
-    // (inside the large set-up loop GCC's inliner gives up and calls them).
+    // Appends a fast triangle to out.fast (or out.far: piece::near_bands) and bins it. Out of
+    // line, so that the vector appends inline here (in the set-up loop GCC calls them).
     [[gnu::noinline]] void bin_fast(const detail::fast_triangle &f, piece &out) {
         const int first = bands.of(f.min_y), last = bands.of(f.max_y);
         const bool near = !out.near_bands || std::all_of(out.near_bands + first, out.near_bands + last + 1,
@@ -268,8 +251,7 @@ struct render_context::impl {
         bin_bands(bands.of(y0), bands.of(y1), static_cast<std::uint32_t>(out.generic.size() - 1) | detail::GENERIC_BIN, out);
     }
 
-    // Multisampled frames (raster_multisample.cpp).
-    // Appends f (made by make_msaa_triangle: either form) with the draw state and bins it.
+    // Multisampled frames (raster_multisample.cpp): appends f with the draw state and bins it.
     void add_msaa(const detail::msaa_triangle &f, std::uint32_t state, piece &out);
     void draw_multisampled_band(int band, detail::sample_store &tile);
 };

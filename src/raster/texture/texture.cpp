@@ -26,17 +26,15 @@ result<texture> texture_from_canvas(const canvas_t &canvas) {
 
 namespace {
 
-// Texel index along one axis for integer coordinate i (may be outside 0..n−1). Callers
-// pass coordinates reduced first (reduce): with repeat, x ∈ [0, 1]·n, so i ∈ [−1, n] and one
-// wrap by n suffices (no division per texel: it was most of a bilinear lookup's time).
+// Texel index along one axis for i ∈ [−1, n] (coordinates reduced first): one wrap by n
+// suffices, with no division per texel.
 int address(int i, int n, texture_wrap wrap) {
     if (wrap == texture_wrap::clamp) return i < 0 ? 0 : (i >= n ? n - 1 : i);
     return i < 0 ? i + n : (i >= n ? i - n : i);
 }
 
-// ⌊t⌋ for finite t, without a libm call (x86-64's baseline has no rounding instruction):
-// from 2^23 on every float is an integer; below, truncation then one step down. (Not
-// float(floor_to_int(t)): the extra int → float conversion sits on the lookup's critical path.)
+// ⌊t⌋ for finite t without a libm call (the x86-64 baseline has no rounding instruction);
+// from 2^23 on every float is an integer.
 float floor_of(float t) {
     if (!(std::fabs(t) < 8388608.0f)) return t;
     const float f = static_cast<float>(static_cast<int>(t));
@@ -50,9 +48,8 @@ float reduce(float t, texture_wrap wrap) {
     return t < -1.0f ? -1.0f : (t > 2.0f ? 2.0f : t);  // clamp: beyond ±1 texture all edge texels
 }
 
-// ⌊t⌋ for |t| < 2^31: truncation, then one step down in a branch rather than a select, as
-// t < 0 only in the first half texel (or beyond the edge with clamp): the branch is
-// predicted and the texel address need not wait for the compare.
+// ⌊t⌋ for |t| < 2^31; a branch, not a select: t < 0 is rare and predicted, so the texel
+// address need not wait for the compare.
 int floor_index(float t) {
     int i = static_cast<int>(t);
     if (t < static_cast<float>(i)) [[unlikely]]
@@ -109,9 +106,8 @@ struct level_pair {
     const int last = static_cast<int>(tex.mipmaps.size());
     if (!(lod > 0.0f)) lod = 0.0f;  // also NaN
     if (lod >= static_cast<float>(last)) lod = static_cast<float>(last);
-    // k = ⌊λ⌋ by compares and branches, not a conversion: λ varies slowly from pixel to
-    // pixel, so the processor predicts k and starts the texel loads before λ is known.
-    // (λ ≤ last, so the search stops at the last level by itself.)
+    // k = ⌊λ⌋ by predicted branches, not a conversion (λ varies slowly from pixel to pixel),
+    // so the texel loads start before λ is known.
     int k = 0;
     float floor_lod = 0.0f;
     while (lod >= floor_lod + 1.0f) ++k, floor_lod += 1.0f;
@@ -186,21 +182,14 @@ float texture_sample_anisotropic(const texture &tex, float u, float v, float du_
     const float first = 0.5f - 0.5f * n;  // tap 0's offset, in steps
     float sum = 0.0f;
     if (wrap == texture_wrap::repeat && std::fabs(step_u) * n <= 0.5f && std::fabs(step_v) * n <= 0.5f) {
-        // The usual case: walk the taps in each level's texel space from the centre, reduced
-        // once to [0, 1]. The footprint spans at most half the texture, so a tap's texel
-        // index stays within [−n, 2n) for a level n texels across, which address() wraps.
+        // The usual case: the footprint spans at most half the texture, so each level's taps
+        // stay within the one wrap tap_walk allows.
         const float ru = reduce(u, wrap), rv = reduce(v, wrap);
         float (*const walk_taps)(const detail::tap_walk &) = detail::default_kernels().walk_taps;
         const auto walk = [&](const level_view &l) {
             const float w_l = static_cast<float>(l.width), h_l = static_cast<float>(l.height);
-            const detail::tap_walk taps_here{l.texels,
-                                             l.width,
-                                             l.height,
-                                             (ru + step_u * first) * w_l - 0.5f,
-                                             (rv + step_v * first) * h_l - 0.5f,
-                                             step_u * w_l,
-                                             step_v * h_l,
-                                             taps};
+            const detail::tap_walk taps_here{l.texels, l.width, l.height, (ru + step_u * first) * w_l - 0.5f,
+                                             (rv + step_v * first) * h_l - 0.5f, step_u * w_l, step_v * h_l, taps};
             return walk_taps ? walk_taps(taps_here) : detail::walk_taps_portable(taps_here);
         };
         const float fine_sum = walk(levels.fine);

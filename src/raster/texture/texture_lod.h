@@ -23,12 +23,9 @@ inline float texel_footprint2(float a_x, float b_x, float a_y, float b_y) {
     return along_x > along_y ? along_x : along_y;
 }
 
-// log2 x within 2e-5 (absolute) for normal x: x = 2^e · m with m ∈ [√½, √2) read from the
-// bits, then log2 m = t·p(t), t = m − 1, p of degree 4 fitted to minimise the largest error
-// on that interval (iteratively reweighted least squares on Chebyshev nodes: 1.5e-5, the
-// rest is float rounding); exact at powers of two. Below FLT_MIN (0, denormals, negatives)
-// it returns −∞; +∞ and NaN pass through. Inline, two predictable branches and a short
-// chain of multiply-adds, where libm's log2f is a call on every trilinear lookup.
+// log2 x within 2e-5 for normal x, exact at powers of two: x = 2^e · m, m ∈ [√½, √2), then
+// log2 m = t·p(t), t = m − 1, p a minimax quartic. Below FLT_MIN −∞; +∞ and NaN pass
+// through. Inline, where libm's log2f is a call on every trilinear lookup.
 inline float fast_log2(float x) {
     const std::int32_t bits = std::bit_cast<std::int32_t>(x);
     // One unsigned compare for "positive, normal and finite": exponent field 1..254.
@@ -36,8 +33,7 @@ inline float fast_log2(float x) {
         return x != x || x > 1.0f ? x : -INFINITY;  // NaN, +∞; 0, denormals, negatives
     const std::int32_t e = (bits - 0x3f3504f3) >> 23;  // 0x3f3504f3 = √½: m lands in [√½, √2)
     const float t = std::bit_cast<float>(bits - (e << 23)) - 1.0f;
-    // p(t) = c1 + c2·t + c3·t² + c4·t³ + c5·t⁴ in Estrin's form (pairs, then t², t⁴): a
-    // chain of 3 multiply-adds instead of Horner's 4, the latency the per-pixel path waits on.
+    // Estrin's form: a chain of 3 multiply-adds instead of Horner's 4 (the pixel waits on it).
     const float t2 = t * t;
     const float p = (1.4425780085046165f - 0.7202417919512255f * t) +
                     t2 * (0.4866862123526085f - 0.3945753983578955f * t) + (t2 * t2) * 0.25265972067842235f;

@@ -16,12 +16,9 @@ struct tap_walk {
     int taps;             // 1 … 64
 };
 
-// The sum of the bilinear lookups at (fx0 + i·sx, fy0 + i·sy), i = 0 … taps − 1, each with
-// repeat addressing; every tap's texel index must lie in [−width, 2·width − 1) (and the same
-// along y), which one wrap brings into the level. Tap i goes to lane i mod 8, in order, and
-// the lanes are summed as ((0 + 4) + (2 + 6)) + ((1 + 5) + (3 + 7)): the order in which an
-// eight-lane kernel adds its vectors and then halves them, so that every kernel returns the
-// same bits.
+// The sum of the bilinear lookups at (fx0 + i·sx, fy0 + i·sy), i < taps, each texel index in
+// [−width, 2·width − 1) (likewise y). Tap i goes to lane i mod 8 and the lanes are summed as
+// ((0 + 4) + (2 + 6)) + ((1 + 5) + (3 + 7)), an eight-lane kernel's order: the same bits.
 float walk_taps_portable(const tap_walk &w);
 float walk_taps_avx2(const tap_walk &w);  // builds with the AVX2 kernels, for CPUs with AVX2
 

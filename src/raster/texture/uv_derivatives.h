@@ -8,13 +8,10 @@
 
 namespace tiny3d::detail {
 
-// With barycentrics l_k (affine in screen x, y) and weights q_k (1/w_k perspective-correct,
-// 1 affine): u = A/B, A = Σ l_k q_k u_k, B = Σ l_k q_k, both affine in screen space, so
-// ∂u/∂x = (∂A/∂x·B − A·∂B/∂x) / B² exactly (the quotient rule); likewise v and y. With
-// w_k = l_k q_k the numerator is Σ w_k (∂A/∂x − u_k ∂B/∂x): a dot product of the pixel's
-// weights before their normalisation with per-triangle constants, so it need not wait for
-// the division 1/B, which shortens the chain of latencies from a pixel's barycentrics to its
-// texel loads.
+// u = A/B with A = Σ l_k q_k u_k, B = Σ l_k q_k affine in screen space (q_k = 1/w_k, or 1),
+// so ∂u/∂x = (∂A/∂x·B − A·∂B/∂x) / B², whose numerator Σ w_k (∂A/∂x − u_k ∂B/∂x) is a dot
+// product of the unnormalised weights w_k = l_k q_k with per-triangle constants: it need not
+// wait for the division 1/B.
 struct uv_derivatives {
     // numerator[d][k]: the constant of w_k in the numerator of derivative d =
     // ∂u/∂x, ∂v/∂x, ∂u/∂y, ∂v/∂y (in the units of the (u, v) given to `of`).
