@@ -2,9 +2,10 @@
 // sub-pixel coordinates from the vertex stage). Out: the snapped, culled triangle as edge
 // equations and attribute planes — fast_triangle for the 1-sample fill, triangle_edges for
 // the 64-bit one (msaa/msaa.h has the multisampled form) — one at a time
-// (setup/triangle_setup.cpp) or eight at a time (setup_fast_batch: the table's
-// setup_batch_avx2/avx512.cpp). Called by the render context's set-up loop
-// (schedule/raster_context.cpp) and the public fill_triangle (fill/raster_fill.cpp).
+// (setup/triangle_setup.cpp) or eight at a time (setup_fast_batch: setup_batch.inc over
+// the lane traits of the table's setup_batch_avx2/avx512.cpp). Called by the render
+// context's set-up loop (schedule/raster_context.cpp) and the public fill_triangle
+// (fill/raster_fill.cpp).
 // Also the depth tests every stage shares. Not installed.
 #ifndef TINY3D_RASTER_SETUP_H
 #define TINY3D_RASTER_SETUP_H
