@@ -47,21 +47,7 @@ void fill_rows_scalar64(canvas_t &canvas, zbuffer *depth, const fast_triangle &f
 }
 
 #ifdef TINY3D_SSE2
-template <depth_func Test>
-inline __m128 depth_mask(__m128 z, __m128 stored) {
-    if constexpr (Test == depth_func::less) return _mm_cmplt_ps(z, stored);
-    else if constexpr (Test == depth_func::less_equal) return _mm_cmple_ps(z, stored);
-    else if constexpr (Test == depth_func::equal) return _mm_cmpeq_ps(z, stored);
-    else if constexpr (Test == depth_func::greater) return _mm_cmpgt_ps(z, stored);
-    else if constexpr (Test == depth_func::greater_equal) return _mm_cmpge_ps(z, stored);
-    else if constexpr (Test == depth_func::not_equal) return _mm_cmpneq_ps(z, stored);
-    else if constexpr (Test == depth_func::always) return _mm_castsi128_ps(_mm_set1_epi32(-1));
-    else return _mm_setzero_ps();
-}
-
-inline __m128 select(__m128 mask, __m128 a, __m128 b) {  // mask ? a : b
-    return _mm_or_ps(_mm_and_ps(mask, a), _mm_andnot_ps(mask, b));
-}
+#include "narrow_rows.inc"
 
 // The 4-wide span loop: each row runs from its exact first covered pixel (row_spans) in
 // groups of four; only the last group of a row is partial (its lanes below the row's end
@@ -102,17 +88,17 @@ void fill_rows_sse2(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bo
             __m128 mask = cover, stored = z;
             if constexpr (HasDepth) {
                 stored = _mm_loadu_ps(zrow + x);
-                mask = _mm_and_ps(mask, depth_mask<Test>(z, stored));
+                mask = _mm_and_ps(mask, lanes4::depth_mask<Test>(z, stored));
             }
             const int pass = _mm_movemask_ps(mask);
             if (decltype(whole)::value && pass == 0xF) {  // all four pass: plain stores, no colour read
                 if (HasDepth && depth_write) _mm_storeu_ps(zrow + x, z);
                 _mm_storeu_ps(color + x, _mm_min_ps(_mm_max_ps(in, zero), one));
             } else {
-                if (HasDepth && depth_write) _mm_storeu_ps(zrow + x, select(mask, z, stored));
+                if (HasDepth && depth_write) _mm_storeu_ps(zrow + x, lanes4::select(mask, z, stored));
                 if (pass) {
                     const __m128 shade = _mm_min_ps(_mm_max_ps(in, zero), one);
-                    _mm_storeu_ps(color + x, select(mask, shade, _mm_loadu_ps(color + x)));
+                    _mm_storeu_ps(color + x, lanes4::select(mask, shade, _mm_loadu_ps(color + x)));
                 }
             }
         };
@@ -133,32 +119,10 @@ void fill_rows_sse2(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bo
     }
 }
 
-// The narrow rows kernel's lanes (narrow_rows.inc): one group of four per SSE2 register.
-struct lanes4_sse2 {
-    using vec = __m128;
-    using ivec = __m128i;
-    static constexpr int groups = 1;
-    static ivec splat(int v) { return _mm_set1_epi32(v); }
-    static vec cover(int at, ivec before, ivec after) {
-        const __m128i column = _mm_add_epi32(_mm_set_epi32(3, 2, 1, 0), _mm_set1_epi32(at));
-        return _mm_castsi128_ps(_mm_and_si128(_mm_cmpgt_epi32(column, before), _mm_cmplt_epi32(column, after)));
-    }
-    static vec join(const __m128 *g) { return g[0]; }
-    template <depth_func Test>
-    static vec depth_mask(vec z, vec stored) { return detail::depth_mask<Test>(z, stored); }
-    static vec mask_and(vec a, vec b) { return _mm_and_ps(a, b); }
-    static vec select(vec mask, vec a, vec b) { return detail::select(mask, a, b); }
-    static vec clamp01(vec v) { return _mm_min_ps(_mm_max_ps(v, _mm_setzero_ps()), _mm_set1_ps(1.0f)); }
-    static vec load(const float *p) { return _mm_loadu_ps(p); }
-    static void store(float *p, vec v) { _mm_storeu_ps(p, v); }
-};
-
-#include "narrow_rows.inc"
-
 template <depth_func Test, bool HasDepth>
-void fill_rows_sse2_any(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bool depth_write, int y0, int y1) {
+[[gnu::flatten]] void fill_rows_sse2_any(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bool depth_write, int y0, int y1) {
     if (narrow_fits(f, canvas.width))
-        return narrow_rows_any<lanes4_sse2, Test, HasDepth>(canvas, depth, f, depth_write, y0, y1);
+        return narrow_rows_any<lanes4, Test, HasDepth>(canvas, depth, f, depth_write, y0, y1);
     fill_rows_sse2<Test, HasDepth>(canvas, depth, f, depth_write, y0, y1);
 }
 

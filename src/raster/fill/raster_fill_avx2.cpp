@@ -26,39 +26,15 @@
 namespace tiny3d::detail {
 namespace {
 
-// The SSE2 kernel's depth compares (cmpltps … cmpneqps) as one predicate of vcmpps: all
-// ones where the depth test passes.
-template <depth_func Test>
-constexpr int depth_predicate() {
-    if constexpr (Test == depth_func::less) return _CMP_LT_OS;
-    else if constexpr (Test == depth_func::less_equal) return _CMP_LE_OS;
-    else if constexpr (Test == depth_func::equal) return _CMP_EQ_OQ;
-    else if constexpr (Test == depth_func::greater) return _CMP_GT_OS;
-    else if constexpr (Test == depth_func::greater_equal) return _CMP_GE_OS;
-    else if constexpr (Test == depth_func::not_equal) return _CMP_NEQ_UQ;
-    else if constexpr (Test == depth_func::always) return _CMP_TRUE_UQ;
-    else return _CMP_FALSE_OQ;
-}
+#include "narrow_rows.inc"
 
 // The narrow rows kernel's lanes (narrow_rows.inc): two groups of four per 256-bit register,
 // a lone last group in a 128-bit one; the SSE2 kernel's compares as vcmpps predicates and its
 // and/andnot/or selects as blends.
-struct lanes4_avx {
-    using vec = __m128;
-    using ivec = __m128i;
-    static constexpr int groups = 1;
-    static vec cover(int at, ivec before, ivec after) {
-        const __m128i column = _mm_add_epi32(_mm_setr_epi32(0, 1, 2, 3), _mm_set1_epi32(at));
-        return _mm_castsi128_ps(_mm_and_si128(_mm_cmpgt_epi32(column, before), _mm_cmplt_epi32(column, after)));
-    }
-    static vec join(const __m128 *g) { return g[0]; }
+struct lanes4_avx : lanes4 {
     template <depth_func Test>
     static vec depth_mask(vec z, vec stored) { return _mm_cmp_ps(z, stored, depth_predicate<Test>()); }
-    static vec mask_and(vec a, vec b) { return _mm_and_ps(a, b); }
     static vec select(vec mask, vec a, vec b) { return _mm_blendv_ps(b, a, mask); }
-    static vec clamp01(vec v) { return _mm_min_ps(_mm_max_ps(v, _mm_setzero_ps()), _mm_set1_ps(1.0f)); }
-    static vec load(const float *p) { return _mm_loadu_ps(p); }
-    static void store(float *p, vec v) { _mm_storeu_ps(p, v); }
 };
 struct lanes8_avx2 {
     using vec = __m256;
@@ -67,8 +43,9 @@ struct lanes8_avx2 {
     static constexpr int groups = 2;
     static ivec splat(int v) { return _mm256_set1_epi32(v); }
     static __m128i low(ivec v) { return _mm256_castsi256_si128(v); }
-    static vec cover(int at, ivec before, ivec after) {
-        const __m256i column = _mm256_add_epi32(_mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7), _mm256_set1_epi32(at));
+    static ivec columns() { return _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7); }
+    static ivec advance(ivec column) { return _mm256_add_epi32(column, _mm256_set1_epi32(8)); }
+    static vec cover(ivec column, ivec before, ivec after) {
         return _mm256_castsi256_ps(_mm256_and_si256(_mm256_cmpgt_epi32(column, before), _mm256_cmpgt_epi32(after, column)));
     }
     static vec join(const __m128 *g) { return _mm256_set_m128(g[1], g[0]); }
@@ -80,8 +57,6 @@ struct lanes8_avx2 {
     static vec load(const float *p) { return _mm256_loadu_ps(p); }
     static void store(float *p, vec v) { _mm256_storeu_ps(p, v); }
 };
-
-#include "narrow_rows.inc"
 
 }  // namespace
 
