@@ -119,6 +119,8 @@ void fill_rows_sse2(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bo
     }
 }
 
+// Flattened: both kernels inlined, no call per triangle (GCC's heuristics keep the larger
+// narrow cases out of line otherwise).
 template <depth_func Test, bool HasDepth>
 [[gnu::flatten]] void fill_rows_sse2_any(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bool depth_write, int y0, int y1) {
     if (narrow_fits(f, canvas.width))
