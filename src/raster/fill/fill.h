@@ -1,7 +1,8 @@
 // fill.h — the 1-sample fill stage (internal). In: set-up fast_triangles (setup/setup.h),
 // binned by band (band_bin), and a band's rows. Out: shaded, depth-tested pixels in the
 // canvas and the depth buffer. The kernels: fill/raster_fill.cpp (portable and SSE2),
-// raster_fill_avx2.cpp, raster_fill_avx512.cpp, chosen through the kernel table
+// raster_fill_avx2.cpp, raster_fill_avx512.cpp (narrow_rows.inc: the narrow rows kernel
+// SSE2 and AVX2 share, over the register width), chosen through the kernel table
 // (src/kernels.h). Called by the render context's band loop (schedule/raster_context.cpp)
 // and the public fill_triangle. Not installed.
 #ifndef TINY3D_RASTER_FILL_H
@@ -15,6 +16,9 @@
 
 #ifdef TINY3D_SSE2
 #include <emmintrin.h>
+#endif
+#ifdef TINY3D_AVX2
+#include <immintrin.h>
 #endif
 
 namespace tiny3d::detail {
@@ -152,8 +156,23 @@ inline bool narrow_fits(const fast_triangle &f, int width) {
 }
 
 #ifdef TINY3D_AVX2
-// The AVX2 band kernel for the narrow triangles (raster_fill_avx2.cpp: two
-// groups of four per register; SSE2's for the others).
+// The SSE2 kernel's depth compares (cmpltps … cmpneqps: ordered and signalling but for
+// not_equal, which is true on NaN) as one predicate of vcmpps, for the AVX2 and AVX-512
+// kernels.
+template <depth_func Test>
+constexpr int depth_predicate() {
+    if constexpr (Test == depth_func::less) return _CMP_LT_OS;
+    else if constexpr (Test == depth_func::less_equal) return _CMP_LE_OS;
+    else if constexpr (Test == depth_func::equal) return _CMP_EQ_OQ;
+    else if constexpr (Test == depth_func::greater) return _CMP_GT_OS;
+    else if constexpr (Test == depth_func::greater_equal) return _CMP_GE_OS;
+    else if constexpr (Test == depth_func::not_equal) return _CMP_NEQ_UQ;
+    else if constexpr (Test == depth_func::always) return _CMP_TRUE_UQ;
+    else return _CMP_FALSE_OQ;
+}
+
+// The AVX2 band kernel for the narrow triangles (raster_fill_avx2.cpp: narrow_rows.inc with
+// two groups of four per register; SSE2's for the others).
 void fill_fast_bins_avx2(canvas_t &canvas, zbuffer &depth, const band_bin *bins, int bin_count, depth_func test,
                          int y0, int y1, band_prefetch &ahead);
 #endif

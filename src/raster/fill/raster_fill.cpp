@@ -47,21 +47,7 @@ void fill_rows_scalar64(canvas_t &canvas, zbuffer *depth, const fast_triangle &f
 }
 
 #ifdef TINY3D_SSE2
-template <depth_func Test>
-inline __m128 depth_mask(__m128 z, __m128 stored) {
-    if constexpr (Test == depth_func::less) return _mm_cmplt_ps(z, stored);
-    else if constexpr (Test == depth_func::less_equal) return _mm_cmple_ps(z, stored);
-    else if constexpr (Test == depth_func::equal) return _mm_cmpeq_ps(z, stored);
-    else if constexpr (Test == depth_func::greater) return _mm_cmpgt_ps(z, stored);
-    else if constexpr (Test == depth_func::greater_equal) return _mm_cmpge_ps(z, stored);
-    else if constexpr (Test == depth_func::not_equal) return _mm_cmpneq_ps(z, stored);
-    else if constexpr (Test == depth_func::always) return _mm_castsi128_ps(_mm_set1_epi32(-1));
-    else return _mm_setzero_ps();
-}
-
-inline __m128 select(__m128 mask, __m128 a, __m128 b) {  // mask ? a : b
-    return _mm_or_ps(_mm_and_ps(mask, a), _mm_andnot_ps(mask, b));
-}
+#include "narrow_rows.inc"
 
 // The 4-wide span loop: each row runs from its exact first covered pixel (row_spans) in
 // groups of four; only the last group of a row is partial (its lanes below the row's end
@@ -102,17 +88,17 @@ void fill_rows_sse2(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bo
             __m128 mask = cover, stored = z;
             if constexpr (HasDepth) {
                 stored = _mm_loadu_ps(zrow + x);
-                mask = _mm_and_ps(mask, depth_mask<Test>(z, stored));
+                mask = _mm_and_ps(mask, lanes4::depth_mask<Test>(z, stored));
             }
             const int pass = _mm_movemask_ps(mask);
             if (decltype(whole)::value && pass == 0xF) {  // all four pass: plain stores, no colour read
                 if (HasDepth && depth_write) _mm_storeu_ps(zrow + x, z);
                 _mm_storeu_ps(color + x, _mm_min_ps(_mm_max_ps(in, zero), one));
             } else {
-                if (HasDepth && depth_write) _mm_storeu_ps(zrow + x, select(mask, z, stored));
+                if (HasDepth && depth_write) _mm_storeu_ps(zrow + x, lanes4::select(mask, z, stored));
                 if (pass) {
                     const __m128 shade = _mm_min_ps(_mm_max_ps(in, zero), one);
-                    _mm_storeu_ps(color + x, select(mask, shade, _mm_loadu_ps(color + x)));
+                    _mm_storeu_ps(color + x, lanes4::select(mask, shade, _mm_loadu_ps(color + x)));
                 }
             }
         };
@@ -133,56 +119,12 @@ void fill_rows_sse2(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bo
     }
 }
 
-// Triangles that narrow_fits (fill.h): every row is drawn as the same `groups`
-// groups of four from min_x, the lanes outside the row's span masked off, so the branches
-// are the row loop and a group loop of constant trip count (the span loop's per-row trip
-// counts mispredict on small triangles).
-
-template <depth_func Test, bool HasDepth, int Groups>
-void fill_rows_narrow(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bool depth_write, int y0, int y1) {
-    const __m128i lane = _mm_set_epi32(3, 2, 1, 0), four = _mm_set1_epi32(4);
-    const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f);
-    const row_spans spans(f);
-    const group_planes planes(f);
-    const int min_x = f.min_x, min_y = f.min_y;
-    for (int y = y0; y < y1; ++y) {
-        const int dy = y - min_y;
-        int lo, hi;
-        spans.at(dy, lo, hi);
-        const __m128i before = _mm_set1_epi32(lo - 1), after = _mm_set1_epi32(hi + 1);
-        __m128 z, in;
-        planes.first_group(dy, z, in);
-        float *color = canvas.pixels[y] + min_x;
-        float *zrow = HasDepth ? depth->row(y) + min_x : nullptr;
-        __m128i column = lane;
-        for (int g = 0; g < Groups; ++g, column = _mm_add_epi32(column, four), z = _mm_add_ps(z, planes.zstep),
-                 in = _mm_add_ps(in, planes.istep)) {
-            __m128 mask = _mm_castsi128_ps(_mm_and_si128(_mm_cmpgt_epi32(column, before), _mm_cmplt_epi32(column, after)));
-            if constexpr (HasDepth) {
-                const __m128 stored = _mm_loadu_ps(zrow + 4 * g);
-                mask = _mm_and_ps(mask, depth_mask<Test>(z, stored));
-                if (depth_write) _mm_storeu_ps(zrow + 4 * g, select(mask, z, stored));
-            }
-            const __m128 shade = _mm_min_ps(_mm_max_ps(in, zero), one);
-            _mm_storeu_ps(color + 4 * g, select(mask, shade, _mm_loadu_ps(color + 4 * g)));
-        }
-    }
-}
-
+// Flattened: both kernels inlined, no call per triangle (GCC's heuristics keep the larger
+// narrow cases out of line otherwise).
 template <depth_func Test, bool HasDepth>
-void fill_rows_sse2_any(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bool depth_write, int y0, int y1) {
-    const int groups = (f.max_x - f.min_x + 4) / 4;  // ⌈bounding-box width / 4⌉
-    static_assert(NARROW_WIDTH == 16, "one case per group count below");
-    if (narrow_fits(f, canvas.width)) {
-        // The group count as a constant: the group loop is unrolled, so no per-row loop exit
-        // to mispredict when consecutive triangles have different widths.
-        switch (groups) {
-            case 1: return fill_rows_narrow<Test, HasDepth, 1>(canvas, depth, f, depth_write, y0, y1);
-            case 2: return fill_rows_narrow<Test, HasDepth, 2>(canvas, depth, f, depth_write, y0, y1);
-            case 3: return fill_rows_narrow<Test, HasDepth, 3>(canvas, depth, f, depth_write, y0, y1);
-            default: return fill_rows_narrow<Test, HasDepth, 4>(canvas, depth, f, depth_write, y0, y1);
-        }
-    }
+[[gnu::flatten]] void fill_rows_sse2_any(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, bool depth_write, int y0, int y1) {
+    if (narrow_fits(f, canvas.width))
+        return narrow_rows_any<lanes4, Test, HasDepth>(canvas, depth, f, depth_write, y0, y1);
     fill_rows_sse2<Test, HasDepth>(canvas, depth, f, depth_write, y0, y1);
 }
 

@@ -67,17 +67,11 @@ struct lanes8 {
     static mask compare(mask m, vec a, vec b) { return _mm256_mask_cmp_ps_mask(m, a, b, Predicate); }
 };
 
+// The depth test (depth_predicate) on the lanes of `cover`.
 template <depth_func Test, class L>
 inline typename L::mask depth_pass(typename L::mask cover, typename L::vec z, typename L::vec stored) {
-    // The SSE2 kernel's compares (cmpltps … cmpneqps): ordered and signalling but for
-    // not_equal, which is true on NaN.
-    if constexpr (Test == depth_func::less) return L::template compare<_CMP_LT_OS>(cover, z, stored);
-    else if constexpr (Test == depth_func::less_equal) return L::template compare<_CMP_LE_OS>(cover, z, stored);
-    else if constexpr (Test == depth_func::equal) return L::template compare<_CMP_EQ_OQ>(cover, z, stored);
-    else if constexpr (Test == depth_func::greater) return L::template compare<_CMP_GT_OS>(cover, z, stored);
-    else if constexpr (Test == depth_func::greater_equal) return L::template compare<_CMP_GE_OS>(cover, z, stored);
-    else if constexpr (Test == depth_func::not_equal) return L::template compare<_CMP_NEQ_UQ>(cover, z, stored);
-    else return cover;  // always
+    if constexpr (Test == depth_func::always) return cover;
+    else return L::template compare<depth_predicate<Test>()>(cover, z, stored);
 }
 
 // The lanes' offsets from the row's value, as the SSE2 kernel forms them: lane l of group
