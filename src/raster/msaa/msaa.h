@@ -80,6 +80,9 @@ public:
     // Rows are padded to a multiple of STRIDE_PIXELS; the samples start 64-byte aligned.
     static constexpr int STRIDE_PIXELS = 2;
     int stride() const { return stride_; }
+    // Floats from pixel (x, y) to pixel (x, y + rows), in either layout (with blocks: rows
+    // even and y at an even row from the origin).
+    std::ptrdiff_t rows_step(int rows) const { return static_cast<std::ptrdiff_t>(rows) * 2 * samples_ * stride_; }
     // Pixel (x, y)'s S sample depths (consecutive floats); its S colours lie colour_offset()
     // floats further on, and pixel (x + 1, y)'s depths pixel_step(x) floats on.
     float *pixel(int x, int y) { return base_ + offset(x, y); }
