@@ -180,7 +180,6 @@ float texture_sample_anisotropic(const texture &tex, float u, float v, float du_
     // Taps evenly spread over the major axis, centred on (u, v): tap i at (i + ½)/N − ½ of it.
     const float step_u = (x_major ? du_dx : du_dy) * inv_n, step_v = (x_major ? dv_dx : dv_dy) * inv_n;
     const float first = 0.5f - 0.5f * n;  // tap 0's offset, in steps
-    float sum = 0.0f;
     if (wrap == texture_wrap::repeat && std::fabs(step_u) * n <= 0.5f && std::fabs(step_v) * n <= 0.5f) {
         // The usual case: the footprint spans at most half the texture, so each level's taps
         // stay within the one wrap tap_walk allows.
@@ -198,7 +197,7 @@ float texture_sample_anisotropic(const texture &tex, float u, float v, float du_
         // The mean of the taps' trilinear blends a + (b − a)·t is the blend of their means.
         return (fine_sum + (coarse_sum - fine_sum) * levels.t) * inv_n;
     }
-    float tap_u = u + step_u * first, tap_v = v + step_v * first;
+    float tap_u = u + step_u * first, tap_v = v + step_v * first, sum = 0.0f;
     for (int i = 0; i < taps; ++i, tap_u += step_u, tap_v += step_v)
         if (std::isfinite(tap_u) && std::isfinite(tap_v)) [[likely]]
             sum += sample_levels(levels, tap_u, tap_v, wrap);
