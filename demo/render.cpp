@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "common/demo_cli.h"
+#include "common/render_scene.h"
 #include "canvas.h"
 #include "lighting.h"
 #include "lines.h"
@@ -35,29 +36,18 @@ namespace {
 
 constexpr int kDefaultWidth = 640, kDefaultHeight = 480;
 constexpr int kDefaultTurntable = 36;
-constexpr double kDefaultFovDegrees = 40.0;
-constexpr float kElevation = 0.35f;       // radians above the horizon (20°)
-constexpr float kFill = 0.85f;            // the bounding sphere spans this much of the view
-constexpr float kBackground = 0.04f;
-constexpr float kAmbient = 0.1f;
-constexpr double kDefaultCrease = 60.0;   // degrees: sharper edges stay sharp
-constexpr float kSpecular = 0.25f;        // a modest plastic highlight (Blinn-Phong ks)
-constexpr float kShininess = 40.0f;       // its sharpness (exponent s)
-constexpr float kLightTotal = 0.85f;      // split evenly among the lights without an intensity
 constexpr float kEdgeThickness = 1.2f;    // px, wireframe modes
 constexpr float kFarInk = 0.35f;          // wireframe depth cue
-constexpr double kPi = 3.14159265358979323846;
+using namespace demo::render_scene;  // the default scene's constants, camera and lights
 
 struct settings {
     std::string path, mode = "phong", texture_path, lines = "coverage", cull = "back", filter = "trilinear", format = "auto";
     int anisotropy = 8;
     int turntable = kDefaultTurntable;
-    vec3_t eye{}, target{}, up{0, 1, 0};
-    bool eye_given = false, target_given = false, up_given = false;
-    double fov_degrees = kDefaultFovDegrees;
-    bool ortho = false, info = false;
+    view_request view;
+    bool up_given = false, info = false;
     float ambient = kAmbient;
-    double crease = kDefaultCrease;
+    double crease = kCrease;
     float specular = kSpecular, shininess = kShininess;
     bool crease_given = false;
     double progress_every = 2.0;  // seconds between progress lines of a long frame
@@ -107,77 +97,6 @@ std::string parse_light(const std::string &text, std::vector<light_t> &lights) {
     if (!(tiny3d::vec3_length(light.direction) > 0.0f)) return "--light: the direction must not be zero, got '" + text + "'";
     lights.push_back(light);
     return "";
-}
-
-// glOrtho: the box [l, r] × [b, t] × [−n, −f] in eye space onto NDC.
-mat4_t ortho(float l, float r, float b, float t, float n, float f) {
-    mat4_t m = mat4_identity();
-    m.m[0] = 2 / (r - l);
-    m.m[5] = 2 / (t - b);
-    m.m[10] = -2 / (f - n);
-    m.m[12] = -(r + l) / (r - l);
-    m.m[13] = -(t + b) / (t - b);
-    m.m[14] = -(f + n) / (f - n);
-    return m;
-}
-
-// The default camera position: on the side of the centre that shows the mesh's front
-// (+z for y up, −y for z up), kElevation above the horizon.
-vec3_t auto_eye(vec3_t center, vec3_t up, float distance) {
-    vec3_t back = tiny3d::vec3_cross(vec3_t{1, 0, 0}, up);
-    if (!(tiny3d::vec3_length(back) > 1e-6f)) back = tiny3d::vec3_any_perpendicular(up);
-    back = tiny3d::vec3_normalize(back);
-    return center + (back * std::cos(kElevation) + tiny3d::vec3_normalize(up) * std::sin(kElevation)) * distance;
-}
-
-struct camera {
-    mat4_t view, projection;
-    vec3_t right, up, back;  // the camera's frame in world space (for the lights)
-};
-
-camera make_camera(const settings &s, const tiny3d::bounding_sphere &bounds, float aspect) {
-    const float fov = float(s.fov_degrees * kPi / 180.0);
-    const float half_narrow = std::min(0.5f * fov, std::atan(std::tan(0.5f * fov) * aspect));
-    const float r = bounds.radius;
-    const vec3_t target = s.target_given ? s.target : bounds.center;
-    const vec3_t eye = s.eye_given ? s.eye : auto_eye(bounds.center, s.up, r / std::sin(kFill * half_narrow));
-    camera c;
-    c.view = tiny3d::mat4_look_at(eye, target, s.up);
-    // Rows of the view rotation are the camera's axes in world space.
-    c.right = {c.view.m[0], c.view.m[4], c.view.m[8]};
-    c.up = {c.view.m[1], c.view.m[5], c.view.m[9]};
-    c.back = {c.view.m[2], c.view.m[6], c.view.m[10]};
-    // Depth range: the bounding sphere along the view axis (the turn keeps the mesh in it).
-    const float depth = tiny3d::vec3_dot(bounds.center - eye, c.back * -1.0f);
-    const float far_plane = std::max(depth + 1.05f * r, 1e-3f * r);
-    const float near_plane = std::max(depth - 1.05f * r, 1e-3f * far_plane);
-    if (s.ortho) {
-        const float half_h = r / kFill / std::min(1.0f, aspect);
-        c.projection = ortho(-half_h * aspect, half_h * aspect, -half_h, half_h, near_plane, far_plane);
-    } else {
-        c.projection = tiny3d::mat4_perspective(fov, aspect, near_plane, far_plane);
-    }
-    return c;
-}
-
-// The lights in world space, intensities filled in.
-tiny3d::result<tiny3d::light_rig> make_lights(const settings &s, const camera &c) {
-    std::vector<light_t> lights = s.lights;
-    if (lights.empty()) {  // key light from the upper left front, a dim fill from the right
-        lights.push_back({{-1.0f, 1.0f, 1.0f}, 0.68f});
-        lights.push_back({{1.0f, -0.2f, 0.5f}, 0.22f});
-    }
-    float given = 0;
-    int unset = 0;
-    for (const light_t &l : lights) {
-        if (l.intensity < 0) ++unset;
-        else given += l.intensity;
-    }
-    for (light_t &l : lights) {
-        if (l.intensity < 0) l.intensity = std::max(0.0f, kLightTotal - given) / float(unset);
-        l.direction = c.right * l.direction.x + c.up * l.direction.y + c.back * l.direction.z;
-    }
-    return tiny3d::make_light_rig(lights, s.ambient);
 }
 
 int print_info(const settings &s, const tiny3d::loaded_mesh &loaded) {
@@ -254,11 +173,11 @@ int main(int argc, char **argv) {
                "the line in the edge modes: exact coverage (default), tabulated or the report's draw_line_f");
     cli.choice("--cull", s.cull, {"back", "none", "front"}, "which faces to skip (default back)");
     cli.integer("--turntable", s.turntable, 1, 100000, "frames for one turn (default 36; 1 = a still image)");
-    cli.vector3("--eye", s.eye, s.eye_given, "camera position (default: auto-framed, 20 degrees above the centre)");
-    cli.vector3("--target", s.target, s.target_given, "point the camera looks at (default: the mesh's centre)");
-    cli.vector3("--up", s.up, s.up_given, "up axis: turntable axis and screen up (default 0,1,0)");
-    cli.number("--fov", s.fov_degrees, 1.0, 170.0, "vertical field of view in degrees (default 40)");
-    cli.flag("--ortho", s.ortho, "orthographic projection (the view's height spans the mesh)");
+    cli.vector3("--eye", s.view.eye, s.view.eye_given, "camera position (default: auto-framed, 20 degrees above the centre)");
+    cli.vector3("--target", s.view.target, s.view.target_given, "point the camera looks at (default: the mesh's centre)");
+    cli.vector3("--up", s.view.up, s.up_given, "up axis: turntable axis and screen up (default 0,1,0)");
+    cli.number("--fov", s.view.fov_degrees, 1.0, 170.0, "vertical field of view in degrees (default 40)");
+    cli.flag("--ortho", s.view.ortho, "orthographic projection (the view's height spans the mesh)");
     cli.custom("--light", "X,Y,Z[,I]",
                "a directional light towards X,Y,Z in the camera's frame (x right, y up, z towards you), "
                "intensity I (default: 0.85 shared by the lights without one); replaces the default two",
@@ -284,7 +203,7 @@ int main(int argc, char **argv) {
                "lines (default 2; 0 = every band)");
     cli.flag("--info", s.info, "print the mesh's counts, bounds and loader warnings; render nothing");
     if (const int status = cli.parse(argc, argv); status >= 0) return status;
-    if (s.up_given && !(tiny3d::vec3_length(s.up) > 0.0f)) return cli.usage_error("--up must not be zero, got '0,0,0'");
+    if (s.up_given && !(tiny3d::vec3_length(s.view.up) > 0.0f)) return cli.usage_error("--up must not be zero, got '0,0,0'");
     const demo::common_options &o = cli.common;
     if ((s.mode == "wireframe" || s.mode == "hidden-line") && !s.texture_path.empty())
         return cli.usage_error("--texture needs a filled --mode, not '" + s.mode + "'");
@@ -317,7 +236,7 @@ int main(int argc, char **argv) {
     const tiny3d::result<tiny3d::unit_sphere_map> fit = tiny3d::mesh_fit_unit_sphere(m);
     if (!fit) return cli.fail(s.path + ": " + fit.message());
     const tiny3d::bounding_sphere bounds = tiny3d::mesh_bounding_sphere(m);
-    settings unit_view = s;
+    view_request unit_view = s.view;
     for (vec3_t *p : {&unit_view.eye, &unit_view.target}) *p = fit->apply(*p);
     tiny3d::texture tex;
     if (!s.texture_path.empty()) {
@@ -335,7 +254,7 @@ int main(int argc, char **argv) {
     if (!canvas) return cli.fail(canvas.message());
 
     const camera cam = make_camera(unit_view, {{0, 0, 0}, 1.0f}, float(o.width) / float(o.height));
-    auto rig = make_lights(s, cam);
+    auto rig = make_lights(s.lights, s.ambient, cam);
     if (!rig) return cli.fail(rig.message());
     const mat4_t view_projection = mat4_multiply(cam.projection, cam.view);
 
@@ -379,7 +298,7 @@ int main(int argc, char **argv) {
     int frames_showing = 0;
     for (int frame = o.first_frame; frame <= o.last_frame; ++frame) {
         const float angle = float(2.0 * kPi * frame / s.turntable);
-        const mat4_t model = tiny3d::mat4_rotate_axis(s.up, angle);
+        const mat4_t model = tiny3d::mat4_rotate_axis(s.view.up, angle);
         timer.start();
         progress.begin(frame);
         if (edges_only) {

@@ -1,8 +1,6 @@
 // gif.cpp — saving a sequence: the 36-frame torus turntable of
-// `render tests/data/torus_binary.ply --size 512x512` (the same scene as demo/render.cpp's
-// defaults: auto-framed from 20° above, fov 40°, key and fill lights in the camera's frame,
-// ambient 0.1, Phong with the Blinn-Phong highlight ks 0.25, s 40, normals creased at 60°,
-// background 0.04, --aa 4, 2 threads), rendered once and then saved as
+// `render tests/data/torus_binary.ply --size 512x512` (render's default scene, from
+// demo/common/render_scene.h; --aa 4, 2 threads), rendered once and then saved as
 // 36 PGM files (save_pgm, the report's format: the faithful row), as 36 PNG files
 // (save_png) and as one animated GIF (gif_writer, lossless). Time per frame includes
 // writing the file (and its fsync); the "error" columns hold the bytes per frame instead
@@ -23,12 +21,13 @@
 #include "math3d.h"
 #include "mesh.h"
 #include "raster.h"
+#include "../../demo/common/render_scene.h"
 
 namespace {
 
+using namespace demo::render_scene;  // render's default scene, constants, camera and lights
+
 constexpr int kSide = 512, kFrames = 36;
-constexpr float kBackground = 0.04f, kAmbient = 0.1f, kSpecular = 0.25f, kShininess = 40.0f, kCrease = 60.0f;
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kNsPerMs = 1e6;
 
 double file_size(const std::string &path) {
@@ -36,21 +35,12 @@ double file_size(const std::string &path) {
     return ::stat(path.c_str(), &st) == 0 ? double(st.st_size) : NAN;
 }
 
-// demo/render.cpp's default camera and lights for a mesh fitted into the unit sphere.
-tiny3d::draw_params render_scene() {
-    const float fov = float(40.0 * kPi / 180.0), elevation = 0.35f, fill = 0.85f;
-    const float distance = 1.0f / std::sin(fill * 0.5f * fov);
-    const vec3_t up{0, 1, 0};
-    const vec3_t eye = (vec3_t{0, 0, 1} * std::cos(elevation) + up * std::sin(elevation)) * distance;
-    const mat4_t view = tiny3d::mat4_look_at(eye, {0, 0, 0}, up);
-    const vec3_t right{view.m[0], view.m[4], view.m[8]}, cam_up{view.m[1], view.m[5], view.m[9]},
-        back{view.m[2], view.m[6], view.m[10]};
-    const float far_plane = distance + 1.05f, near_plane = std::max(distance - 1.05f, 1e-3f * far_plane);
-    std::vector<light_t> lights = {{{-1.0f, 1.0f, 1.0f}, 0.68f}, {{1.0f, -0.2f, 0.5f}, 0.22f}};
-    for (light_t &l : lights) l.direction = right * l.direction.x + cam_up * l.direction.y + back * l.direction.z;
+// render's default camera and lights for a mesh fitted into the unit sphere, square view.
+tiny3d::draw_params default_scene() {
+    const camera cam = make_camera({}, {{0, 0, 0}, 1.0f}, 1.0f);
     tiny3d::draw_params p;
-    p.view_projection = mat4_multiply(tiny3d::mat4_perspective(fov, 1.0f, near_plane, far_plane), view);
-    p.lights = tiny3d::make_light_rig(lights, kAmbient).value();
+    p.view_projection = mat4_multiply(cam.projection, cam.view);
+    p.lights = make_lights({}, kAmbient, cam).value();
     p.shade = tiny3d::shading::phong;
     p.surface.specular = kSpecular;
     p.surface.shininess = kShininess;
@@ -70,9 +60,9 @@ int main(int argc, char **argv) {
     tiny3d::mesh &m = *loaded;
     if (auto fit = tiny3d::mesh_fit_unit_sphere(m); !fit) return 1;
     if (m.corner_normals.empty())
-        if (tiny3d::status st = tiny3d::mesh_set_crease_normals(m, kCrease); !st) return 1;
+        if (tiny3d::status st = tiny3d::mesh_set_crease_normals(m, float(kCrease)); !st) return 1;
     const tiny3d::raster_mesh shape = tiny3d::make_raster_mesh(m, {}).value();
-    tiny3d::draw_params params = render_scene();
+    tiny3d::draw_params params = default_scene();
     tiny3d::render_context ctx(2);
 
     // Render the turntable once, keeping every frame; time the rendering of each.
