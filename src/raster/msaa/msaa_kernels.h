@@ -13,6 +13,10 @@
 #include "msaa.h"
 #include "../../simd_config.h"
 
+#ifdef TINY3D_SSE2
+#include <emmintrin.h>
+#endif
+
 namespace tiny3d::detail {
 
 // Per edge: the extremes of the sample offsets over the pattern.
@@ -37,6 +41,61 @@ struct edge_extremes {
         return lo_x <= hi_x;
     }
 };
+
+#ifdef TINY3D_SSE2
+// A narrow triangle's rows' column spans (from min_x), four rows at a time and without the
+// divisions of edge_extremes::row: per edge, the best sample's value t at column 0 of a row
+// (exact in 32 bits) times 1/a in float, the pixels where t + a·x ≥ 0 may hold. The
+// float's error stays far below the margin EPS over the box (at most 2^11 columns), so a
+// span holds every pixel row() gives and at most one more at each end; an edge with a = 0
+// bounds nothing. Only which pixels are visited depends on it, never what they get.
+class sample_row_spans {
+public:
+    // Rows from f.min_y + dy0 on; best[k]: edge k's greatest sample offset.
+    void start(const msaa_triangle &f, const std::int64_t best[3], int dy0) {
+        constexpr float EPS = 1.0f / 64, inf = __builtin_inff();
+        const int columns = f.max_x - f.min_x + 1;
+        for (int k = 0; k < 3; ++k) {
+            // (unsigned: the lanes past the box's last row may wrap; they are never read)
+            const std::uint32_t t0 = static_cast<std::uint32_t>(f.e[k] + f.b[k] * dy0 + best[k]);
+            const std::uint32_t b = static_cast<std::uint32_t>(f.b[k]);
+            t_[k] = _mm_setr_epi32(static_cast<std::int32_t>(t0), static_cast<std::int32_t>(t0 + b),
+                                   static_cast<std::int32_t>(t0 + 2 * b), static_cast<std::int32_t>(t0 + 3 * b));
+            down_[k] = _mm_set1_epi32(static_cast<std::int32_t>(4 * b));
+            const float inv = f.a[k] ? 1.0f / static_cast<float>(f.a[k]) : 0.0f;
+            // a > 0: x ≥ −t/a, the first column −⌊min t/a⌋; a < 0: the last ⌊min t/(−a)⌋;
+            // OFFSET keeps both positive for the truncating conversion.
+            up_[k] = _mm_set1_ps(f.a[k] > 0 ? inv : 0.0f);
+            up_add_[k] = _mm_set1_ps(f.a[k] > 0 ? EPS + OFFSET : inf);
+            down_mul_[k] = _mm_set1_ps(f.a[k] < 0 ? -inv : 0.0f);
+            down_add_[k] = _mm_set1_ps(f.a[k] < 0 ? EPS + OFFSET : inf);
+        }
+        first_lo_ = _mm_set1_ps(static_cast<float>(OFFSET - columns));
+        last_hi_ = _mm_set1_ps(static_cast<float>(OFFSET + columns - 1));
+    }
+    // The next four rows' spans [first, last] (first > last: no sample of the row is inside).
+    void next(std::int32_t first[4], std::int32_t last[4]) {
+        __m128 lo = _mm_set1_ps(__builtin_inff()), hi = lo;
+        for (int k = 0; k < 3; ++k) {
+            const __m128 t = _mm_cvtepi32_ps(t_[k]);
+            t_[k] = _mm_add_epi32(t_[k], down_[k]);
+            lo = _mm_min_ps(lo, _mm_add_ps(_mm_mul_ps(t, up_[k]), up_add_[k]));
+            hi = _mm_min_ps(hi, _mm_add_ps(_mm_mul_ps(t, down_mul_[k]), down_add_[k]));
+        }
+        const __m128 offset = _mm_set1_ps(static_cast<float>(OFFSET));
+        lo = _mm_min_ps(_mm_max_ps(lo, first_lo_), offset);
+        hi = _mm_min_ps(_mm_max_ps(hi, _mm_sub_ps(offset, _mm_set1_ps(1.0f))), last_hi_);
+        const __m128i offset_int = _mm_set1_epi32(OFFSET);
+        _mm_storeu_si128(reinterpret_cast<__m128i *>(first), _mm_sub_epi32(offset_int, _mm_cvttps_epi32(lo)));
+        _mm_storeu_si128(reinterpret_cast<__m128i *>(last), _mm_sub_epi32(_mm_cvttps_epi32(hi), offset_int));
+    }
+
+private:
+    static constexpr int OFFSET = 4096;  // > every narrow box's columns
+    __m128i t_[3], down_[3];
+    __m128 up_[3], up_add_[3], down_mul_[3], down_add_[3], first_lo_, last_hi_;
+};
+#endif
 
 // A chunkable triangle's row is walked in chunks short enough that every step and offset in
 // one moves a value by less than 2^29: a value beyond ±2^30 at the chunk's start keeps its
