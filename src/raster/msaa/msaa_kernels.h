@@ -153,6 +153,9 @@ msaa_row_fill msaa_fill_sse2(int samples, depth_func test);
 #ifdef TINY3D_AVX2
 // AVX2: where f is narrow, else the SSE2 functions.
 msaa_row_fill fill_function_avx2(int samples, depth_func test);
+// The 4-sample resolve of a row's first `pixels` columns (a multiple of 8) in the rows
+// layout, in the SSE2 resolve's order (same bits), pixels put back at rest.
+void resolve_rows4_avx2(float *p, const std::uint8_t *touched, int pixels, float clear_colour, float *colour, float *z);
 #endif
 
 #ifdef TINY3D_AVX512
