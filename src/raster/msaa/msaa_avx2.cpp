@@ -63,8 +63,8 @@ struct lanes8 : ymm_lanes {
 
 // 4× on narrow triangles, two columns of a row per step (fill_rows_quads' step with R = 1,
 // the same operations): each row from its span (sample_row_spans, no divisions) widened to
-// even canvas columns; the edge values, pointers and rows at the box's first step stepped
-// down per row and moved to the span's first step by a multiply.
+// even canvas columns; the pointers at the box's first step stepped down per row, the edge
+// values at the row's first step from the spans' own row values.
 template <depth_func Test, bool Clipped>
 void fill_rows_pairs(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, bool depth_write, int y0,
                      int y1) {
@@ -85,10 +85,7 @@ void fill_rows_pairs(sample_store &store, const msaa_triangle &f, const sample_p
         best[k] = _mm_cvtsi128_si32(_mm_max_epi32(h, _mm_shuffle_epi32(h, 0xB1)));
     }
     const vf dz = V::add(V::mul(V::set(f.zdx), ox), V::mul(V::set(f.zdy), oy));
-    const std::int32_t a[3] = {static_cast<std::int32_t>(f.a[0]), static_cast<std::int32_t>(f.a[1]),
-                               static_cast<std::int32_t>(f.a[2])};
     const vi step0 = V::set_int(2 * f.a[0]), step1 = V::set_int(2 * f.a[1]), step2 = V::set_int(2 * f.a[2]);
-    const vi down0 = V::set_int(f.b[0]), down1 = V::set_int(f.b[1]), down2 = V::set_int(f.b[2]);
     const vf ones = V::set(1.0f), zero = V::set(0.0f);
     const vf zdx = V::set(f.zdx), idx = V::set(f.idx), zdy = V::set(f.zdy), idy = V::set(f.idy);
     const vf z0 = V::set(f.z), i0 = V::set(f.i), two_columns_f = V::set(2.0f);
@@ -96,33 +93,36 @@ void fill_rows_pairs(sample_store &store, const msaa_triangle &f, const sample_p
     const int odd = f.min_x & 1;  // the steps start at even canvas columns
     const auto writes = V::write_mask(depth_write);
     const int dy0 = y0 - f.min_y;
-    // The box's first step (column −odd) in row y: edge values (32 bits, wrapping as the
-    // 64-bit values' truncation does), pointers, the row as a float (exact: small integers).
-    vi row_b0 = V::add(V::set_int(f.e[0] + f.b[0] * dy0 - f.a[0] * odd), d[0]);
-    vi row_b1 = V::add(V::set_int(f.e[1] + f.b[1] * dy0 - f.a[1] * odd), d[1]);
-    vi row_b2 = V::add(V::set_int(f.e[2] + f.b[2] * dy0 - f.a[2] * odd), d[2]);
+    // Row y's pointers at the box's first step (column −odd), stepped per row; its edge
+    // values there from the spans' (32 bits, wrapping as the 64-bit values' truncation does).
     float *row_p = store.pixel(f.min_x - odd, y0);
     std::uint8_t *row_touched = store.touched_row(y0) + f.min_x - odd;
     const std::ptrdiff_t p_down = store.rows_step(1), touched_down = store.stride();
     const vf at0 = V::to_float(V::add(V::set_int(-odd), lane_column));
-    vf row = V::set(static_cast<float>(dy0));
+    const __m128i a_lanes = _mm_setr_epi32(static_cast<std::int32_t>(f.a[0]), static_cast<std::int32_t>(f.a[1]),
+                                           static_cast<std::int32_t>(f.a[2]), 0);
+    // (the spans' t less the best sample's offset, at column −odd)
+    const __m128i from_best = _mm_sub_epi32(_mm_mullo_epi32(a_lanes, _mm_set1_epi32(-odd)),
+                                            _mm_setr_epi32(static_cast<std::int32_t>(best[0]),
+                                                           static_cast<std::int32_t>(best[1]),
+                                                           static_cast<std::int32_t>(best[2]), 0));
     sample_row_spans spans;
     spans.start(f, best, dy0);
-    std::int32_t span_first[4], span_last[4];
-    for (int y = y0; y < y1; ++y, row = V::add(row, ones), row_p += p_down, row_touched += touched_down,
-             row_b0 = V::add(row_b0, down0), row_b1 = V::add(row_b1, down1), row_b2 = V::add(row_b2, down2)) {
-        if (((y - y0) & 3) == 0) spans.next(span_first, span_last);
-        const int lo = span_first[(y - y0) & 3], hi = span_last[(y - y0) & 3];
+    for (int y = y0; y < y1; ++y, row_p += p_down, row_touched += touched_down) {
+        int lo, hi;
+        const __m128i t = spans.next(lo, hi);
         if (lo > hi) continue;
-        const int skip = (lo + odd) & ~1;  // columns from the box's first step to the row's
-        vi b0 = V::add(row_b0, V::set_int(a[0] * skip));
-        vi b1 = V::add(row_b1, V::set_int(a[1] * skip));
-        vi b2 = V::add(row_b2, V::set_int(a[2] * skip));
+        const int skip = (lo + odd) & ~1;  // columns from the box's first step
+        const __m128i e = _mm_add_epi32(_mm_add_epi32(t, from_best), _mm_mullo_epi32(a_lanes, _mm_set1_epi32(skip)));
+        vi b0 = V::add(_mm256_broadcastd_epi32(e), d[0]);
+        vi b1 = V::add(_mm256_broadcastd_epi32(_mm_shuffle_epi32(e, 0x55)), d[1]);
+        vi b2 = V::add(_mm256_broadcastd_epi32(_mm_shuffle_epi32(e, 0xAA)), d[2]);
         float *p = row_p + skip * 2 * S;
         std::uint8_t *touched = row_touched + skip;
         const int first = skip - odd;
         vf at = V::add(at0, V::set(static_cast<float>(skip)));  // (exactly)
         vi column = V::add(V::set_int(first), lane_column);     // (Clipped only)
+        const vf row = V::set(static_cast<float>(y - f.min_y));  // (exactly)
         const vf z_row = V::add(z0, V::mul(zdy, row)), i_row = V::add(i0, V::mul(idy, row));
         for (int x = first; x <= hi; x += 2, p += 4 * S, touched += 2, at = V::add(at, two_columns_f)) {
             auto inside = V::rows(true, false);

@@ -43,9 +43,9 @@ struct edge_extremes {
 };
 
 #ifdef TINY3D_SSE2
-// A narrow triangle's rows' column spans (from min_x), four rows at a time and without the
-// divisions of edge_extremes::row: per edge, the best sample's value t at column 0 of a row
-// (exact in 32 bits) times 1/a in float, the pixels where t + a·x ≥ 0 may hold. The
+// A narrow triangle's rows' column spans (from min_x) without the divisions of
+// edge_extremes::row: per edge (one per lane), the best sample's value t at column 0 of a
+// row (exact in 32 bits) times 1/a in float, the pixels where t + a·x ≥ 0 may hold. The
 // float's error stays far below the margin EPS over the box (at most 2^11 columns), so a
 // span holds every pixel row() gives and at most one more at each end; an edge with a = 0
 // bounds nothing. Only which pixels are visited depends on it, never what they get.
@@ -53,47 +53,46 @@ class sample_row_spans {
 public:
     // Rows from f.min_y + dy0 on; best[k]: edge k's greatest sample offset.
     void start(const msaa_triangle &f, const std::int64_t best[3], int dy0) {
-        constexpr float EPS = 1.0f / 64, inf = __builtin_inff();
+        auto t0 = [&](int k) { return static_cast<std::int32_t>(f.e[k] + f.b[k] * dy0 + best[k]); };
+        t_ = _mm_setr_epi32(t0(0), t0(1), t0(2), 0);
+        down_ = _mm_setr_epi32(static_cast<std::int32_t>(f.b[0]), static_cast<std::int32_t>(f.b[1]),
+                               static_cast<std::int32_t>(f.b[2]), 0);
+        const __m128 a = _mm_setr_ps(static_cast<float>(f.a[0]), static_cast<float>(f.a[1]),
+                                     static_cast<float>(f.a[2]), 0.0f);
+        const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f), inf = _mm_set1_ps(__builtin_inff());
+        const __m128 inv = _mm_div_ps(one, _mm_or_ps(a, _mm_and_ps(_mm_cmpeq_ps(a, zero), one)));  // (a = 0: 1)
+        // a > 0: x ≥ −t/a, the first column −⌊min t/a⌋; a < 0: the last ⌊min t/(−a)⌋;
+        // OFFSET keeps both positive for the truncating conversion.
+        const __m128 up = _mm_cmpgt_ps(a, zero), down = _mm_cmplt_ps(a, zero);
+        const __m128 margin = _mm_set1_ps(EPS + OFFSET);
+        up_ = _mm_and_ps(up, inv);
+        up_add_ = _mm_or_ps(_mm_and_ps(up, margin), _mm_andnot_ps(up, inf));
+        down_mul_ = _mm_and_ps(down, _mm_sub_ps(zero, inv));
+        down_add_ = _mm_or_ps(_mm_and_ps(down, margin), _mm_andnot_ps(down, inf));
         const int columns = f.max_x - f.min_x + 1;
-        for (int k = 0; k < 3; ++k) {
-            // (unsigned: the lanes past the box's last row may wrap; they are never read)
-            const std::uint32_t t0 = static_cast<std::uint32_t>(f.e[k] + f.b[k] * dy0 + best[k]);
-            const std::uint32_t b = static_cast<std::uint32_t>(f.b[k]);
-            t_[k] = _mm_setr_epi32(static_cast<std::int32_t>(t0), static_cast<std::int32_t>(t0 + b),
-                                   static_cast<std::int32_t>(t0 + 2 * b), static_cast<std::int32_t>(t0 + 3 * b));
-            down_[k] = _mm_set1_epi32(static_cast<std::int32_t>(4 * b));
-            const float inv = f.a[k] ? 1.0f / static_cast<float>(f.a[k]) : 0.0f;
-            // a > 0: x ≥ −t/a, the first column −⌊min t/a⌋; a < 0: the last ⌊min t/(−a)⌋;
-            // OFFSET keeps both positive for the truncating conversion.
-            up_[k] = _mm_set1_ps(f.a[k] > 0 ? inv : 0.0f);
-            up_add_[k] = _mm_set1_ps(f.a[k] > 0 ? EPS + OFFSET : inf);
-            down_mul_[k] = _mm_set1_ps(f.a[k] < 0 ? -inv : 0.0f);
-            down_add_[k] = _mm_set1_ps(f.a[k] < 0 ? EPS + OFFSET : inf);
-        }
-        first_lo_ = _mm_set1_ps(static_cast<float>(OFFSET - columns));
-        last_hi_ = _mm_set1_ps(static_cast<float>(OFFSET + columns - 1));
+        low_ = _mm_setr_ps(static_cast<float>(OFFSET - columns), static_cast<float>(OFFSET - 1), 0.0f, 0.0f);
+        high_ = _mm_setr_ps(static_cast<float>(OFFSET), static_cast<float>(OFFSET + columns - 1), 0.0f, 0.0f);
     }
-    // The next four rows' spans [first, last] (first > last: no sample of the row is inside).
-    void next(std::int32_t first[4], std::int32_t last[4]) {
-        __m128 lo = _mm_set1_ps(__builtin_inff()), hi = lo;
-        for (int k = 0; k < 3; ++k) {
-            const __m128 t = _mm_cvtepi32_ps(t_[k]);
-            t_[k] = _mm_add_epi32(t_[k], down_[k]);
-            lo = _mm_min_ps(lo, _mm_add_ps(_mm_mul_ps(t, up_[k]), up_add_[k]));
-            hi = _mm_min_ps(hi, _mm_add_ps(_mm_mul_ps(t, down_mul_[k]), down_add_[k]));
-        }
-        const __m128 offset = _mm_set1_ps(static_cast<float>(OFFSET));
-        lo = _mm_min_ps(_mm_max_ps(lo, first_lo_), offset);
-        hi = _mm_min_ps(_mm_max_ps(hi, _mm_sub_ps(offset, _mm_set1_ps(1.0f))), last_hi_);
-        const __m128i offset_int = _mm_set1_epi32(OFFSET);
-        _mm_storeu_si128(reinterpret_cast<__m128i *>(first), _mm_sub_epi32(offset_int, _mm_cvttps_epi32(lo)));
-        _mm_storeu_si128(reinterpret_cast<__m128i *>(last), _mm_sub_epi32(_mm_cvttps_epi32(hi), offset_int));
+    // The next row's span [first, last] (first > last: no sample of the row is inside);
+    // returns the row's t (lanes 0..2).
+    __m128i next(int &first, int &last) {
+        const __m128i row = t_;
+        const __m128 t = _mm_cvtepi32_ps(row);
+        t_ = _mm_add_epi32(row, down_);
+        const __m128 lo = _mm_add_ps(_mm_mul_ps(t, up_), up_add_), hi = _mm_add_ps(_mm_mul_ps(t, down_mul_), down_add_);
+        __m128 m = _mm_min_ps(_mm_unpacklo_ps(lo, hi), _mm_unpackhi_ps(lo, hi));  // lane 3: +∞
+        m = _mm_min_ps(_mm_max_ps(_mm_min_ps(m, _mm_movehl_ps(m, m)), low_), high_);
+        const __m128i q = _mm_cvttps_epi32(m);
+        first = OFFSET - _mm_cvtsi128_si32(q);
+        last = _mm_cvtsi128_si32(_mm_shuffle_epi32(q, 1)) - OFFSET;
+        return row;
     }
 
 private:
     static constexpr int OFFSET = 4096;  // > every narrow box's columns
-    __m128i t_[3], down_[3];
-    __m128 up_[3], up_add_[3], down_mul_[3], down_add_[3], first_lo_, last_hi_;
+    static constexpr float EPS = 1.0f / 64;
+    __m128i t_, down_;
+    __m128 up_, up_add_, down_mul_, down_add_, low_, high_;
 };
 #endif
 
