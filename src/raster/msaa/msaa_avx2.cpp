@@ -61,88 +61,6 @@ struct lanes8 : ymm_lanes {
     }
 };
 
-// 4× on narrow triangles, two columns of a row per step (fill_rows_quads' step with R = 1,
-// the same operations): each row from its span (sample_row_spans, no divisions) widened to
-// even canvas columns; the pointers at the box's first step stepped down per row, the edge
-// values at the row's first step from the spans' own row values.
-template <depth_func Test, bool Clipped>
-void fill_rows_pairs(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, bool depth_write, int y0,
-                     int y1) {
-    using V = lanes8;
-    using vf = V::vf;
-    using vi = V::vi;
-    constexpr int S = 4;
-    alignas(32) static constexpr std::int32_t lane_columns[8] = {0, 0, 0, 0, 1, 1, 1, 1};
-    const vi lane_column = V::load_int(lane_columns);
-    const vf ox = V::broadcast4(pat.fdx), oy = V::broadcast4(pat.fdy);
-    const vf bx = V::add(ox, V::to_float(lane_column));
-    vi d[3];
-    std::int64_t best[3];  // over pixel 0's lanes: the pattern's own offsets
-    for (int k = 0; k < 3; ++k) {  // exact integers (< 2^22): f is narrow
-        d[k] = V::to_int(V::add(V::mul(V::set(static_cast<float>(f.a[k])), bx), V::mul(V::set(static_cast<float>(f.b[k])), oy)));
-        __m128i h = _mm256_castsi256_si128(d[k]);
-        h = _mm_max_epi32(h, _mm_shuffle_epi32(h, 0x4E));
-        best[k] = _mm_cvtsi128_si32(_mm_max_epi32(h, _mm_shuffle_epi32(h, 0xB1)));
-    }
-    const vf dz = V::add(V::mul(V::set(f.zdx), ox), V::mul(V::set(f.zdy), oy));
-    const vi step0 = V::set_int(2 * f.a[0]), step1 = V::set_int(2 * f.a[1]), step2 = V::set_int(2 * f.a[2]);
-    const vf ones = V::set(1.0f), zero = V::set(0.0f);
-    const vf zdx = V::set(f.zdx), idx = V::set(f.idx), zdy = V::set(f.zdy), idy = V::set(f.idy);
-    const vf z0 = V::set(f.z), i0 = V::set(f.i), two_columns_f = V::set(2.0f);
-    const vi two_columns = V::set_int(2), last_column = V::set_int(f.max_x - f.min_x);
-    const int odd = f.min_x & 1;  // the steps start at even canvas columns
-    const auto writes = V::write_mask(depth_write);
-    const int dy0 = y0 - f.min_y;
-    // Row y's pointers at the box's first step (column −odd), stepped per row; its edge
-    // values there from the spans' (32 bits, wrapping as the 64-bit values' truncation does).
-    float *row_p = store.pixel(f.min_x - odd, y0);
-    std::uint8_t *row_touched = store.touched_row(y0) + f.min_x - odd;
-    const std::ptrdiff_t p_down = store.rows_step(1), touched_down = store.stride();
-    const vf at0 = V::to_float(V::add(V::set_int(-odd), lane_column));
-    const __m128i a_lanes = _mm_setr_epi32(static_cast<std::int32_t>(f.a[0]), static_cast<std::int32_t>(f.a[1]),
-                                           static_cast<std::int32_t>(f.a[2]), 0);
-    // (the spans' t less the best sample's offset, at column −odd)
-    const __m128i from_best = _mm_sub_epi32(_mm_mullo_epi32(a_lanes, _mm_set1_epi32(-odd)),
-                                            _mm_setr_epi32(static_cast<std::int32_t>(best[0]),
-                                                           static_cast<std::int32_t>(best[1]),
-                                                           static_cast<std::int32_t>(best[2]), 0));
-    sample_row_spans spans;
-    spans.start(f, best, dy0);
-    for (int y = y0; y < y1; ++y, row_p += p_down, row_touched += touched_down) {
-        int lo, hi;
-        const __m128i t = spans.next(lo, hi);
-        if (lo > hi) continue;
-        const int skip = (lo + odd) & ~1;  // columns from the box's first step
-        const __m128i e = _mm_add_epi32(_mm_add_epi32(t, from_best), _mm_mullo_epi32(a_lanes, _mm_set1_epi32(skip)));
-        vi b0 = V::add(_mm256_broadcastd_epi32(e), d[0]);
-        vi b1 = V::add(_mm256_broadcastd_epi32(_mm_shuffle_epi32(e, 0x55)), d[1]);
-        vi b2 = V::add(_mm256_broadcastd_epi32(_mm_shuffle_epi32(e, 0xAA)), d[2]);
-        float *p = row_p + skip * 2 * S;
-        std::uint8_t *touched = row_touched + skip;
-        const int first = skip - odd;
-        vf at = V::add(at0, V::set(static_cast<float>(skip)));  // (exactly)
-        vi column = V::add(V::set_int(first), lane_column);     // (Clipped only)
-        const vf row = V::set(static_cast<float>(y - f.min_y));  // (exactly)
-        const vf z_row = V::add(z0, V::mul(zdy, row)), i_row = V::add(i0, V::mul(idy, row));
-        for (int x = first; x <= hi; x += 2, p += 4 * S, touched += 2, at = V::add(at, two_columns_f)) {
-            auto inside = V::rows(true, false);
-            if constexpr (Clipped) {
-                inside = V::columns_within(inside, column, last_column);
-                column = V::add(column, two_columns);
-            }
-            const V::coverage in = V::covered_within(inside, b0, b1, b2);
-            b0 = V::add(b0, step0), b1 = V::add(b1, step1), b2 = V::add(b2, step2);
-            const vf z = V::add(V::add(z_row, V::mul(zdx, at)), dz);
-            const vf shade = V::min(V::max(V::add(i_row, V::mul(idx, at)), zero), ones);  // clamp01
-            vf stored, colours;
-            V::load_step(p, stored, colours);
-            const V::mask pass = passing<V, Test>(in, z, stored);
-            V::store_step(p, V::blend(V::both(pass, writes), stored, z), V::blend(pass, colours, shade));
-            V::mark(touched);
-        }
-    }
-}
-
 template <int S, depth_func Test>
 void fill_avx2(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test, bool depth_write,
                float clear_colour, int y0, int y1) {
@@ -150,8 +68,8 @@ void fill_avx2(sample_store &store, const msaa_triangle &f, const sample_pattern
         return msaa_fill_for(msaa_kernel::sse2, S, test)(store, f, pat, test, depth_write, clear_colour, y0, y1);
     if (!clamp_to_rows(f, y0, y1)) return;
     if constexpr (S == 4) {
-        if (f.clipped_x) fill_rows_pairs<Test, true>(store, f, pat, depth_write, y0, y1);
-        else fill_rows_pairs<Test, false>(store, f, pat, depth_write, y0, y1);
+        if (f.clipped_x) fill_rows_quads<lanes8, Test, true>(store, f, pat, depth_write, y0, y1);
+        else fill_rows_quads<lanes8, Test, false>(store, f, pat, depth_write, y0, y1);
     }
     else fill_rows_pixels<lanes8, S, Test>(store, f, pat, depth_write, clear_colour, y0, y1);
 }
