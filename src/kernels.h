@@ -78,6 +78,9 @@ struct kernel_table {
     bool resolve_rows_simd;  // rows resolved four samples at a time (SSE2)
     void (*resolve_blocks4)(float *p, const std::uint8_t *touched0, const std::uint8_t *touched1, int pixels,
                             float clear_colour, float *colour0, float *z0, float *colour1, float *z1);
+    // (rows layout, 4 samples) a row's first `pixels` columns (a multiple of 8), null: SSE2's.
+    void (*resolve_rows4)(float *p, const std::uint8_t *touched, int pixels, float clear_colour, float *colour,
+                          float *z);
     // Textures: the anisotropic filter's taps over one mip level (null: walk_taps_portable).
     float (*walk_taps)(const tap_walk &w);
 };

@@ -13,6 +13,8 @@
 #include <vector>
 
 #include "../src/raster/msaa/msaa.h"
+#include "../src/raster/msaa/msaa_kernels.h"
+#include "../src/simd_config.h"
 #include "alloc_tracker.h"
 #include "harness.h"
 #include "canvas.h"
@@ -603,8 +605,7 @@ TEST(msaa_16_pattern_is_centred_and_its_coverage_exact) {
 
 // The SSE2 and AVX-512 kernels against the portable one: random overlapping triangles with
 // depth (ties included, every depth test, with and without depth writes), every sample
-// bit-identical; large triangles (boxes wider than 8 columns: walked by
-// row spans) and small ones (at most 8 columns: at 4× the box walked whole), some off the
+// bit-identical; large triangles and small ones (boxes at most 8 columns), some off the
 // canvas' edges; and wide ones, reaching far beyond the canvas (boxes beyond what 32-bit
 // values cover: rows walked in chunks, offsets in integers — msaa_kernels.h). Each SIMD
 // kernel in the tile layout the render context gives it and in the other one (blocks at
@@ -744,3 +745,57 @@ TEST(msaa_simd_kernels_match_the_portable_kernel) {
             CHECK_EQ(not_clear, 0);
         }
 }
+
+#ifdef TINY3D_SSE2
+// The 4× SIMD kernels' row spans without divisions (sample_row_spans) against the exact
+// ones (edge_extremes::row): every row's span holds the exact one and is at most one column
+// wider at each end, for narrow triangles of every size up to the narrow limit (the float
+// quotient's error grows with the box) and at every sample pattern on the 1/16 px grid.
+TEST(msaa_row_spans_hold_the_exact_spans) {
+    const pixel_rect clip{0, 0, 2100, 2100};
+    int rows = 0, wider = 0;
+    for (int samples : {4, 8}) {
+        const detail::sample_pattern &pat = detail::pattern_of(samples);
+        const int grid = static_cast<int>(pat.one());
+        std::mt19937 rng(5 + static_cast<unsigned>(samples));
+        for (int t = 0; t < 3000; ++t) {
+            const int reach = t % 3 == 0 ? 2000 : t % 3 == 1 ? 40 : 4;  // px
+            std::uniform_int_distribution<int> base(0, (2040 - reach) * grid), near(0, reach * grid);
+            const std::int32_t x0 = base(rng), y0 = base(rng);
+            std::int32_t X[3] = {x0 + near(rng), x0 + near(rng), x0 + near(rng)};
+            std::int32_t Y[3] = {y0 + near(rng), y0 + near(rng), y0 + near(rng)};
+            if (t % 7 == 0) Y[1] = Y[0];  // a horizontal edge (a = 0)
+            if (t % 11 == 0) X[2] = X[1];  // a vertical one (b = 0)
+            const triangle_edges e = detail::triangle_setup_snapped(X, Y, clip, cull_mode::none, pat.bits);
+            const float flat[3] = {0.5f, 0.5f, 0.5f};
+            detail::msaa_triangle f;
+            if (e.area2 == 0 || !detail::make_msaa_triangle(e, pat, clip, flat, flat, f)) continue;
+            CHECK(f.narrow);
+            detail::edge_extremes off;
+            std::int64_t best[3];
+            for (int k = 0; k < 3; ++k) {
+                off.lo[k] = INT64_MAX, off.hi[k] = INT64_MIN;
+                for (int s = 0; s < samples; ++s) {
+                    const std::int64_t d = detail::sample_edge_offset(f.a[k], f.b[k], pat, s);
+                    off.lo[k] = std::min(off.lo[k], d), off.hi[k] = std::max(off.hi[k], d);
+                }
+                best[k] = off.hi[k];
+            }
+            detail::sample_row_spans spans;
+            spans.start(f, best, 0);
+            for (int y = f.min_y; y <= f.max_y; ++y) {
+                int first, last, lo, hi;
+                spans.next(first, last);
+                std::int64_t v[3];
+                if (!off.row(f, y, v, lo, hi)) continue;
+                ++rows;
+                wider += first < lo || last > hi;
+                CHECK(first <= lo && first >= lo - 1);
+                CHECK(last >= hi && last <= hi + 1);
+            }
+        }
+    }
+    CHECK(rows > 100000);
+    CHECK(wider > 0);
+}
+#endif

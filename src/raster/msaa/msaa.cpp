@@ -138,6 +138,8 @@ void fill_sse2(sample_store &store, const msaa_triangle &f, const sample_pattern
     if (!clamp_to_rows(f, y0, y1)) return;
     if (!f.chunkable) return fill_rows_portable(store, f, pat, test, depth_write, clear_colour, y0, y1);
     if constexpr (S == 4) {
+        if (f.narrow && store.blocks()) return fill_rows_sse2_narrow4<Test, true>(store, f, pat, depth_write, y0, y1);
+        if (f.narrow) return fill_rows_sse2_narrow4<Test, false>(store, f, pat, depth_write, y0, y1);
         if (store.blocks()) return fill_rows_sse2<4, Test, true>(store, f, pat, depth_write, clear_colour, y0, y1);
     }
     fill_rows_sse2<S, Test, false>(store, f, pat, depth_write, clear_colour, y0, y1);
@@ -349,7 +351,15 @@ void sample_store::resolve(canvas_t &canvas, zbuffer &depth, float clear_colour,
         float *colour = canvas.pixels[y], *z = depth.row(y);
 #ifdef TINY3D_SSE2
         switch (!k.resolve_rows_simd || blocks_ ? 0 : S) {
-            case 4: resolve_row_sse2<4>(pixel(0, y), touched, width_, clear_colour, colour, z); continue;
+            case 4:
+                if (k.resolve_rows4) {  // then the SSE2 resolve for the last columns
+                    const int wide = width_ / 8 * 8;
+                    k.resolve_rows4(pixel(0, y), touched, wide, clear_colour, colour, z);
+                    resolve_row_sse2<4>(pixel(wide, y), touched + wide, width_ - wide, clear_colour, colour + wide, z + wide);
+                } else {
+                    resolve_row_sse2<4>(pixel(0, y), touched, width_, clear_colour, colour, z);
+                }
+                continue;
             case 8: resolve_row_sse2<8>(pixel(0, y), touched, width_, clear_colour, colour, z); continue;
             case 16: resolve_row_sse2<16>(pixel(0, y), touched, width_, clear_colour, colour, z); continue;
             default: break;

@@ -80,6 +80,43 @@ msaa_row_fill fill_function_avx2(int samples, depth_func test) {
     return fill_function(samples, test, [](auto s, auto t) -> msaa_row_fill { return &fill_avx2<s.value, t.value>; });
 }
 
+// Eight pixels at a time: pixels j and j + 4 in one register's two halves, then the SSE2
+// resolve's transpose on both halves at once (per pixel (s0 + s2) + (s1 + s3), the nearest
+// sample, the same operations in the same order); untouched pixels get the clear values.
+void resolve_rows4_avx2(float *p, const std::uint8_t *touched, int pixels, float clear_colour, float *colour, float *z) {
+    const __m256 quarter = _mm256_set1_ps(0.25f), clear = _mm256_set1_ps(clear_colour), far = _mm256_set1_ps(1.0f);
+    const __m256 rest = _mm256_blend_ps(far, clear, 0xF0);  // a pixel at rest: four depths, four colours
+    for (int x = 0; x < pixels; x += 8, p += 8 * 8) {
+        std::uint64_t t8;
+        std::memcpy(&t8, touched + x, sizeof t8);
+        if (t8 == 0) {
+            _mm256_storeu_ps(colour + x, clear), _mm256_storeu_ps(z + x, far);
+            continue;
+        }
+        // (pixel j's depths or colours, pixel j + 4's)
+        auto pair = [p](int j, int offset) { return _mm256_loadu2_m128(p + 8 * (j + 4) + offset, p + 8 * j + offset); };
+        auto reduce = [&](int offset, auto op) {
+            const __m256 q0 = pair(0, offset), q1 = pair(1, offset), q2 = pair(2, offset), q3 = pair(3, offset);
+            const __m256 v01 = op(_mm256_unpacklo_ps(q0, q1), _mm256_unpackhi_ps(q0, q1));
+            const __m256 v23 = op(_mm256_unpacklo_ps(q2, q3), _mm256_unpackhi_ps(q2, q3));
+            return op(_mm256_castpd_ps(_mm256_unpacklo_pd(_mm256_castps_pd(v01), _mm256_castps_pd(v23))),
+                      _mm256_castpd_ps(_mm256_unpackhi_pd(_mm256_castps_pd(v01), _mm256_castps_pd(v23))));
+        };
+        __m256 c = _mm256_mul_ps(reduce(4, [](__m256 u, __m256 v) { return _mm256_add_ps(u, v); }), quarter);
+        __m256 d = reduce(0, [](__m256 u, __m256 v) { return _mm256_min_ps(u, v); });
+        if (t8 != 0x0101010101010101u) {
+            const __m256 out = _mm256_castsi256_ps(_mm256_cmpeq_epi32(
+                _mm256_cvtepu8_epi32(_mm_cvtsi64_si128(static_cast<long long>(t8))), _mm256_setzero_si256()));
+            c = _mm256_blendv_ps(c, clear, out);
+            d = _mm256_blendv_ps(d, far, out);
+        }
+        _mm256_storeu_ps(colour + x, c), _mm256_storeu_ps(z + x, d);
+        _mm256_store_ps(p, rest), _mm256_store_ps(p + 8, rest), _mm256_store_ps(p + 16, rest);
+        _mm256_store_ps(p + 24, rest), _mm256_store_ps(p + 32, rest), _mm256_store_ps(p + 40, rest);
+        _mm256_store_ps(p + 48, rest), _mm256_store_ps(p + 56, rest);
+    }
+}
+
 }  // namespace tiny3d::detail
 
 #include "../../avx512_region_close.inc"

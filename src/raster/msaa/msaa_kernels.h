@@ -13,6 +13,10 @@
 #include "msaa.h"
 #include "../../simd_config.h"
 
+#ifdef TINY3D_SSE2
+#include <emmintrin.h>
+#endif
+
 namespace tiny3d::detail {
 
 // Per edge: the extremes of the sample offsets over the pattern.
@@ -37,6 +41,60 @@ struct edge_extremes {
         return lo_x <= hi_x;
     }
 };
+
+#ifdef TINY3D_SSE2
+// A narrow triangle's rows' column spans (from min_x) without the divisions of
+// edge_extremes::row: per edge (one per lane), the best sample's value t at column 0 of a
+// row (exact in 32 bits) times 1/a in float, the pixels where t + a·x ≥ 0 may hold. The
+// float's error stays far below the margin EPS over the box (at most 2^11 columns), so a
+// span holds every pixel row() gives and at most one more at each end; an edge with a = 0
+// bounds nothing. Only which pixels are visited depends on it, never what they get.
+class sample_row_spans {
+public:
+    // Rows from f.min_y + dy0 on; best[k]: edge k's greatest sample offset.
+    void start(const msaa_triangle &f, const std::int64_t best[3], int dy0) {
+        auto t0 = [&](int k) { return static_cast<std::int32_t>(f.e[k] + f.b[k] * dy0 + best[k]); };
+        t_ = _mm_setr_epi32(t0(0), t0(1), t0(2), 0);
+        down_ = _mm_setr_epi32(static_cast<std::int32_t>(f.b[0]), static_cast<std::int32_t>(f.b[1]),
+                               static_cast<std::int32_t>(f.b[2]), 0);
+        const __m128 a = _mm_setr_ps(static_cast<float>(f.a[0]), static_cast<float>(f.a[1]),
+                                     static_cast<float>(f.a[2]), 0.0f);
+        const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f), inf = _mm_set1_ps(__builtin_inff());
+        const __m128 inv = _mm_div_ps(one, _mm_or_ps(a, _mm_and_ps(_mm_cmpeq_ps(a, zero), one)));  // (a = 0: 1)
+        // a > 0: x ≥ −t/a, the first column −⌊min t/a⌋; a < 0: the last ⌊min t/(−a)⌋;
+        // OFFSET keeps both positive for the truncating conversion.
+        const __m128 up = _mm_cmpgt_ps(a, zero), down = _mm_cmplt_ps(a, zero);
+        const __m128 margin = _mm_set1_ps(EPS + OFFSET);
+        up_ = _mm_and_ps(up, inv);
+        up_add_ = _mm_or_ps(_mm_and_ps(up, margin), _mm_andnot_ps(up, inf));
+        down_mul_ = _mm_and_ps(down, _mm_sub_ps(zero, inv));
+        down_add_ = _mm_or_ps(_mm_and_ps(down, margin), _mm_andnot_ps(down, inf));
+        const int columns = f.max_x - f.min_x + 1;
+        low_ = _mm_setr_ps(static_cast<float>(OFFSET - columns), static_cast<float>(OFFSET - 1), 0.0f, 0.0f);
+        high_ = _mm_setr_ps(static_cast<float>(OFFSET), static_cast<float>(OFFSET + columns - 1), 0.0f, 0.0f);
+    }
+    // The next row's span [first, last] (first > last: no sample of the row is inside);
+    // returns the row's t (lanes 0..2).
+    __m128i next(int &first, int &last) {
+        const __m128i row = t_;
+        const __m128 t = _mm_cvtepi32_ps(row);
+        t_ = _mm_add_epi32(row, down_);
+        const __m128 lo = _mm_add_ps(_mm_mul_ps(t, up_), up_add_), hi = _mm_add_ps(_mm_mul_ps(t, down_mul_), down_add_);
+        __m128 m = _mm_min_ps(_mm_unpacklo_ps(lo, hi), _mm_unpackhi_ps(lo, hi));  // lane 3: +∞
+        m = _mm_min_ps(_mm_max_ps(_mm_min_ps(m, _mm_movehl_ps(m, m)), low_), high_);
+        const __m128i q = _mm_cvttps_epi32(m);
+        first = OFFSET - _mm_cvtsi128_si32(q);
+        last = _mm_cvtsi128_si32(_mm_shuffle_epi32(q, 1)) - OFFSET;
+        return row;
+    }
+
+private:
+    static constexpr int OFFSET = 4096;  // > every narrow box's columns
+    static constexpr float EPS = 1.0f / 64;
+    __m128i t_, down_;
+    __m128 up_, up_add_, down_mul_, down_add_, low_, high_;
+};
+#endif
 
 // A chunkable triangle's row is walked in chunks short enough that every step and offset in
 // one moves a value by less than 2^29: a value beyond ±2^30 at the chunk's start keeps its
@@ -94,6 +152,9 @@ msaa_row_fill msaa_fill_sse2(int samples, depth_func test);
 #ifdef TINY3D_AVX2
 // AVX2: where f is narrow, else the SSE2 functions.
 msaa_row_fill fill_function_avx2(int samples, depth_func test);
+// The 4-sample resolve of a row's first `pixels` columns (a multiple of 8) in the rows
+// layout, in the SSE2 resolve's order (same bits), pixels put back at rest.
+void resolve_rows4_avx2(float *p, const std::uint8_t *touched, int pixels, float clear_colour, float *colour, float *z);
 #endif
 
 #ifdef TINY3D_AVX512
