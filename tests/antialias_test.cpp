@@ -41,7 +41,7 @@ std::vector<detail::msaa_kernel> msaa_kernels() {
     std::vector<detail::msaa_kernel> out;
     for (detail::msaa_kernel k : {detail::msaa_kernel::portable, detail::msaa_kernel::sse2, detail::msaa_kernel::avx2,
                                   detail::msaa_kernel::avx512})
-        if (detail::fill_kernel_runs(k)) out.push_back(k);
+        if (detail::kernels_run(k)) out.push_back(k);
     return out;
 }
 
@@ -504,8 +504,10 @@ detail::sample_store fill_all(const std::vector<std::array<std::int32_t, 6>> &tr
         const float depth[3] = {0.5f, 0.5f, 0.5f};
         const float shade = static_cast<float>(t + 1) / 1024, intensity[3] = {shade, shade, shade};
         detail::msaa_triangle f;
-        if (e.area2 == 0 || !detail::make_msaa_triangle(e, pat, {0, 0, W, H}, depth, intensity, f)) continue;
-        detail::fill_msaa_rows(store, f, pat, depth_func::less, true, 0.0f, 0, H, kernel);
+        if (e.area2 == 0 ||
+            !detail::make_msaa_triangle(X, Y, detail::snapped_area2(X, Y), pat, {0, 0, W, H}, depth, intensity, f))
+            continue;
+        detail::msaa_fill_for(kernel, pat.count, depth_func::less)(store, f, pat, depth_func::less, true, 0.0f, 0, H);
     }
     return store;
 }
@@ -578,7 +580,8 @@ TEST(msaa_16_pattern_is_centred_and_its_coverage_exact) {
         if (!t.valid) continue;
         const std::int64_t s = t.area2 == detail::snapped_area2(X, Y) ? 1 : -1;
         std::vector<unsigned> masks(W * H, 0);
-        detail::for_each_covered_pixel(t, pat, {0, 0, W, H}, [&](int x, int y, unsigned m) { masks[y * W + x] = m; });
+        detail::for_each_covered_pixel(t, X, Y, pat, {0, 0, W, H},
+                                       [&](int x, int y, unsigned m) { masks[y * W + x] = m; });
         for (int y = 0; y < H; ++y)
             for (int x = 0; x < W; ++x) {
                 unsigned expect = 0;
@@ -648,7 +651,9 @@ TEST(msaa_simd_kernels_match_the_portable_kernel) {
                 if (t % 2) depth[0] = depth[1] = depth[2] = t % 4 == 1 ? 0.25f : 0.5f;
                 const float intensity[3] = {unit(rng), unit(rng), unit(rng)};
                 detail::msaa_triangle f;
-                if (e.area2 == 0 || !detail::make_msaa_triangle(e, pat, clip, depth, intensity, f)) continue;
+                if (e.area2 == 0 ||
+                    !detail::make_msaa_triangle(X, Y, detail::snapped_area2(X, Y), pat, clip, depth, intensity, f))
+                    continue;
                 CHECK(f.chunkable);
                 CHECK(wide || f.narrow);
                 chunked += !f.narrow;
@@ -662,9 +667,9 @@ TEST(msaa_simd_kernels_match_the_portable_kernel) {
                                                 depth_func::never};
                 const depth_func test = t % 7 ? depth_func::less : tests[(t / 7) % 7];
                 const bool write = t % 5 != 4;
-                detail::fill_msaa_rows(a, f, pat, test, write, 0.25f, 0, H, kernels[kernel]);
-                detail::fill_msaa_rows(other, f, pat, test, write, 0.25f, 0, H, kernels[kernel]);
-                detail::fill_msaa_rows(b, f, pat, test, write, 0.25f, 0, H, kernels[0]);
+                detail::msaa_fill_for(kernels[kernel], pat.count, test)(a, f, pat, test, write, 0.25f, 0, H);
+                detail::msaa_fill_for(kernels[kernel], pat.count, test)(other, f, pat, test, write, 0.25f, 0, H);
+                detail::msaa_fill_for(kernels[0], pat.count, test)(b, f, pat, test, write, 0.25f, 0, H);
             }
             CHECK(small ? narrow_boxes == drawn : narrow_boxes < drawn / 4);
             // (small: boxes cut by the clip and boxes not, which the 4× block kernel walks without
@@ -769,7 +774,8 @@ TEST(msaa_row_spans_hold_the_exact_spans) {
             const triangle_edges e = detail::triangle_setup_snapped(X, Y, clip, cull_mode::none, pat.bits);
             const float flat[3] = {0.5f, 0.5f, 0.5f};
             detail::msaa_triangle f;
-            if (e.area2 == 0 || !detail::make_msaa_triangle(e, pat, clip, flat, flat, f)) continue;
+            if (e.area2 == 0 || !detail::make_msaa_triangle(X, Y, detail::snapped_area2(X, Y), pat, clip, flat, flat, f))
+                continue;
             CHECK(f.narrow);
             detail::edge_extremes off;
             std::int64_t best[3];

@@ -167,7 +167,7 @@ TEST(frames_of_a_kept_context_give_the_one_thread_frame_with_every_kernel) {
     const raster_clusters clusters = make_raster_clusters(sphere).value();
     int compared = 0;
     for (raster_simd simd : {raster_simd::portable, raster_simd::sse2, raster_simd::avx2, raster_simd::avx512}) {
-        if (!detail::fill_kernel_runs(simd)) continue;
+        if (!detail::kernels_run(simd)) continue;
         for (int threads : {2, 3, 5})
         for (bool streaming : {true, false}) {
             render_context ctx(threads);
@@ -383,7 +383,7 @@ detail::setup_batch random_setup_batch(std::mt19937 &rng) {
 TEST(batched_setup_gives_the_scalar_setup_bit_for_bit) {
 #if defined(TINY3D_AVX512) || defined(TINY3D_AVX2)
   for (const raster_simd kernel : {raster_simd::avx512, raster_simd::avx2}) {
-    if (!detail::fill_kernel_runs(kernel) || !detail::batched_setup(kernel)) continue;
+    if (!detail::kernels_run(kernel) || !detail::kernels_for(kernel).setup_fast_batch) continue;
     std::mt19937 rng(20261203);
     const pixel_rect clip{3, 5, 250, 200};
     int compared = 0, scalar = 0, ready = 0;
@@ -391,7 +391,7 @@ TEST(batched_setup_gives_the_scalar_setup_bit_for_bit) {
         const detail::setup_batch batch = random_setup_batch(rng);
     detail::fast_setup verdict[detail::SETUP_BATCH];
         detail::fast_triangle batched[detail::SETUP_BATCH];
-        detail::setup_fast_batch(kernel, batch, clip, verdict, batched);
+        detail::kernels_for(kernel).setup_fast_batch(batch, clip, verdict, batched);
         for (int l = 0; l < batch.count; ++l) {
             std::int32_t X[3], Y[3];
             float depth[3], shade[3];
@@ -428,7 +428,7 @@ TEST(batched_setup_gives_the_scalar_setup_bit_for_bit) {
 TEST(batched_multisample_setup_gives_the_scalar_setup_bit_for_bit) {
 #if defined(TINY3D_AVX512) || defined(TINY3D_AVX2)
   for (const raster_simd kernel : {raster_simd::avx512, raster_simd::avx2}) {
-    if (!detail::fill_kernel_runs(kernel) || !detail::batched_setup(kernel)) continue;
+    if (!detail::kernels_run(kernel) || !detail::kernels_for(kernel).setup_fast_batch) continue;
     std::mt19937 rng(20261204);
     const pixel_rect clip{3, 5, 250, 200};
     int ready = 0, empty = 0, scalar = 0, clipped = 0;
@@ -438,7 +438,7 @@ TEST(batched_multisample_setup_gives_the_scalar_setup_bit_for_bit) {
             const detail::setup_batch batch = random_setup_batch(rng);
             detail::fast_setup verdict[detail::SETUP_BATCH];
             detail::msaa_triangle batched[detail::SETUP_BATCH];
-            detail::setup_msaa_batch(kernel, batch, pat, clip, verdict, batched);
+            detail::kernels_for(kernel).setup_msaa_batch(batch, pat, clip, verdict, batched);
             for (int l = 0; l < batch.count; ++l) {
                 std::int32_t X[3], Y[3];
                 float depth[3], shade[3];

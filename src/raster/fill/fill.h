@@ -23,13 +23,10 @@
 
 namespace tiny3d::detail {
 
-// Draws rows [y0, y1) ∩ [min_y, max_y] of the triangle with `kernel` (fill_kernel_runs).
-// `wide_edges` is the triangle's 64-bit edges when f.wide ≥ 0 (ignored otherwise).
+// Draws rows [y0, y1) ∩ [min_y, max_y] of the triangle with the build's rows kernel (SSE2's,
+// or the portable one), which every table uses for the triangles its narrow kernel does not
+// take. `wide_edges` is the triangle's 64-bit edges when f.wide ≥ 0 (ignored otherwise).
 void fill_fast_rows(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, const triangle_edges *wide_edges,
-                    depth_func test, bool depth_write, int y0, int y1, fill_kernel kernel);
-// The same with the build's rows kernel (SSE2's, or the portable one), which every table
-// uses for the triangles its narrow kernel does not take.
-void fill_fast_rows_base(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, const triangle_edges *wide_edges,
                          depth_func test, bool depth_write, int y0, int y1);
 
 // The colour and depth lines of the band a thread draws next, brought into its cache a few

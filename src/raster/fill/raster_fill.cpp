@@ -154,14 +154,6 @@ void fill_floats(float *dst, std::size_t count, float value) {
 }
 
 void fill_fast_rows(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, const triangle_edges *wide_edges,
-                    depth_func test, bool depth_write, int y0, int y1, fill_kernel kernel) {
-    const auto narrow = kernels_for(kernel).fill_rows_narrow;
-    if (narrow && f.wide < 0 && narrow_fits(f, canvas.width) && std::max(y0, f.min_y) < std::min(y1, f.max_y + 1))
-        return narrow(canvas, depth, f, test, depth_write, std::max(y0, f.min_y), std::min(y1, f.max_y + 1));
-    fill_fast_rows_base(canvas, depth, f, wide_edges, test, depth_write, y0, y1);
-}
-
-void fill_fast_rows_base(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, const triangle_edges *wide_edges,
                          depth_func test, bool depth_write, int y0, int y1) {
     y0 = std::max(y0, f.min_y);
     y1 = std::min(y1, f.max_y + 1);
@@ -205,7 +197,7 @@ void fill_fast_bins_sse2(canvas_t &canvas, zbuffer &depth, const band_bin *bins,
 void fill_fast_bins_portable(canvas_t &canvas, zbuffer &depth, const band_bin *bins, int bin_count, depth_func test,
                              int y0, int y1, band_prefetch &ahead) {
     for_each_bin_triangle(bins, bin_count, ahead, [&](const band_bin &bin, const fast_triangle &f) {
-        fill_fast_rows_base(canvas, &depth, f, f.wide >= 0 ? &bin.wide[f.wide] : nullptr, test, true, y0, y1);
+        fill_fast_rows(canvas, &depth, f, f.wide >= 0 ? &bin.wide[f.wide] : nullptr, test, true, y0, y1);
     });
 }
 
@@ -222,7 +214,10 @@ void fill_triangle(canvas_t &canvas, zbuffer *depth, const screen_vertex v[3], c
     detail::fast_triangle f;
     const float depth_z[3] = {v[0].z, v[1].z, v[2].z};
     if (!detail::make_fast_triangle(t, depth_z, intensity, 0, f)) return;
-    detail::fill_fast_rows(canvas, depth, f, &t, test, depth_write, f.min_y, f.max_y + 1, best_raster_simd());
+    const auto narrow = detail::kernels_for(best_raster_simd()).fill_rows_narrow;
+    if (narrow && f.wide < 0 && detail::narrow_fits(f, canvas.width))
+        return narrow(canvas, depth, f, test, depth_write, f.min_y, f.max_y + 1);
+    detail::fill_fast_rows(canvas, depth, f, &t, test, depth_write, f.min_y, f.max_y + 1);
 }
 
 // ---- the faithful scan-line fill (classic edge walking) ---------------------------------

@@ -3,7 +3,7 @@
 // NARROW_WIDTH = 16 columns, narrow_fits) drawn by the narrow rows kernel of
 // narrow_rows.inc with two groups of four per 256-bit register, where the SSE2 kernel's
 // instance takes one group per register. Every other triangle goes to the SSE2 loops
-// (fill_fast_rows_base).
+// (fill_fast_rows).
 //
 // The same pixels, bit for bit, as the SSE2 instance (raster_fill.cpp): the template forms
 // each group as SSE2 does and only then pairs them; the depth test (the same ordered or
@@ -11,7 +11,7 @@
 // under every depth test (tests/raster_threads_test.cpp).
 //
 // Compiled for AVX2 inside the target region of avx2_region_open.inc; run only on CPUs that
-// have it (fill_kernel_runs). No FMA contraction: the float operations rounded step by step.
+// have it (kernels_run). No FMA contraction: the float operations rounded step by step.
 #include <algorithm>
 #include <cstdint>
 
@@ -69,7 +69,7 @@ void fill_fast_bins_avx2(canvas_t &canvas, zbuffer &depth, const band_bin *bins,
             if (f.wide < 0 && narrow_fits(f, canvas.width))
                 narrow_rows_any<lanes8_avx2, t.value, true>(canvas, &depth, f, std::true_type{}, first, end);
             else
-                fill_fast_rows_base(canvas, &depth, f, f.wide >= 0 ? &bin.wide[f.wide] : nullptr, test, true, first, end);
+                fill_fast_rows(canvas, &depth, f, f.wide >= 0 ? &bin.wide[f.wide] : nullptr, test, true, first, end);
         });
     });
 }

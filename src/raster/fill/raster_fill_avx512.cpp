@@ -4,7 +4,7 @@
 //    the depth test a masked compare and the colour and depth writes masked stores (no
 //    colour read, no blend), where the SSE2 kernel needs up to four groups of four, each
 //    loaded, compared, blended and stored; four rows' spans and plane values computed at
-//    once. Every other triangle goes to the SSE2 kernels (fill_fast_rows_base).
+//    once. Every other triangle goes to the SSE2 kernels (fill_fast_rows).
 // (The AVX-512 set-up batches are in setup/setup_batch_avx512.cpp.)
 //
 // The same results, bit for bit, as the SSE2 kernel and the scalar set-up: the lanes' depth
@@ -17,7 +17,7 @@
 //
 // Compiled inside the AVX-512 target region; the headers are included before it opens, so
 // their inline functions stay baseline x86-64. Run only on CPUs that have AVX-512 F/VL/DQ/BW
-// (fill_kernel_runs).
+// (kernels_run).
 #include <algorithm>
 #include <cstdint>
 #include <span>
@@ -191,7 +191,7 @@ void fill_fast_bins_avx512(canvas_t &canvas, zbuffer &depth, const band_bin *bin
                 if (f.wide < 0 && narrow_fits(f, canvas.width))
                     narrow_rows<t.value, true>(canvas, &depth, f, true, first, end);
                 else
-                    fill_fast_rows_base(canvas, &depth, f, f.wide >= 0 ? &bin.wide[f.wide] : nullptr, test, true, first, end);
+                    fill_fast_rows(canvas, &depth, f, f.wide >= 0 ? &bin.wide[f.wide] : nullptr, test, true, first, end);
             }
         }
     });

@@ -396,19 +396,6 @@ bool make_msaa_triangle(const std::int32_t X[3], const std::int32_t Y[3], std::i
     return make_msaa_triangle_on<RASTER_SUBPIXEL_BITS>(X, Y, area2, pat, clip, depth, intensity, out);
 }
 
-bool make_msaa_triangle(const triangle_edges &t, const sample_pattern &pat, pixel_rect clip, const float depth[3],
-                        const float intensity[3], msaa_triangle &out) {
-    std::int32_t X[3], Y[3];
-    snapped_of(t, pat, X, Y);
-    return make_msaa_triangle(X, Y, snapped_area2(X, Y), pat, clip, depth, intensity, out);
-}
-
-void setup_msaa_batch(fill_kernel kernel, const setup_batch &in, const sample_pattern &pat, pixel_rect clip,
-                      fast_setup verdict[SETUP_BATCH], msaa_triangle out[SETUP_BATCH]) {
-    if (const auto batch = kernels_for(kernel).setup_msaa_batch) return batch(in, pat, clip, verdict, out);
-    std::fill(verdict, verdict + in.count, fast_setup::scalar);
-}
-
 #ifdef TINY3D_SSE2
 msaa_row_fill msaa_fill_sse2(int samples, depth_func test) {
     return fill_function(samples, test, [](auto s, auto t) -> msaa_row_fill { return &fill_sse2<s.value, t.value>; });
@@ -420,19 +407,6 @@ msaa_row_fill msaa_fill_for(msaa_kernel kernel, int samples, depth_func test) {
     const auto simd = kernels_for(kernel).msaa_fill;
     if (simd && (samples == 4 || samples == 8 || samples == 16)) return simd(samples, test);
     return fill_portable;
-}
-
-void fill_msaa_rows(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
-                    bool depth_write, float clear_colour, int y0, int y1, msaa_kernel kernel) {
-    msaa_fill_for(kernel, pat.count, test)(store, f, pat, test, depth_write, clear_colour, y0, y1);
-}
-
-void screen_gradient(const screen_vertex v[3], const float f[3], float &fdx, float &fdy) {
-    const double x[3] = {v[0].x, v[1].x, v[2].x}, y[3] = {v[0].y, v[1].y, v[2].y};
-    float planes[6];
-    attribute_planes_at(x, y, 0, 0, f, f, planes);
-    fdx = planes[1];
-    fdy = planes[2];
 }
 
 }  // namespace tiny3d::detail

@@ -139,20 +139,15 @@ struct msaa_triangle {
     std::uint32_t state;  // the render context's draw state (set by the caller)
 };
 
-// From triangle_edges set up on the pattern's grid, window depths and intensities per
-// vertex. False when no pixel of the pattern's bounds is inside `clip`.
-bool make_msaa_triangle(const triangle_edges &t, const sample_pattern &pat, pixel_rect clip, const float depth[3],
-                        const float intensity[3], msaa_triangle &out);
-// The same from snapped vertices (1/2^pat.bits px) and their snapped_area2 (≠ 0).
+// From snapped vertices (1/2^pat.bits px), their snapped_area2 (≠ 0), window depths and
+// intensities per vertex. False when no pixel of the pattern's bounds is inside `clip`.
 bool make_msaa_triangle(const std::int32_t X[3], const std::int32_t Y[3], std::int64_t area2, const sample_pattern &pat,
                         pixel_rect clip, const float depth[3], const float intensity[3], msaa_triangle &out);
 
-// make_msaa_triangle for in.count lanes at once where `kernel` has a batch, bit for bit
-// (state left alone), for 4 and 8 samples (the 1/16 px grid). Verdict per lane: ready,
-// empty, or scalar (a wide box, or no batch kernel): make_msaa_triangle sets those up.
-void setup_msaa_batch(fill_kernel kernel, const setup_batch &in, const sample_pattern &pat, pixel_rect clip,
-                      fast_setup verdict[SETUP_BATCH], msaa_triangle out[SETUP_BATCH]);
-// The batch kernels' verdicts and triangles for lanes [0, count); a lane they set up is narrow.
+// kernel_table::setup_msaa_batch: make_msaa_triangle for in.count lanes at once, bit for
+// bit (state left alone), for 4 and 8 samples (the 1/16 px grid). Verdict per lane: ready,
+// empty, or scalar (a wide box): make_msaa_triangle sets those up. finish_msaa_batch: the
+// verdicts and triangles for lanes [0, count); a lane the batch sets up is narrow.
 inline void finish_msaa_batch(const batch_lanes &lanes, int count, const std::int64_t e[3][SETUP_BATCH],
                               const std::int64_t a[3][SETUP_BATCH], const std::int64_t b[3][SETUP_BATCH],
                               fast_setup verdict[SETUP_BATCH], msaa_triangle out[SETUP_BATCH]) {
@@ -178,15 +173,6 @@ void setup_msaa_batch_avx2(const setup_batch &in, const sample_pattern &pat, pix
                            fast_setup verdict[SETUP_BATCH], msaa_triangle out[SETUP_BATCH]);
 #endif
 
-// t's snapped vertices in 1/2^pat.bits px, exactly (t is on the pattern's grid).
-inline void snapped_of(const triangle_edges &t, const sample_pattern &pat, std::int32_t X[3], std::int32_t Y[3]) {
-    const double one = static_cast<double>(pat.one());
-    for (int k = 0; k < 3; ++k) {
-        X[k] = static_cast<std::int32_t>(t.x[k] * one);
-        Y[k] = static_cast<std::int32_t>(t.y[k] * one);
-    }
-}
-
 // The pixels [x0, x1] × [y0, y1] with a sample of the pattern inside the box of the snapped
 // vertices X, Y (1/2^pat.bits px), clamped to `clip`; empty when x0 > x1 or y0 > y1.
 void msaa_bounds(const std::int32_t X[3], const std::int32_t Y[3], const sample_pattern &pat, pixel_rect clip, int &x0,
@@ -196,24 +182,18 @@ void msaa_bounds(const std::int32_t X[3], const std::int32_t Y[3], const sample_
 void msaa_candidate_rows(std::int64_t min_Y, std::int64_t max_Y, const sample_pattern &pat, int last_row, int &row0,
                          int &row1);
 
-// Draws rows [y0, y1) ∩ [min_y, max_y]: per sample coverage and depth test, the pixel's
+// The row fill of `kernel` for `samples` and `test`, chosen once before a band's triangles:
+// it draws rows [y0, y1) ∩ [min_y, max_y], per sample coverage and depth test, the pixel's
 // centre intensity (clamped to 0..1) into the passing samples.
-void fill_msaa_rows(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
-                    bool depth_write, float clear_colour, int y0, int y1, msaa_kernel kernel);
-// fill_msaa_rows with its kernel, sample count and depth test chosen once, before a band's
-// triangles.
 msaa_row_fill msaa_fill_for(msaa_kernel kernel, int samples, depth_func test);
 
-// The gradient (per pixel) of the plane through (x_k, y_k, f_k) of a screen triangle.
-void screen_gradient(const screen_vertex v[3], const float f[3], float &fdx, float &fdy);
-
-// The per-pixel path's walk: fragment(x, y, mask) for each pixel of `t` (on the pattern's
-// grid) inside `clip` with a covered sample, bit s of mask for sample s (the fill's rule).
+// The per-pixel path's walk: fragment(x, y, mask) for each pixel of `t` (set up from the
+// snapped X, Y on the pattern's grid) inside `clip` with a covered sample, bit s of mask for
+// sample s (the fill's rule).
 template <class Fragment>
-void for_each_covered_pixel(const triangle_edges &t, const sample_pattern &pat, pixel_rect clip, Fragment &&fragment) {
+void for_each_covered_pixel(const triangle_edges &t, const std::int32_t X[3], const std::int32_t Y[3],
+                            const sample_pattern &pat, pixel_rect clip, Fragment &&fragment) {
     int x0, x1, y0, y1;
-    std::int32_t X[3], Y[3];
-    snapped_of(t, pat, X, Y);
     msaa_bounds(X, Y, pat, clip, x0, x1, y0, y1);
     std::int64_t d[3][MSAA_MAX_SAMPLES];
     for (int k = 0; k < 3; ++k)

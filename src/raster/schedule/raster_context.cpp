@@ -89,8 +89,8 @@ void render_context::impl::emit(const clip_vertex *poly, int n, const draw_param
         } else {
             // On the pattern's grid, as the unclipped triangles (setup_range).
             std::int32_t X[3], Y[3];
-            const bool usable = snap_vertex(v[0], X[0], Y[0], pattern->bits) &&
-                                snap_vertex(v[1], X[1], Y[1], pattern->bits) && snap_vertex(v[2], X[2], Y[2], pattern->bits);
+            bool usable = true;
+            for (int j = 0; j < 3; ++j) usable = usable && snap_screen_point(v[j].x, v[j].y, pattern->bits, X[j], Y[j]);
             const std::int64_t area2 = usable ? detail::snapped_area2(X, Y) : 0;
             if (area2 == 0) continue;
             if (detail::facing_culled(area2, p.cull)) {
@@ -108,7 +108,8 @@ void render_context::impl::emit(const clip_vertex *poly, int n, const draw_param
             if (x0 > x1) y1 = y0 - 1;  // no pixel: no bin
         }
         out.generic.push_back(make_generic_triangle(v, c, state));
-        if (p.alpha >= 1.0f) bin_generic(y0, y1, out);
+        if (p.alpha >= 1.0f && y0 <= y1)  // opaque: binned (translucent: queued by draw)
+            bin_bands(bands.of(y0), bands.of(y1), static_cast<std::uint32_t>(out.generic.size() - 1) | GENERIC_BIN, out);
     }
 }
 
@@ -425,25 +426,6 @@ void render_context::impl::set_up_and_draw(int thread, const raster_mesh &m, con
     }
 }
 
-// Translucent triangles wait for end_frame.
-void render_context::impl::queue_translucent(const draw_plan &plan) {
-    for (const piece &from : pieces_of(plan))
-        for (generic_triangle g : from.generic) {
-            g.sequence = static_cast<std::uint32_t>(translucent.size());
-            translucent.push_back(g);
-        }
-}
-
-void render_context::impl::gather_stats(const draw_plan &plan) {
-    for (const piece &from : pieces_of(plan)) {
-        const frame_stats &st = from.stats;
-        stats.culled_backface += st.culled_backface;
-        stats.clipped += st.clipped;
-        stats.rasterized += st.rasterized;
-        stats.backface_by_cluster += st.backface_by_cluster;
-    }
-}
-
 void render_context::impl::draw(const raster_mesh &mesh, const draw_params &params) {
     impl &s = *this;
     s.stats.triangles_in += mesh.triangles.size();
@@ -475,8 +457,17 @@ void render_context::impl::draw(const raster_mesh &mesh, const draw_params &para
         s.piece_count = plan.first;  // (a multisampled frame's earlier draws stay)
         return;
     }
-    if (params.alpha < 1.0f) s.queue_translucent(plan);
-    s.gather_stats(plan);
+    for (piece &from : s.pieces_of(plan)) {
+        if (params.alpha < 1.0f)  // translucent triangles wait for end_frame
+            for (generic_triangle g : from.generic) {
+                g.sequence = static_cast<std::uint32_t>(s.translucent.size());
+                s.translucent.push_back(g);
+            }
+        s.stats.culled_backface += from.stats.culled_backface;
+        s.stats.clipped += from.stats.clipped;
+        s.stats.rasterized += from.stats.rasterized;
+        s.stats.backface_by_cluster += from.stats.backface_by_cluster;
+    }
 }
 
 // ---- the public class -------------------------------------------------------------------------

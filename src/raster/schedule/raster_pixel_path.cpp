@@ -122,17 +122,18 @@ void draw_generic_samples(sample_store &tile, const sample_pattern &pat, float c
     const pixel_rect band{0, y0, tile.width(), y1};
     std::int32_t X[3], Y[3];  // on the pattern's grid, as emit() binned it
     for (int k = 0; k < 3; ++k)
-        if (!snap_vertex(g.v[k], X[k], Y[k], pat.bits)) return;
+        if (!snap_screen_point(g.v[k].x, g.v[k].y, pat.bits, X[k], Y[k])) return;
     const triangle_edges t = triangle_setup_snapped(X, Y, band, cull_mode::none, pat.bits);
     if (t.area2 == 0) return;
     const pixel_shader shade_at(p, g);
     const int S = pat.count;
     const float zv[3] = {g.v[0].z, g.v[1].z, g.v[2].z};
-    float zdx, zdy, dz[MSAA_MAX_SAMPLES];
-    screen_gradient(g.v, zv, zdx, zdy);
-    for (int k = 0; k < S; ++k) dz[k] = zdx * pat.fdx[k] + zdy * pat.fdy[k];
+    const double vx[3] = {g.v[0].x, g.v[1].x, g.v[2].x}, vy[3] = {g.v[0].y, g.v[1].y, g.v[2].y};
+    float planes[6], dz[MSAA_MAX_SAMPLES];  // the depth plane's steps: planes[1], planes[2]
+    attribute_planes_at(vx, vy, 0, 0, zv, zv, planes);
+    for (int k = 0; k < S; ++k) dz[k] = planes[1] * pat.fdx[k] + planes[2] * pat.fdy[k];
     const double inv_area = 1.0 / static_cast<double>(t.area2);
-    for_each_covered_pixel(t, pat, band, [&](int x, int y, unsigned mask) {
+    for_each_covered_pixel(t, X, Y, pat, band, [&](int x, int y, unsigned mask) {
         // Barycentrics of the centre (unbiased edge values, as rasterize_triangle).
         const float l0 = static_cast<float>(static_cast<double>(t.c[0] + t.a[0] * x + t.b[0] * y) * inv_area);
         const float l1 = static_cast<float>(static_cast<double>(t.c[1] + t.a[1] * x + t.b[1] * y) * inv_area);

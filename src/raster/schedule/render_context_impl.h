@@ -206,8 +206,6 @@ struct render_context::impl {
     void set_up_and_draw(int thread, const raster_mesh &m, const draw_params &p, const detail::vertex_job &job,
                          std::uint32_t state, const detail::cluster_view *view, const detail::draw_plan &plan);
     void draw_band(int band, const draw_params &p, const detail::draw_plan &plan, bool clear, int next);
-    void queue_translucent(const detail::draw_plan &plan);
-    void gather_stats(const detail::draw_plan &plan);
 
     void transform(const detail::vertex_job &job, detail::vertex_set set, segment &out) {
         detail::transform_vertices(job, guard, set, out.vertices.data(), out.clip.data(), out.vertex_attr.data());
@@ -244,12 +242,6 @@ struct render_context::impl {
         for (int b = first; b <= last; ++b) out.bins[b].push_back(index);
     }
     void emit(const clip_vertex *poly, int n, const draw_params &p, std::uint32_t state, bool generic, piece &out);
-
-    // The last of out.generic (opaque) into the bins of rows [y0, y1] (inclusive).
-    void bin_generic(int y0, int y1, piece &out) {
-        if (y0 > y1) return;
-        bin_bands(bands.of(y0), bands.of(y1), static_cast<std::uint32_t>(out.generic.size() - 1) | detail::GENERIC_BIN, out);
-    }
 
     // Multisampled frames (raster_multisample.cpp): appends f with the draw state and bins it.
     void add_msaa(const detail::msaa_triangle &f, std::uint32_t state, piece &out);

@@ -27,17 +27,10 @@
 
 namespace tiny3d::detail {
 
-// Snapping is the vertex stage's (pipeline/screen_snap.h: snap_coord, snap_screen_point): the
-// set-up snaps the same way, through it. 1/16 px (RASTER_SUBPIXEL_BITS) everywhere but the
-// 16-sample frames, whose vertices are snapped finer (MSAA_16_SUBPIXEL_BITS, msaa.h).
+// Snapping is the vertex stage's (pipeline/screen_snap.h: snap_screen_point): the set-up
+// snaps through it, to 1/16 px (RASTER_SUBPIXEL_BITS) everywhere but the 16-sample frames,
+// whose vertices are snapped finer (MSAA_16_SUBPIXEL_BITS, msaa.h).
 static_assert(RASTER_MAX_COORD == SNAP_MAX_COORD);
-
-// Snaps one vertex to 1/2^bits px (done once per shared vertex by the render context).
-// False, with x, y untouched, when the vertex is one triangle_setup skips (non-finite or
-// beyond RASTER_MAX_COORD).
-inline bool snap_vertex(const screen_vertex &v, std::int32_t &x, std::int32_t &y, int bits = RASTER_SUBPIXEL_BITS) {
-    return snap_screen_point(v.x, v.y, bits, x, y);
-}
 
 // floor(n / d) for d > 0 (C++ division truncates towards zero); −n + d − 1 must not overflow.
 template <class Int>
@@ -207,15 +200,6 @@ enum class fast_setup {
 fast_setup setup_fast_triangle(const std::int32_t X[3], const std::int32_t Y[3], std::int64_t area2, pixel_rect clip,
                                const float depth[3], const float intensity[3], fast_triangle &out);
 
-// The 1-sample fill's kernels, by the instruction set a render context is told to use
-// (raster.h): portable (plain C++), SSE2 (every x86-64 CPU), AVX2 and AVX-512 for narrow
-// triangles (SSE2's for the others). Every one gives the same pixels as SSE2's; the
-// portable one differs from them in the last bits of depth and intensity.
-// Each set's kernels are in its kernel_table (src/kernels.h).
-using fill_kernel = raster_simd;
-// Whether this build runs kernel k on this CPU.
-inline bool fill_kernel_runs(fill_kernel k) { return kernels_run(k); }
-
 // Up to SETUP_BATCH triangles for setup_fast_batch, one lane each: the arguments of
 // setup_fast_triangle (snapped vertices, area2, depths, shades), lane by lane.
 inline constexpr int SETUP_BATCH = BATCH_LANES;
@@ -270,15 +254,11 @@ struct batch_lanes {
     }
 };
 
-// setup_fast_triangle for the first in.count lanes of `in` at once with `kernel`'s
-// instructions where it has a batch (batched_setup: AVX-512, eight lanes of doubles; AVX2,
-// two halves of four): the same operations in the same order, so the same fast_triangle bit
-// for bit and the same verdict — except that a triangle with a horizontal edge gets
-// fast_setup::scalar (rare: its rows are cut in integers; setup_fast_triangle does it).
-// Other kernels: every lane fast_setup::scalar. Lanes at and after in.count are left alone.
-inline bool batched_setup(fill_kernel kernel) { return kernels_for(kernel).setup_fast_batch != nullptr; }
-void setup_fast_batch(fill_kernel kernel, const setup_batch &in, pixel_rect clip, fast_setup verdict[SETUP_BATCH],
-                      fast_triangle out[SETUP_BATCH]);
+// kernel_table::setup_fast_batch: setup_fast_triangle for the first in.count lanes of `in`
+// at once (AVX-512, eight lanes of doubles; AVX2, two halves of four): the same operations
+// in the same order, so the same fast_triangle bit for bit and the same verdict — except
+// that a triangle with a horizontal edge gets fast_setup::scalar (rare: its rows are cut in
+// integers; setup_fast_triangle does it). Lanes at and after in.count are left alone.
 #ifdef TINY3D_AVX512
 void setup_fast_batch_avx512(const setup_batch &in, pixel_rect clip, fast_setup verdict[SETUP_BATCH],
                              fast_triangle out[SETUP_BATCH]);

@@ -1,6 +1,6 @@
 // triangle_setup.cpp — the set-up stage, one triangle at a time (setup.h): snapping,
 // orientation, culling, the top-left bias, and the fast path's row crossings and attribute
-// planes; the batch entry point of the kernel table's set-up batches.
+// planes.
 #include <algorithm>
 #include <cmath>
 
@@ -8,16 +8,12 @@
 
 namespace tiny3d {
 
-namespace {
-
-constexpr std::int64_t HALF_SUBPIXEL = RASTER_SUBPIXEL_ONE / 2;  // pixel centre offset
-
-}  // namespace
-
 triangle_edges triangle_setup(const screen_vertex &v0, const screen_vertex &v1, const screen_vertex &v2,
                               pixel_rect clip, cull_mode cull) {
     std::int32_t X[3], Y[3];
-    if (!detail::snap_vertex(v0, X[0], Y[0]) || !detail::snap_vertex(v1, X[1], Y[1]) || !detail::snap_vertex(v2, X[2], Y[2]))
+    constexpr int bits = RASTER_SUBPIXEL_BITS;
+    if (!detail::snap_screen_point(v0.x, v0.y, bits, X[0], Y[0]) ||
+        !detail::snap_screen_point(v1.x, v1.y, bits, X[1], Y[1]) || !detail::snap_screen_point(v2.x, v2.y, bits, X[2], Y[2]))
         return {};
     return detail::triangle_setup_snapped(X, Y, clip, cull);
 }
@@ -26,12 +22,58 @@ namespace detail {
 
 namespace {
 
+constexpr std::int64_t HALF_SUBPIXEL = RASTER_SUBPIXEL_ONE / 2;  // pixel centre offset
+
 // Pixels p whose centre 2^bits·p + 2^bits/2 lies in [lo, hi] (sub-pixel units), within
 // [clip0, clip1) (>> is floor division: arithmetic shift, defined in C++20).
 inline void pixel_bounds(std::int64_t lo, std::int64_t hi, int clip0, int clip1, int bits, int &first, int &last) {
     const std::int64_t half = std::int64_t{1} << (bits - 1);
     first = static_cast<int>(std::max<std::int64_t>(-((half - lo) >> bits), clip0));
     last = static_cast<int>(std::min<std::int64_t>((hi - half) >> bits, clip1 - 1));
+}
+
+// Rows [0, count) relative to min_y: those where no horizontal edge (a = 0, E = E0 + b·dy)
+// is negative. Narrows [first, last] (relative row numbers).
+inline void clip_rows_by_horizontal_edge(std::int64_t e0, std::int64_t b, int &first, int &last) {
+    if (b > 0) first = static_cast<int>(std::max<std::int64_t>(first, -floor_div(e0, b)));  // dy ≥ ceil(−e0 / b)
+    else last = static_cast<int>(std::min<std::int64_t>(last, floor_div(e0, -b)));         // dy ≤ floor(e0 / −b)
+}
+
+// Resets the crossings to "no edge" (set_crossing fills them).
+inline void clear_crossings(fast_triangle &out) {
+    constexpr double NO_EDGE = -1e30;
+    for (int j = 0; j < 4; ++j) out.cross[j] = NO_EDGE, out.cross_step[j] = 0.0;
+}
+
+// Edge E(min_x + x, min_y + dy) = e0 + a·x + b·dy with a ≠ 0 crosses zero at
+// x = −e0/a − (b/a)·dy. Left edges (a > 0) go to slots 0, 2, right edges (negated) to 1, 3.
+inline void set_crossing(std::int64_t e0, std::int64_t a, std::int64_t b, int &left, int &right, fast_triangle &out) {
+    const double inv_a = 1.0 / static_cast<double>(a);
+    const bool is_left = a > 0;
+    const int slot = is_left ? left : right;
+    (is_left ? left : right) += 2;
+    const double sign = is_left ? 1.0 : -1.0;
+    out.cross[slot] = sign * (-static_cast<double>(e0) * inv_a);
+    out.cross_step[slot] = sign * (-static_cast<double>(b) * inv_a);
+}
+
+// The depth and intensity planes at pixel (out.min_x, out.min_y) through the snapped
+// vertices (x, y in px), by Cramer's rule in double: the geometry once, then each
+// attribute's value at the reference pixel centre and its per-pixel steps.
+inline void set_planes(const double x[3], const double y[3], const float depth[3], const float intensity[3],
+                       fast_triangle &out) {
+    const double d1x = x[1] - x[0], d1y = y[1] - y[0], d2x = x[2] - x[0], d2y = y[2] - y[0];
+    // det = twice the signed area in px² (the snapped area2 carries the orientation sign).
+    const double inv_det = 1.0 / (d1x * d2y - d2x * d1y);
+    const double ref_dx = out.min_x + 0.5 - x[0], ref_dy = out.min_y + 0.5 - y[0];
+    auto plane = [&](const float f[3], float &at_ref, float &fdx, float &fdy) {
+        const double f1 = static_cast<double>(f[1]) - f[0], f2 = static_cast<double>(f[2]) - f[0];
+        const double gx = (f1 * d2y - f2 * d1y) * inv_det, gy = (f2 * d1x - f1 * d2x) * inv_det;
+        at_ref = static_cast<float>(f[0] + gx * ref_dx + gy * ref_dy);
+        fdx = static_cast<float>(gx), fdy = static_cast<float>(gy);
+    };
+    plane(depth, out.z, out.zdx, out.zdy);
+    plane(intensity, out.i, out.idx, out.idy);
 }
 
 }  // namespace
@@ -67,92 +109,6 @@ triangle_edges triangle_setup_snapped(const std::int32_t Xs[3], const std::int32
     t.valid = t.min_x <= t.max_x && t.min_y <= t.max_y;
     return t;
 }
-
-namespace {
-
-// Affine planes f(x, y) over pixel centres through the three snapped vertices, by Cramer's
-// rule in double: the triangle's geometry (vertex differences, 1/det, the reference pixel
-// centre's offset from vertex 0) once, then each attribute's value at the reference pixel
-// and its per-pixel steps.
-struct plane {
-    float at_ref, dx, dy;
-};
-
-struct plane_geometry {
-    double d1x, d1y, d2x, d2y, inv_det, ref_dx, ref_dy;
-};
-
-// x, y: the snapped vertices in px.
-inline plane_geometry make_plane_geometry(const double x[3], const double y[3], int px, int py) {
-    plane_geometry g;
-    g.d1x = x[1] - x[0];
-    g.d1y = y[1] - y[0];
-    g.d2x = x[2] - x[0];
-    g.d2y = y[2] - y[0];
-    // det = twice the signed area in px² (the snapped area2 carries the orientation sign).
-    g.inv_det = 1.0 / (g.d1x * g.d2y - g.d2x * g.d1y);
-    g.ref_dx = px + 0.5 - x[0];
-    g.ref_dy = py + 0.5 - y[0];
-    return g;
-}
-
-inline plane attribute_plane(const plane_geometry &g, const float f[3]) {
-    const double f1 = static_cast<double>(f[1]) - f[0], f2 = static_cast<double>(f[2]) - f[0];
-    const double gx = (f1 * g.d2y - f2 * g.d1y) * g.inv_det;
-    const double gy = (f2 * g.d1x - f1 * g.d2x) * g.inv_det;
-    const double ref = f[0] + gx * g.ref_dx + gy * g.ref_dy;
-    return {static_cast<float>(ref), static_cast<float>(gx), static_cast<float>(gy)};
-}
-
-}  // namespace
-
-namespace {
-
-// Rows [0, count) relative to min_y: those where no horizontal edge (a = 0, E = E0 + b·dy)
-// is negative. Narrows [first, last] (relative row numbers).
-inline void clip_rows_by_horizontal_edge(std::int64_t e0, std::int64_t b, int &first, int &last) {
-    if (b > 0) first = static_cast<int>(std::max<std::int64_t>(first, -floor_div(e0, b)));  // dy ≥ ceil(−e0 / b)
-    else last = static_cast<int>(std::min<std::int64_t>(last, floor_div(e0, -b)));         // dy ≤ floor(e0 / −b)
-}
-
-}  // namespace
-
-namespace {
-
-// Resets the crossings to "no edge" (set_crossing fills them).
-inline void clear_crossings(fast_triangle &out) {
-    constexpr double NO_EDGE = -1e30;
-    for (int j = 0; j < 4; ++j) out.cross[j] = NO_EDGE, out.cross_step[j] = 0.0;
-}
-
-// Edge E(min_x + x, min_y + dy) = e0 + a·x + b·dy with a ≠ 0 crosses zero at
-// x = −e0/a − (b/a)·dy. Left edges (a > 0) go to slots 0, 2, right edges (negated) to 1, 3.
-inline void set_crossing(std::int64_t e0, std::int64_t a, std::int64_t b, int &left, int &right, fast_triangle &out) {
-    const double inv_a = 1.0 / static_cast<double>(a);
-    const bool is_left = a > 0;
-    const int slot = is_left ? left : right;
-    (is_left ? left : right) += 2;
-    const double sign = is_left ? 1.0 : -1.0;
-    out.cross[slot] = sign * (-static_cast<double>(e0) * inv_a);
-    out.cross_step[slot] = sign * (-static_cast<double>(b) * inv_a);
-}
-
-// The depth and intensity planes at pixel (out.min_x, out.min_y) through the snapped
-// vertices (x, y in px).
-inline void set_planes(const double x[3], const double y[3], const float depth[3], const float intensity[3],
-                       fast_triangle &out) {
-    const plane_geometry g = make_plane_geometry(x, y, out.min_x, out.min_y);
-    const plane zp = attribute_plane(g, depth);
-    const plane ip = attribute_plane(g, intensity);
-    out.z = zp.at_ref;
-    out.zdx = zp.dx;
-    out.zdy = zp.dy;
-    out.i = ip.at_ref;
-    out.idx = ip.dx;
-    out.idy = ip.dy;
-}
-
-}  // namespace
 
 bool make_fast_triangle(const triangle_edges &t, const float depth[3], const float intensity[3],
                         std::int32_t wide_index, fast_triangle &out) {
@@ -211,12 +167,6 @@ fast_setup setup_fast_triangle(const std::int32_t X[3], const std::int32_t Y[3],
     snapped_to_px(X, Y, x, y);
     set_planes(x, y, depth, intensity, out);
     return fast_setup::ready;
-}
-
-void setup_fast_batch(fill_kernel kernel, const setup_batch &in, pixel_rect clip, fast_setup verdict[SETUP_BATCH],
-                      fast_triangle out[SETUP_BATCH]) {
-    if (const auto batch = kernels_for(kernel).setup_fast_batch) return batch(in, clip, verdict, out);
-    std::fill(verdict, verdict + in.count, fast_setup::scalar);
 }
 
 void attribute_planes_at(const double x[3], const double y[3], int px, int py, const float depth[3],
