@@ -21,13 +21,6 @@ using namespace detail;
 
 namespace {
 
-// A clipped vertex on the screen (with 1/w for perspective-correct attributes); false if not finite.
-bool to_screen(const vec4_t &clip, int width, int height, screen_vertex &out) {
-    const screen_point p = clip_to_screen(clip, width, height);
-    out = {p.x, p.y, p.depth, 1.0f / p.w};
-    return !p.behind;
-}
-
 // Whether a draw takes the per-pixel path (Phong, a texture, translucency), not the fast one.
 bool per_pixel_path(const draw_params &p) { return p.shade == shading::phong || p.tex != nullptr || p.alpha < 1.0f; }
 
@@ -67,19 +60,30 @@ void render_context::impl::emit(const clip_vertex *poly, int n, const draw_param
     const pixel_rect full{0, 0, width, height};
     for (int k = 1; k + 1 < n; ++k) {
         const clip_vertex *c[3] = {&poly[0], &poly[k], &poly[k + 1]};
-        screen_vertex v[3];
-        if (!to_screen(c[0]->position, width, height, v[0]) || !to_screen(c[1]->position, width, height, v[1]) ||
-            !to_screen(c[2]->position, width, height, v[2]))
-            continue;
+        screen_vertex v[3];  // (with 1/w for perspective-correct attributes)
+        bool in_front = true;
+        for (int j = 0; j < 3 && in_front; ++j) {
+            const screen_point s = clip_to_screen(c[j]->position, width, height);
+            v[j] = {s.x, s.y, s.depth, 1.0f / s.w};
+            in_front = !s.behind;
+        }
+        if (!in_front) continue;
         const float shade[3] = {c[0]->attr[ATTR_SHADE], c[1]->attr[ATTR_SHADE], c[2]->attr[ATTR_SHADE]};
         const float depth[3] = {v[0].z, v[1].z, v[2].z};
+        // Snapped on the pattern's grid, as the unclipped triangles (setup_range).
+        std::int32_t X[3], Y[3];
+        bool usable = true;
+        for (int j = 0; j < 3; ++j) usable = usable && snap_screen_point(v[j].x, v[j].y, pattern->bits, X[j], Y[j]);
+        const std::int64_t area2 = usable ? detail::snapped_area2(X, Y) : 0;
+        if (area2 == 0) continue;
+        if (detail::facing_culled(area2, p.cull)) {
+            out.stats.culled_backface += 1;
+            continue;
+        }
         int y0, y1;  // a per-pixel-path triangle's rows, for its bins
         if (!multisampled()) {
-            const triangle_edges t = triangle_setup(v[0], v[1], v[2], full, p.cull);
-            if (!t.valid) {
-                out.stats.culled_backface += t.culled;
-                continue;
-            }
+            const triangle_edges t = triangle_setup_snapped(X, Y, full, cull_mode::none);
+            if (!t.valid) continue;
             out.stats.rasterized += 1;
             if (!generic) {
                 add_fast(t, depth, shade, out);
@@ -87,16 +91,6 @@ void render_context::impl::emit(const clip_vertex *poly, int n, const draw_param
             }
             y0 = t.min_y, y1 = t.max_y;
         } else {
-            // On the pattern's grid, as the unclipped triangles (setup_range).
-            std::int32_t X[3], Y[3];
-            bool usable = true;
-            for (int j = 0; j < 3; ++j) usable = usable && snap_screen_point(v[j].x, v[j].y, pattern->bits, X[j], Y[j]);
-            const std::int64_t area2 = usable ? detail::snapped_area2(X, Y) : 0;
-            if (area2 == 0) continue;
-            if (detail::facing_culled(area2, p.cull)) {
-                out.stats.culled_backface += 1;
-                continue;
-            }
             out.stats.rasterized += 1;
             if (!generic) {
                 detail::msaa_triangle f;
