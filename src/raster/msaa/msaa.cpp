@@ -319,12 +319,7 @@ void sample_store::resize(int width, int rows, int samples, float clear_colour, 
 void sample_store::start(int y0, int y1) {
     origin_ = y0;
     end_ = std::min(y1, y0 + rows_);
-    clear_rows(origin_, end_);
-}
-
-void sample_store::clear_rows(int y0, int y1) {
-    if (y0 >= y1) return;
-    std::fill(touched_row(y0), touched_row(y1), std::uint8_t{0});
+    if (origin_ < end_) std::fill(touched_row(origin_), touched_row(end_), std::uint8_t{0});
 }
 
 void sample_store::initialise(float *pixel, float clear_colour) const {

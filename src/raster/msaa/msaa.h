@@ -103,7 +103,6 @@ public:
         mark = 1;
         return p;
     }
-    void clear_rows(int y0, int y1);
     void initialise(float *pixel, float clear_colour) const;
     // canvas := each pixel's mean sample colour, depth := its nearest sample depth, summed
     // in one fixed order for every kernel (bit-identical). A 4-sample tile is left at rest.

@@ -71,16 +71,12 @@ struct pixel_shader {
                                          unit_or_zero({lerp(ATTR_NX), lerp(ATTR_NY), lerp(ATTR_NZ)}));
         else shade = lerp(ATTR_SHADE);
         if (trilinear) shade *= texture_sample_trilinear(*p.tex, lerp(ATTR_U), lerp(ATTR_V), lod, p.wrap);
-        else if (anisotropic) shade *= anisotropic_sample(lerp(ATTR_U), lerp(ATTR_V), d);
-        else if (p.tex) shade *= texture_sample(*p.tex, lerp(ATTR_U), lerp(ATTR_V), p.filter, p.wrap);
+        else if (anisotropic) {  // (d in texels per pixel; the filter takes uv units)
+            const float w = static_cast<float>(p.tex->width), h = static_cast<float>(p.tex->height);
+            shade *= texture_sample_anisotropic(*p.tex, lerp(ATTR_U), lerp(ATTR_V), d[0] / w, d[1] / h, d[2] / w,
+                                                d[3] / h, p.anisotropy, p.wrap);
+        } else if (p.tex) shade *= texture_sample(*p.tex, lerp(ATTR_U), lerp(ATTR_V), p.filter, p.wrap);
         return shade;
-    }
-
-    // texture_sample_anisotropic from derivatives in texels per pixel.
-    float anisotropic_sample(float u, float v, const float (&texels)[4]) const {
-        const float w = static_cast<float>(p.tex->width), h = static_cast<float>(p.tex->height);
-        return texture_sample_anisotropic(*p.tex, u, v, texels[0] / w, texels[1] / h, texels[2] / w, texels[3] / h,
-                                          p.anisotropy, p.wrap);
     }
 };
 
