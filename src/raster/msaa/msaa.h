@@ -145,24 +145,8 @@ bool make_msaa_triangle(const std::int32_t X[3], const std::int32_t Y[3], std::i
 
 // kernel_table::setup_msaa_batch: make_msaa_triangle for in.count lanes at once, bit for
 // bit (state left alone), for 4 and 8 samples (the 1/16 px grid). Verdict per lane: ready,
-// empty, or scalar (a wide box): make_msaa_triangle sets those up. finish_msaa_batch: the
-// verdicts and triangles for lanes [0, count); a lane the batch sets up is narrow.
-inline void finish_msaa_batch(const batch_lanes &lanes, int count, const std::int64_t e[3][SETUP_BATCH],
-                              const std::int64_t a[3][SETUP_BATCH], const std::int64_t b[3][SETUP_BATCH],
-                              fast_setup verdict[SETUP_BATCH], msaa_triangle out[SETUP_BATCH]) {
-    for (int l = 0; l < count; ++l) {
-        const unsigned bit = 1u << l;
-        if (lanes.wide & bit) verdict[l] = fast_setup::scalar;
-        else if (lanes.empty & bit) verdict[l] = fast_setup::empty;
-        else {
-            verdict[l] = fast_setup::ready;
-            msaa_triangle &f = out[l];
-            lanes.unpack(l, f);
-            for (int k = 0; k < 3; ++k) f.e[k] = e[k][l], f.a[k] = a[k][l], f.b[k] = b[k][l];
-            f.narrow = true, f.chunkable = true, f.clipped_x = (lanes.clipped_x & bit) != 0;
-        }
-    }
-}
+// empty, or scalar (a wide box): make_msaa_triangle sets those up; a lane the batch sets up
+// is narrow.
 #ifdef TINY3D_AVX512
 void setup_msaa_batch_avx512(const setup_batch &in, const sample_pattern &pat, pixel_rect clip,
                              fast_setup verdict[SETUP_BATCH], msaa_triangle out[SETUP_BATCH]);

@@ -219,41 +219,6 @@ struct setup_batch {
     }
 };
 
-// What the set-up batches compute per lane and unpack into each lane's set-up triangle
-// (fast_triangle or msaa_triangle: the same field names).
-struct batch_lanes {
-    alignas(32) std::int32_t bounds[4][SETUP_BATCH];  // min_x, max_x, min_y, max_y
-    alignas(32) float planes[6][SETUP_BATCH];         // z, zdx, zdy, i, idx, idy
-    unsigned wide = 0, empty = 0;  // bit l: lane l's box spans FAST_SPAN_LIMIT or more; has no pixel
-    unsigned clipped_x = 0;        // bit l: the clip cut lane l's columns (msaa_triangle::clipped_x)
-    template <class Triangle>
-    void unpack(int l, Triangle &f) const {
-        f.min_x = bounds[0][l], f.max_x = bounds[1][l], f.min_y = bounds[2][l], f.max_y = bounds[3][l];
-        f.z = planes[0][l], f.zdx = planes[1][l], f.zdy = planes[2][l];
-        f.i = planes[3][l], f.idx = planes[4][l], f.idy = planes[5][l];
-    }
-    // The fast set-up's verdicts for lanes [0, count): wide, empty, scalar (bit l of
-    // `horizontal`: a horizontal edge) or ready, out[l] then set with its crossings
-    // (cross[j][l], step[j][l] in set_crossing's slots).
-    void finish_fast(int count, unsigned horizontal, const double cross[4][SETUP_BATCH],
-                     const double step[4][SETUP_BATCH], fast_setup verdict[SETUP_BATCH],
-                     fast_triangle out[SETUP_BATCH]) const {
-        for (int l = 0; l < count; ++l) {
-            const unsigned bit = 1u << l;
-            if (wide & bit) verdict[l] = fast_setup::wide;
-            else if (empty & bit) verdict[l] = fast_setup::empty;
-            else if (horizontal & bit) verdict[l] = fast_setup::scalar;
-            else {
-                verdict[l] = fast_setup::ready;
-                fast_triangle &f = out[l];
-                unpack(l, f);
-                for (int j = 0; j < 4; ++j) f.cross[j] = cross[j][l], f.cross_step[j] = step[j][l];
-                f.wide = -1;
-            }
-        }
-    }
-};
-
 // kernel_table::setup_fast_batch: setup_fast_triangle for the first in.count lanes of `in`
 // at once (AVX-512, eight lanes of doubles; AVX2, two halves of four): the same operations
 // in the same order, so the same fast_triangle bit for bit and the same verdict — except
