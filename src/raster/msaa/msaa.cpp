@@ -38,18 +38,6 @@ sample_pattern make_pattern(std::initializer_list<std::pair<int, int>> offsets, 
     return p;
 }
 
-// Pixels p (one axis) whose centre 2^bits·p + 2^bits/2 plus an offset in [lo_off, hi_off]
-// meets [lo, hi] (sub-pixel units, 2^bits per px; >> is floor division, defined in C++20),
-// clamped to [clip0, clip1). True when the clamp cut that range.
-inline bool axis_bounds(std::int64_t lo, std::int64_t hi, int lo_off, int hi_off, int bits, int clip0, int clip1,
-                        int &first, int &last) {
-    const std::int64_t half = std::int64_t{1} << (bits - 1);
-    const std::int64_t from = -((half + hi_off - lo) >> bits), to = (hi - half - lo_off) >> bits;
-    first = static_cast<int>(std::max<std::int64_t>(from, clip0));
-    last = static_cast<int>(std::min<std::int64_t>(to, clip1 - 1));
-    return from < clip0 || to >= clip1;
-}
-
 // The snapped vertex box (sub-pixel units).
 struct snapped_box {
     std::int64_t min_X, max_X, min_Y, max_Y;
@@ -377,11 +365,6 @@ void sample_store::resolve(canvas_t &canvas, zbuffer &depth, float clear_colour,
 void msaa_bounds(const std::int32_t X[3], const std::int32_t Y[3], const sample_pattern &pat, pixel_rect clip, int &x0,
                  int &x1, int &y0, int &y1) {
     pattern_bounds(snapped_box::of(X, Y), pat, pat.bits, clip, x0, x1, y0, y1);
-}
-
-void msaa_candidate_rows(std::int64_t min_Y, std::int64_t max_Y, const sample_pattern &pat, int last_row, int &row0,
-                         int &row1) {
-    axis_bounds(min_Y, max_Y, pat.min_dy, pat.max_dy, pat.bits, 0, last_row + 1, row0, row1);
 }
 
 bool make_msaa_triangle(const std::int32_t X[3], const std::int32_t Y[3], std::int64_t area2, const sample_pattern &pat,

@@ -161,10 +161,6 @@ void setup_msaa_batch_avx2(const setup_batch &in, const sample_pattern &pat, pix
 void msaa_bounds(const std::int32_t X[3], const std::int32_t Y[3], const sample_pattern &pat, pixel_rect clip, int &x0,
                  int &x1, int &y0, int &y1);
 
-// The rows with a sample row inside [min_Y, max_Y] (1/2^pat.bits px), clamped to [0, last_row].
-void msaa_candidate_rows(std::int64_t min_Y, std::int64_t max_Y, const sample_pattern &pat, int last_row, int &row0,
-                         int &row1);
-
 // The row fill of `kernel` for `samples` and `test`, chosen once before a band's triangles:
 // it draws rows [y0, y1) ∩ [min_y, max_y], per sample coverage and depth test, the pixel's
 // centre intensity (clamped to 0..1) into the passing samples.

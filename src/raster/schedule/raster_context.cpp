@@ -176,7 +176,7 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
     const detail::xvertex *vertices = from.vertices.data();
     const float *vertex_attr = from.vertex_attr.data();
     const pixel_rect full{0, 0, target->width, target->height};
-    const std::int64_t last_row = target->height - 1;
+    const int height = target->height;
     auto bin_ready = [&](const fast_triangle &f) {
         out.stats.rasterized += 1;
         bin_fast(f, out);
@@ -256,20 +256,13 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
             }
             const float depth[3] = {a.depth, b.depth, c.depth};
             const float shade[3] = {flat ? flat_shade : a.shade, flat ? flat_shade : b.shade, flat ? flat_shade : c.shade};
-            if (msaa) {
-                int row0, row1;
-                msaa_candidate_rows(std::min({Y[0], Y[1], Y[2]}), std::max({Y[0], Y[1], Y[2]}), *pattern,
-                                    static_cast<int>(last_row), row0, row1);
-                if (row0 > row1) continue;
-                out.stats.rasterized += 1;
-            } else {
-                // No pixel centre row of the target in the y range: nothing to count.
-                const std::int64_t row0 = std::max<std::int64_t>(
-                    -((RASTER_SUBPIXEL_ONE / 2 - std::min({Y[0], Y[1], Y[2]})) >> RASTER_SUBPIXEL_BITS), 0);
-                const std::int64_t row1 = std::min<std::int64_t>(
-                    (std::max({Y[0], Y[1], Y[2]}) - RASTER_SUBPIXEL_ONE / 2) >> RASTER_SUBPIXEL_BITS, last_row);
-                if (row0 > row1) continue;
-            }
+            // No sample row (pixel centre row at 1×) of the target in the y range: nothing to count.
+            const std::int32_t min_Y = std::min({Y[0], Y[1], Y[2]}), max_Y = std::max({Y[0], Y[1], Y[2]});
+            int row0, row1;
+            if (msaa) axis_bounds(min_Y, max_Y, pattern->min_dy, pattern->max_dy, pattern->bits, 0, height, row0, row1);
+            else axis_bounds(min_Y, max_Y, 0, 0, RASTER_SUBPIXEL_BITS, 0, height, row0, row1);
+            if (row0 > row1) continue;
+            if (msaa) out.stats.rasterized += 1;
             if (batched) {
                 batch.add(X, Y, area2, depth, shade);
                 if (batch.count == SETUP_BATCH) finish_batch();

@@ -38,6 +38,18 @@ inline Int floor_div(Int n, Int d) {
     return n >= 0 ? n / d : -((-n + d - 1) / d);
 }
 
+// Pixels p (one axis) whose centre 2^bits·p + 2^bits/2 plus an offset in [lo_off, hi_off]
+// (sample offsets; 0 for pixel centres) meets [lo, hi] (sub-pixel units; >> is floor
+// division, defined in C++20), clamped to [clip0, clip1). True when the clamp cut that range.
+inline bool axis_bounds(std::int64_t lo, std::int64_t hi, int lo_off, int hi_off, int bits, int clip0, int clip1,
+                        int &first, int &last) {
+    const std::int64_t half = std::int64_t{1} << (bits - 1);
+    const std::int64_t from = -((half + hi_off - lo) >> bits), to = (hi - half - lo_off) >> bits;
+    first = static_cast<int>(std::max<std::int64_t>(from, clip0));
+    last = static_cast<int>(std::min<std::int64_t>(to, clip1 - 1));
+    return from < clip0 || to >= clip1;
+}
+
 // Twice the signed area of a snapped triangle, in sub-pixel units²: negative = front facing
 // (counter-clockwise in NDC, clockwise on the y-down screen), 0 = degenerate.
 inline std::int64_t snapped_area2(const std::int32_t X[3], const std::int32_t Y[3]) {

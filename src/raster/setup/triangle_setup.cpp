@@ -24,14 +24,6 @@ namespace {
 
 constexpr std::int64_t HALF_SUBPIXEL = RASTER_SUBPIXEL_ONE / 2;  // pixel centre offset
 
-// Pixels p whose centre 2^bits·p + 2^bits/2 lies in [lo, hi] (sub-pixel units), within
-// [clip0, clip1) (>> is floor division: arithmetic shift, defined in C++20).
-inline void pixel_bounds(std::int64_t lo, std::int64_t hi, int clip0, int clip1, int bits, int &first, int &last) {
-    const std::int64_t half = std::int64_t{1} << (bits - 1);
-    first = static_cast<int>(std::max<std::int64_t>(-((half - lo) >> bits), clip0));
-    last = static_cast<int>(std::min<std::int64_t>((hi - half) >> bits, clip1 - 1));
-}
-
 // Rows [0, count) relative to min_y: those where no horizontal edge (a = 0, E = E0 + b·dy)
 // is negative. Narrows [first, last] (relative row numbers).
 inline void clip_rows_by_horizontal_edge(std::int64_t e0, std::int64_t b, int &first, int &last) {
@@ -101,8 +93,8 @@ triangle_edges triangle_setup_snapped(const std::int32_t Xs[3], const std::int32
     }
     const std::int64_t min_X = std::min({X[0], X[1], X[2]}), max_X = std::max({X[0], X[1], X[2]});
     const std::int64_t min_Y = std::min({Y[0], Y[1], Y[2]}), max_Y = std::max({Y[0], Y[1], Y[2]});
-    pixel_bounds(min_X, max_X, clip.x0, clip.x1, bits, t.min_x, t.max_x);
-    pixel_bounds(min_Y, max_Y, clip.y0, clip.y1, bits, t.min_y, t.max_y);
+    axis_bounds(min_X, max_X, 0, 0, bits, clip.x0, clip.x1, t.min_x, t.max_x);
+    axis_bounds(min_Y, max_Y, 0, 0, bits, clip.y0, clip.y1, t.min_y, t.max_y);
     t.span_x = max_X - min_X;
     t.span_y = max_Y - min_Y;
     snapped_to_px(Xs, Ys, t.x, t.y, bits);
@@ -137,8 +129,8 @@ fast_setup setup_fast_triangle(const std::int32_t X[3], const std::int32_t Y[3],
     const std::int32_t min_Y = std::min(std::min(Y[0], Y[1]), Y[2]), max_Y = std::max(std::max(Y[0], Y[1]), Y[2]);
     if (max_X - min_X >= FAST_SPAN_LIMIT || max_Y - min_Y >= FAST_SPAN_LIMIT) return fast_setup::wide;
     int min_y, max_y;
-    pixel_bounds(min_X, max_X, clip.x0, clip.x1, RASTER_SUBPIXEL_BITS, out.min_x, out.max_x);
-    pixel_bounds(min_Y, max_Y, clip.y0, clip.y1, RASTER_SUBPIXEL_BITS, min_y, max_y);
+    axis_bounds(min_X, max_X, 0, 0, RASTER_SUBPIXEL_BITS, clip.x0, clip.x1, out.min_x, out.max_x);
+    axis_bounds(min_Y, max_Y, 0, 0, RASTER_SUBPIXEL_BITS, clip.y0, clip.y1, min_y, max_y);
     if (out.min_x > out.max_x || min_y > max_y) return fast_setup::empty;
     // triangle_setup_snapped's edges (oriented by s, top-left bias), evaluated at the centre
     // (cx, cy) of pixel (min_x, min_y): within the box, so |e| < 2^31 and the products fit.
