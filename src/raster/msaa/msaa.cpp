@@ -234,10 +234,7 @@ bool make_msaa_triangle_on(const std::int32_t X[3], const std::int32_t Y[3], std
         out.chunkable = out.chunkable && std::abs(out.a[k]) + std::abs(out.b[k]) < (std::int64_t{1} << 28);
     double x[3], y[3];
     snapped_to_px(X, Y, x, y, Bits);
-    float planes[6];
-    attribute_planes_at(x, y, out.min_x, out.min_y, depth, intensity, planes);
-    out.z = planes[0], out.zdx = planes[1], out.zdy = planes[2];
-    out.i = planes[3], out.idx = planes[4], out.idy = planes[5];
+    set_planes(x, y, depth, intensity, out);
     return true;
 }
 

@@ -125,9 +125,11 @@ void draw_generic_samples(sample_store &tile, const sample_pattern &pat, float c
     const int S = pat.count;
     const float zv[3] = {g.v[0].z, g.v[1].z, g.v[2].z};
     const double vx[3] = {g.v[0].x, g.v[1].x, g.v[2].x}, vy[3] = {g.v[0].y, g.v[1].y, g.v[2].y};
-    float planes[6], dz[MSAA_MAX_SAMPLES];  // the depth plane's steps: planes[1], planes[2]
-    attribute_planes_at(vx, vy, 0, 0, zv, zv, planes);
-    for (int k = 0; k < S; ++k) dz[k] = planes[1] * pat.fdx[k] + planes[2] * pat.fdy[k];
+    fast_triangle planes;  // the depth plane's steps (zdx, zdy)
+    planes.min_x = planes.min_y = 0;
+    set_planes(vx, vy, zv, zv, planes);
+    float dz[MSAA_MAX_SAMPLES];
+    for (int k = 0; k < S; ++k) dz[k] = planes.zdx * pat.fdx[k] + planes.zdy * pat.fdy[k];
     const double inv_area = 1.0 / static_cast<double>(t.area2);
     for_each_covered_pixel(t, X, Y, pat, band, [&](int x, int y, unsigned mask) {
         // Barycentrics of the centre (unbiased edge values, as rasterize_triangle).

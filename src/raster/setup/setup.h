@@ -245,11 +245,26 @@ void setup_fast_batch_avx2(const setup_batch &in, pixel_rect clip, fast_setup ve
                            fast_triangle out[SETUP_BATCH]);
 #endif
 
-// The depth and intensity planes through snapped (or any) vertices x, y (px), as the fast
-// path computes them: planes = {z, ∂z/∂x, ∂z/∂y, i, ∂i/∂x, ∂i/∂y} at the centre of pixel
-// (px, py), steps per pixel.
-void attribute_planes_at(const double x[3], const double y[3], int px, int py, const float depth[3],
-                         const float intensity[3], float planes[6]);
+// The depth and intensity planes (z, zdx, zdy, i, idx, idy of a fast_triangle or an
+// msaa_triangle) at the centre of pixel (out.min_x, out.min_y), steps per pixel, through the
+// snapped vertices (x, y in px), by Cramer's rule in double: the geometry once, then each
+// attribute's value at the reference pixel centre and its steps. Every set-up's planes.
+template <class Triangle>
+inline void set_planes(const double x[3], const double y[3], const float depth[3], const float intensity[3],
+                       Triangle &out) {
+    const double d1x = x[1] - x[0], d1y = y[1] - y[0], d2x = x[2] - x[0], d2y = y[2] - y[0];
+    // det = twice the signed area in px² (the snapped area2 carries the orientation sign).
+    const double inv_det = 1.0 / (d1x * d2y - d2x * d1y);
+    const double ref_dx = out.min_x + 0.5 - x[0], ref_dy = out.min_y + 0.5 - y[0];
+    auto plane = [&](const float f[3], float &at_ref, float &fdx, float &fdy) {
+        const double f1 = static_cast<double>(f[1]) - f[0], f2 = static_cast<double>(f[2]) - f[0];
+        const double gx = (f1 * d2y - f2 * d1y) * inv_det, gy = (f2 * d1x - f1 * d2x) * inv_det;
+        at_ref = static_cast<float>(f[0] + gx * ref_dx + gy * ref_dy);
+        fdx = static_cast<float>(gx), fdy = static_cast<float>(gy);
+    };
+    plane(depth, out.z, out.zdx, out.zdy);
+    plane(intensity, out.i, out.idx, out.idy);
+}
 
 // Depth comparison as a function, shared by the scalar paths.
 // (A template so the double-precision reference renderer uses the same comparisons.)

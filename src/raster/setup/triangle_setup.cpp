@@ -49,25 +49,6 @@ inline void set_crossing(std::int64_t e0, std::int64_t a, std::int64_t b, int &l
     out.cross_step[slot] = sign * (-static_cast<double>(b) * inv_a);
 }
 
-// The depth and intensity planes at pixel (out.min_x, out.min_y) through the snapped
-// vertices (x, y in px), by Cramer's rule in double: the geometry once, then each
-// attribute's value at the reference pixel centre and its per-pixel steps.
-inline void set_planes(const double x[3], const double y[3], const float depth[3], const float intensity[3],
-                       fast_triangle &out) {
-    const double d1x = x[1] - x[0], d1y = y[1] - y[0], d2x = x[2] - x[0], d2y = y[2] - y[0];
-    // det = twice the signed area in px² (the snapped area2 carries the orientation sign).
-    const double inv_det = 1.0 / (d1x * d2y - d2x * d1y);
-    const double ref_dx = out.min_x + 0.5 - x[0], ref_dy = out.min_y + 0.5 - y[0];
-    auto plane = [&](const float f[3], float &at_ref, float &fdx, float &fdy) {
-        const double f1 = static_cast<double>(f[1]) - f[0], f2 = static_cast<double>(f[2]) - f[0];
-        const double gx = (f1 * d2y - f2 * d1y) * inv_det, gy = (f2 * d1x - f1 * d2x) * inv_det;
-        at_ref = static_cast<float>(f[0] + gx * ref_dx + gy * ref_dy);
-        fdx = static_cast<float>(gx), fdy = static_cast<float>(gy);
-    };
-    plane(depth, out.z, out.zdx, out.zdy);
-    plane(intensity, out.i, out.idx, out.idy);
-}
-
 }  // namespace
 
 triangle_edges triangle_setup_snapped(const std::int32_t Xs[3], const std::int32_t Ys[3], pixel_rect clip,
@@ -159,16 +140,6 @@ fast_setup setup_fast_triangle(const std::int32_t X[3], const std::int32_t Y[3],
     snapped_to_px(X, Y, x, y);
     set_planes(x, y, depth, intensity, out);
     return fast_setup::ready;
-}
-
-void attribute_planes_at(const double x[3], const double y[3], int px, int py, const float depth[3],
-                         const float intensity[3], float planes[6]) {
-    fast_triangle f;
-    f.min_x = px;
-    f.min_y = py;
-    set_planes(x, y, depth, intensity, f);
-    const float out[6] = {f.z, f.zdx, f.zdy, f.i, f.idx, f.idy};
-    std::copy(out, out + 6, planes);
 }
 
 }  // namespace detail
