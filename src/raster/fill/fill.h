@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 
 #include "../setup/setup.h"
 #include "../../simd_config.h"

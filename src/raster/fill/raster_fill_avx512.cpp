@@ -20,7 +20,6 @@
 // (kernels_run).
 #include <algorithm>
 #include <cstdint>
-#include <span>
 
 #include "fill.h"
 #include "../../simd_config.h"

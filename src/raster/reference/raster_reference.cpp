@@ -3,7 +3,6 @@
 #include "raster.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <string>
 #include <vector>

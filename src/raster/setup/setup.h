@@ -11,9 +11,7 @@
 #define TINY3D_RASTER_SETUP_H
 
 #include <algorithm>
-#include <cmath>
 #include <cstdint>
-#include <memory>
 #include <type_traits>
 
 #include "raster.h"

@@ -2,7 +2,6 @@
 // orientation, culling, the top-left bias, and the fast path's row crossings and attribute
 // planes.
 #include <algorithm>
-#include <cmath>
 
 #include "setup.h"
 
