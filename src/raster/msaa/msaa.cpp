@@ -38,15 +38,6 @@ sample_pattern make_pattern(std::initializer_list<std::pair<int, int>> offsets, 
     return p;
 }
 
-// The snapped vertex box (sub-pixel units).
-struct snapped_box {
-    std::int64_t min_X, max_X, min_Y, max_Y;
-    static snapped_box of(const std::int32_t X[3], const std::int32_t Y[3]) {
-        return {std::min({X[0], X[1], X[2]}), std::max({X[0], X[1], X[2]}), std::min({Y[0], Y[1], Y[2]}),
-                std::max({Y[0], Y[1], Y[2]})};
-    }
-};
-
 // The pixels [x0, x1] × [y0, y1] with a sample of the pattern inside the box, clamped to clip
 // (bits = pat.bits; a constant where the caller has one). True when the clamp cut the
 // columns.

@@ -48,6 +48,15 @@ inline bool axis_bounds(std::int64_t lo, std::int64_t hi, int lo_off, int hi_off
     return from < clip0 || to >= clip1;
 }
 
+// The snapped vertex box (sub-pixel units).
+struct snapped_box {
+    std::int64_t min_X, max_X, min_Y, max_Y;
+    static snapped_box of(const std::int32_t X[3], const std::int32_t Y[3]) {
+        return {std::min({X[0], X[1], X[2]}), std::max({X[0], X[1], X[2]}), std::min({Y[0], Y[1], Y[2]}),
+                std::max({Y[0], Y[1], Y[2]})};
+    }
+};
+
 // Twice the signed area of a snapped triangle, in sub-pixel units²: negative = front facing
 // (counter-clockwise in NDC, clockwise on the y-down screen), 0 = degenerate.
 inline std::int64_t snapped_area2(const std::int32_t X[3], const std::int32_t Y[3]) {

@@ -50,11 +50,10 @@ inline void set_crossing(std::int64_t e0, std::int64_t a, std::int64_t b, int &l
 
 }  // namespace
 
-triangle_edges triangle_setup_snapped(const std::int32_t Xs[3], const std::int32_t Ys[3], pixel_rect clip,
+triangle_edges triangle_setup_snapped(const std::int32_t X[3], const std::int32_t Y[3], pixel_rect clip,
                                       cull_mode cull, int bits) {
     triangle_edges t;
-    const std::int64_t X[3] = {Xs[0], Xs[1], Xs[2]}, Y[3] = {Ys[0], Ys[1], Ys[2]};
-    const std::int64_t area2 = snapped_area2(Xs, Ys);
+    const std::int64_t area2 = snapped_area2(X, Y);
     if (area2 == 0) return t;
     t.front_facing = area2 < 0;
     if (facing_culled(area2, cull)) {
@@ -66,18 +65,17 @@ triangle_edges triangle_setup_snapped(const std::int32_t Xs[3], const std::int32
     const std::int64_t one = std::int64_t{1} << bits, half = one / 2;
     for (int k = 0; k < 3; ++k) {
         // E(P) with P = one·pixel + half (the pixel centre): its value at pixel (0, 0), its steps.
-        const snapped_edge edge = snapped_edge_at(Xs, Ys, s, k, half, half);
+        const snapped_edge edge = snapped_edge_at(X, Y, s, k, half, half);
         t.a[k] = -edge.dy * one;
         t.b[k] = edge.dx * one;
         t.c[k] = edge.e;
     }
-    const std::int64_t min_X = std::min({X[0], X[1], X[2]}), max_X = std::max({X[0], X[1], X[2]});
-    const std::int64_t min_Y = std::min({Y[0], Y[1], Y[2]}), max_Y = std::max({Y[0], Y[1], Y[2]});
-    axis_bounds(min_X, max_X, 0, 0, bits, clip.x0, clip.x1, t.min_x, t.max_x);
-    axis_bounds(min_Y, max_Y, 0, 0, bits, clip.y0, clip.y1, t.min_y, t.max_y);
-    t.span_x = max_X - min_X;
-    t.span_y = max_Y - min_Y;
-    snapped_to_px(Xs, Ys, t.x, t.y, bits);
+    const snapped_box box = snapped_box::of(X, Y);
+    axis_bounds(box.min_X, box.max_X, 0, 0, bits, clip.x0, clip.x1, t.min_x, t.max_x);
+    axis_bounds(box.min_Y, box.max_Y, 0, 0, bits, clip.y0, clip.y1, t.min_y, t.max_y);
+    t.span_x = box.max_X - box.min_X;
+    t.span_y = box.max_Y - box.min_Y;
+    snapped_to_px(X, Y, t.x, t.y, bits);
     t.valid = t.min_x <= t.max_x && t.min_y <= t.max_y;
     return t;
 }
