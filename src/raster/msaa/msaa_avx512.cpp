@@ -96,7 +96,7 @@ struct registers<8> : ymm_lanes {
 // without depth writes the untouched samples' depth 1 is put in memory.
 template <int S>
 struct samples : registers<S> {
-    static constexpr bool wide = true, prefetch_below = true;
+    static constexpr bool wide = true, prefetch_below = true, write_branch = true;
     using V = registers<S>;
     using mask = typename V::mask;
     static int any(mask m) { return m; }
