@@ -81,6 +81,11 @@ struct kernel_table {
     // (rows layout, 4 samples) a row's first `pixels` columns (a multiple of 8), null: SSE2's.
     void (*resolve_rows4)(float *p, const std::uint8_t *touched, int pixels, float clear_colour, float *colour,
                           float *z);
+    // (8 and 16 samples) likewise, null: SSE2's.
+    void (*resolve_rows8)(float *p, const std::uint8_t *touched, int pixels, float clear_colour, float *colour,
+                          float *z);
+    void (*resolve_rows16)(float *p, const std::uint8_t *touched, int pixels, float clear_colour, float *colour,
+                           float *z);
     // Textures: the anisotropic filter's taps over one mip level (null: walk_taps_portable).
     float (*walk_taps)(const tap_walk &w);
 };

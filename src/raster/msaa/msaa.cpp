@@ -331,8 +331,24 @@ void sample_store::resolve(canvas_t &canvas, zbuffer &depth, float clear_colour,
                     resolve_row_sse2<4>(pixel(0, y), touched, width_, clear_colour, colour, z);
                 }
                 continue;
-            case 8: resolve_row_sse2<8>(pixel(0, y), touched, width_, clear_colour, colour, z); continue;
-            case 16: resolve_row_sse2<16>(pixel(0, y), touched, width_, clear_colour, colour, z); continue;
+            case 8:
+                if (k.resolve_rows8) {  // then the SSE2 resolve for the last columns
+                    const int wide = width_ / 8 * 8;
+                    k.resolve_rows8(pixel(0, y), touched, wide, clear_colour, colour, z);
+                    resolve_row_sse2<8>(pixel(wide, y), touched + wide, width_ - wide, clear_colour, colour + wide, z + wide);
+                } else {
+                    resolve_row_sse2<8>(pixel(0, y), touched, width_, clear_colour, colour, z);
+                }
+                continue;
+            case 16:
+                if (k.resolve_rows16) {
+                    const int wide = width_ / 8 * 8;
+                    k.resolve_rows16(pixel(0, y), touched, wide, clear_colour, colour, z);
+                    resolve_row_sse2<16>(pixel(wide, y), touched + wide, width_ - wide, clear_colour, colour + wide, z + wide);
+                } else {
+                    resolve_row_sse2<16>(pixel(0, y), touched, width_, clear_colour, colour, z);
+                }
+                continue;
             default: break;
         }
 #endif

@@ -22,7 +22,7 @@ namespace {
 // The lane trait of msaa_lanes_fill.inc: masks as vectors (blendv reads the sign bits),
 // coverage the OR of the three edge values (sign set: out); narrow triangles, no prefetch.
 struct lanes8 : ymm_lanes {
-    static constexpr bool wide = false, prefetch_below = false;
+    static constexpr bool wide = false, prefetch_below = false, write_branch = false;
     using mask = __m256;
     using coverage = __m256;
     static vf blend(mask m, vf a, vf b) { return _mm256_blendv_ps(a, b, m); }
@@ -115,6 +115,60 @@ void resolve_rows4_avx2(float *p, const std::uint8_t *touched, int pixels, float
         _mm256_store_ps(p + 24, rest), _mm256_store_ps(p + 32, rest), _mm256_store_ps(p + 40, rest);
         _mm256_store_ps(p + 48, rest), _mm256_store_ps(p + 56, rest);
     }
+}
+
+// S = 8 or 16, eight pixels at a time: per pixel the sums of samples l, l + 4, … (lanes l)
+// with pixel j in one register's low half and pixel j + 4 in its high half, then
+// resolve_rows4_avx2's transpose; the SSE2 resolve's operations in its order (same bits).
+// Untouched pixels get the clear values; the samples are not put back (not at rest).
+template <int S>
+void resolve_rows_avx2(float *p, const std::uint8_t *touched, int pixels, float clear_colour, float *colour, float *z) {
+    static_assert(S == 8 || S == 16);
+    const __m256 inv = _mm256_set1_ps(1.0f / S), clear = _mm256_set1_ps(clear_colour), far = _mm256_set1_ps(1.0f);
+    for (int x = 0; x < pixels; x += 8, p += 8 * 2 * S) {
+        std::uint64_t t8;
+        std::memcpy(&t8, touched + x, sizeof t8);
+        if (t8 == 0) {
+            _mm256_storeu_ps(colour + x, clear), _mm256_storeu_ps(z + x, far);
+            continue;
+        }
+        // Pixels j and j + 4: op over their groups of four at `offset` (c[l], c[l + 4], … in turn).
+        auto group = [p](int j, int offset, auto op) {
+            const float *a = p + 2 * S * j + offset, *b = p + 2 * S * (j + 4) + offset;
+            const __m256 u = _mm256_loadu_ps(a), v = _mm256_loadu_ps(b);
+            __m256 r = op(_mm256_permute2f128_ps(u, v, 0x20), _mm256_permute2f128_ps(u, v, 0x31));
+            if constexpr (S == 16) {
+                const __m256 u2 = _mm256_loadu_ps(a + 8), v2 = _mm256_loadu_ps(b + 8);
+                r = op(op(r, _mm256_permute2f128_ps(u2, v2, 0x20)), _mm256_permute2f128_ps(u2, v2, 0x31));
+            }
+            return r;
+        };
+        auto reduce = [&](int offset, auto op) {
+            const __m256 q0 = group(0, offset, op), q1 = group(1, offset, op), q2 = group(2, offset, op),
+                         q3 = group(3, offset, op);
+            const __m256 v01 = op(_mm256_unpacklo_ps(q0, q1), _mm256_unpackhi_ps(q0, q1));
+            const __m256 v23 = op(_mm256_unpacklo_ps(q2, q3), _mm256_unpackhi_ps(q2, q3));
+            return op(_mm256_castpd_ps(_mm256_unpacklo_pd(_mm256_castps_pd(v01), _mm256_castps_pd(v23))),
+                      _mm256_castpd_ps(_mm256_unpackhi_pd(_mm256_castps_pd(v01), _mm256_castps_pd(v23))));
+        };
+        __m256 c = _mm256_mul_ps(reduce(S, [](__m256 u, __m256 v) { return _mm256_add_ps(u, v); }), inv);
+        __m256 d = reduce(0, [](__m256 u, __m256 v) { return _mm256_min_ps(u, v); });
+        if (t8 != 0x0101010101010101u) {
+            const __m256 out = _mm256_castsi256_ps(_mm256_cmpeq_epi32(
+                _mm256_cvtepu8_epi32(_mm_cvtsi64_si128(static_cast<long long>(t8))), _mm256_setzero_si256()));
+            c = _mm256_blendv_ps(c, clear, out);
+            d = _mm256_blendv_ps(d, far, out);
+        }
+        _mm256_storeu_ps(colour + x, c), _mm256_storeu_ps(z + x, d);
+    }
+}
+
+void resolve_rows8_avx2(float *p, const std::uint8_t *touched, int pixels, float clear_colour, float *colour, float *z) {
+    resolve_rows_avx2<8>(p, touched, pixels, clear_colour, colour, z);
+}
+
+void resolve_rows16_avx2(float *p, const std::uint8_t *touched, int pixels, float clear_colour, float *colour, float *z) {
+    resolve_rows_avx2<16>(p, touched, pixels, clear_colour, colour, z);
 }
 
 }  // namespace tiny3d::detail

@@ -55,9 +55,10 @@ struct registers<16> {
     static vf to_float(vi v) { return _mm512_cvtepi32_ps(v); }
     static vf min(vf a, vf b) { return _mm512_min_ps(a, b); }
     static vf max(vf a, vf b) { return _mm512_max_ps(a, b); }
-    // In: not a sign bit of b0 | b1 | b2.
+    // In: not a sign bit of b0 | b1 | b2 (a test into the mask register, not a mask inverted
+    // through a general register).
     static coverage covered(vi b0, vi b1, vi b2) {
-        return static_cast<mask>(~_mm512_movepi32_mask(_mm512_ternarylogic_epi32(b0, b1, b2, 0xFE)));
+        return _mm512_testn_epi32_mask(_mm512_ternarylogic_epi32(b0, b1, b2, 0xFE), _mm512_set1_epi32(INT32_MIN));
     }
     template <int Predicate>
     static mask compare(coverage in, vf a, vf b) { return _mm512_mask_cmp_ps_mask(in, a, b, Predicate); }
@@ -85,7 +86,7 @@ struct registers<8> : ymm_lanes {
     static void store(float *p, mask m, vf v) { _mm256_mask_storeu_ps(p, m, v); }
     static vf blend(mask m, vf a, vf b) { return _mm256_mask_blend_ps(m, a, b); }
     static coverage covered(vi b0, vi b1, vi b2) {
-        return static_cast<mask>(~_mm256_movepi32_mask(_mm256_ternarylogic_epi32(b0, b1, b2, 0xFE)));
+        return _mm256_testn_epi32_mask(_mm256_ternarylogic_epi32(b0, b1, b2, 0xFE), _mm256_set1_epi32(INT32_MIN));
     }
     template <int Predicate>
     static mask compare(coverage in, vf a, vf b) { return _mm256_mask_cmp_ps_mask(in, a, b, Predicate); }
@@ -95,7 +96,7 @@ struct registers<8> : ymm_lanes {
 // without depth writes the untouched samples' depth 1 is put in memory.
 template <int S>
 struct samples : registers<S> {
-    static constexpr bool wide = true, prefetch_below = true;
+    static constexpr bool wide = true, prefetch_below = true, write_branch = true;
     using V = registers<S>;
     using mask = typename V::mask;
     static int any(mask m) { return m; }
