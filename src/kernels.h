@@ -59,7 +59,7 @@ struct kernel_table {
     line_simd lines;   // the line kernels this set draws with (line_kernels_for)
 
     // Set-up, eight triangles at once (null: setup_fast_triangle / make_msaa_triangle one at
-    // a time; the msaa one only for patterns on the 1/16 px grid).
+    // a time).
     void (*setup_fast_batch)(const setup_batch &in, pixel_rect clip, fast_setup verdict[BATCH_LANES],
                              fast_triangle out[BATCH_LANES]);
     void (*setup_msaa_batch)(const setup_batch &in, const sample_pattern &pat, pixel_rect clip,

@@ -353,16 +353,17 @@ TEST(one_sample_kernels_give_the_sse2_pixels_and_the_portable_coverage) {
 }
 
 #if defined(TINY3D_AVX512) || defined(TINY3D_AVX2)
-// A batch of 1..8 random triangles: vertices on the 1/16 px grid around a point of a 250 ×
-// 200 px rectangle, spans of 2 px to ~2,100 px (past the fast path's limit), some rows or
-// columns shared.
-detail::setup_batch random_setup_batch(std::mt19937 &rng) {
+// A batch of 1..8 random triangles: vertices on the 1/2^bits px grid around a point of a
+// 250 × 200 px rectangle, spans of 2 px to ~2,100 px (past the fast path's limit), some
+// rows or columns shared.
+detail::setup_batch random_setup_batch(std::mt19937 &rng, int bits = RASTER_SUBPIXEL_BITS) {
+    const int scale = 1 << (bits - RASTER_SUBPIXEL_BITS);
     detail::setup_batch batch;
     std::uniform_int_distribution<int> count_of(1, detail::SETUP_BATCH), coin(0, 7);
     const int count = count_of(rng);
     for (int l = 0; l < count; ++l) {
-        const int reach = coin(rng) == 0 ? 34000 : (coin(rng) < 4 ? 200 : 2000);
-        std::uniform_int_distribution<int> centre(-400, 4400), offset(-reach, reach);
+        const int reach = scale * (coin(rng) == 0 ? 34000 : (coin(rng) < 4 ? 200 : 2000));
+        std::uniform_int_distribution<int> centre(-400 * scale, 4400 * scale), offset(-reach, reach);
         const int cx = centre(rng), cy = centre(rng);
         std::int32_t X[3], Y[3];
         for (int k = 0; k < 3; ++k) X[k] = cx + offset(rng), Y[k] = cy + offset(rng);
@@ -424,18 +425,19 @@ TEST(batched_setup_gives_the_scalar_setup_bit_for_bit) {
 #endif
 }
 
-// The multisampled frames' batched set-up (4 and 8 samples) against make_msaa_triangle.
+// The multisampled frames' batched set-up (4, 8 and 16 samples) against make_msaa_triangle.
 TEST(batched_multisample_setup_gives_the_scalar_setup_bit_for_bit) {
 #if defined(TINY3D_AVX512) || defined(TINY3D_AVX2)
   for (const raster_simd kernel : {raster_simd::avx512, raster_simd::avx2}) {
     if (!detail::kernels_run(kernel) || !detail::kernels_for(kernel).setup_fast_batch) continue;
     std::mt19937 rng(20261204);
     const pixel_rect clip{3, 5, 250, 200};
-    int ready = 0, empty = 0, scalar = 0, clipped = 0;
-    for (const int samples : {4, 8}) {
+    int ready = 0, empty = 0, scalar = 0, clipped = 0, ready16 = 0;
+    for (const int samples : {4, 8, 16}) {
         const detail::sample_pattern &pat = detail::pattern_of(samples);
+        const std::int64_t limit = detail::span_limit(pat.bits);
         for (int round = 0; round < 3000; ++round) {
-            const detail::setup_batch batch = random_setup_batch(rng);
+            const detail::setup_batch batch = random_setup_batch(rng, pat.bits);
             detail::fast_setup verdict[detail::SETUP_BATCH];
             detail::msaa_triangle batched[detail::SETUP_BATCH];
             detail::kernels_for(kernel).setup_msaa_batch(batch, pat, clip, verdict, batched);
@@ -446,8 +448,8 @@ TEST(batched_multisample_setup_gives_the_scalar_setup_bit_for_bit) {
                 detail::msaa_triangle one;
                 const bool made = detail::make_msaa_triangle(X, Y, batch.area2[l], pat, clip, depth, shade, one);
                 if (verdict[l] == detail::fast_setup::scalar) {  // allowed only for a box past the fast span
-                    CHECK(std::max({X[0], X[1], X[2]}) - std::min({X[0], X[1], X[2]}) >= detail::FAST_SPAN_LIMIT ||
-                          std::max({Y[0], Y[1], Y[2]}) - std::min({Y[0], Y[1], Y[2]}) >= detail::FAST_SPAN_LIMIT);
+                    CHECK(std::max({X[0], X[1], X[2]}) - std::min({X[0], X[1], X[2]}) >= limit ||
+                          std::max({Y[0], Y[1], Y[2]}) - std::min({Y[0], Y[1], Y[2]}) >= limit);
                     ++scalar;
                     continue;
                 }
@@ -457,6 +459,7 @@ TEST(batched_multisample_setup_gives_the_scalar_setup_bit_for_bit) {
                     continue;
                 }
                 ++ready;
+                ready16 += samples == 16;
                 const detail::msaa_triangle &b = batched[l];
                 CHECK(b.min_x == one.min_x && b.max_x == one.max_x && b.min_y == one.min_y && b.max_y == one.max_y);
                 CHECK(std::memcmp(b.e, one.e, sizeof one.e) == 0);
@@ -470,7 +473,7 @@ TEST(batched_multisample_setup_gives_the_scalar_setup_bit_for_bit) {
             }
         }
     }
-    CHECK(ready > 2000);
+    CHECK(ready > 2000 && ready16 > 600);
     CHECK(empty > 1000);
     CHECK(scalar > 100);
     CHECK(clipped > 100 && clipped < ready);

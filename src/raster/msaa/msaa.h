@@ -144,9 +144,9 @@ bool make_msaa_triangle(const std::int32_t X[3], const std::int32_t Y[3], std::i
                         pixel_rect clip, const float depth[3], const float intensity[3], msaa_triangle &out);
 
 // kernel_table::setup_msaa_batch: make_msaa_triangle for in.count lanes at once, bit for
-// bit (state left alone), for 4 and 8 samples (the 1/16 px grid). Verdict per lane: ready,
-// empty, or scalar (a wide box): make_msaa_triangle sets those up; a lane the batch sets up
-// is narrow.
+// bit (state left alone), for 4 and 8 samples (the 1/16 px grid) and 16 (1/256). Verdict
+// per lane: ready, empty, or scalar (a wide box): make_msaa_triangle sets those up; a lane
+// the batch sets up is narrow.
 #ifdef TINY3D_AVX512
 void setup_msaa_batch_avx512(const setup_batch &in, const sample_pattern &pat, pixel_rect clip,
                              fast_setup verdict[SETUP_BATCH], msaa_triangle out[SETUP_BATCH]);

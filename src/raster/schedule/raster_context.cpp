@@ -194,10 +194,9 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
         }
     };
     // With set-up batches in the table, triangles are set up eight at a time (the batch is
-    // finished before a clipped triangle, to keep submission order); multisampled ones only
-    // on the 1/16 px grid.
+    // finished before a clipped triangle, to keep submission order).
     setup_batch batch;
-    const bool batched = kernels->setup_fast_batch && (!msaa || pattern->bits == RASTER_SUBPIXEL_BITS);
+    const bool batched = kernels->setup_fast_batch != nullptr;
     auto finish_batch = [&] {
         if (batch.count == 0) return;
         fast_setup verdict[SETUP_BATCH];
