@@ -243,8 +243,8 @@ TEST(msaa_background_keeps_the_clear_intensity) {
     }
 }
 
-// A 4-sample tile is at rest between bands (every sample depth 1 and the clear colour in
-// memory, which the AVX-512 block kernel relies on): resize puts it there, for the clear
+// A tile is at rest between bands (every sample depth 1 and the clear colour in memory,
+// which the 4× block kernel and the 8×/16× pixel kernels rely on): resize puts it there, for the clear
 // colour given, whenever the layout or the clear colour changes; and one context drawing
 // frame after frame with other clears, sample counts and canvas sizes gives each frame a
 // fresh context gives, with every kernel.
@@ -257,11 +257,10 @@ TEST(msaa_tile_at_rest_follows_the_clear_the_mode_and_the_size) {
           std::tuple{40, 4, 0.6f, false}}) {
         store.resize(width, 3, samples, clear, blocks);
         store.start(0, 3);
-        if (samples != 4) continue;
         CHECK_EQ(store.blocks(), blocks);
         for (int y = 0; y < 3; ++y)
             for (int x = 0; x < width; ++x)
-                for (int s = 0; s < 4; ++s) {
+                for (int s = 0; s < samples; ++s) {
                     const float *p = store.pixel(x, y);
                     wrong += p[s] != 1.0f;
                     wrong += p[store.colour_offset() + s] != clear;
@@ -677,7 +676,7 @@ TEST(msaa_simd_kernels_match_the_portable_kernel) {
             if (small) CHECK(clipped > 0 && clipped < drawn);
             CHECK(wide ? chunked > drawn / 2 : chunked == 0);
             // Every sample as the stores hold it: in memory when its pixel is touched or the tile
-            // is at rest (4 samples), else implicitly depth 1 and the clear colour (sample_store).
+            // is at rest, else implicitly depth 1 and the clear colour (sample_store).
             // Value s of a pixel's 2·samples: its depths, then its colours.
             auto value = [samples](const detail::sample_store &st, int x, int y, int s) {
                 const float *p = st.pixel(x, y);
@@ -698,7 +697,7 @@ TEST(msaa_simd_kernels_match_the_portable_kernel) {
             CHECK_EQ(differ, 0);
             // The resolve (SSE2: four pixels at a time, W = 41 leaves a tail) of `a` against the
             // portable loop's of `b` (the same samples), bit-identical, and against the plain
-            // mean and minimum, taken before: a 4-sample resolve puts the samples back at rest.
+            // mean and minimum, taken before: the resolve puts the samples back at rest.
             std::vector<double> mean(static_cast<std::size_t>(W * H), 0.25);
             std::vector<float> nearest(static_cast<std::size_t>(W * H), 1.0f);
             int untouched = 0;
@@ -728,11 +727,10 @@ TEST(msaa_simd_kernels_match_the_portable_kernel) {
                     const std::size_t i = static_cast<std::size_t>(y * W + x);
                     worst = std::max(worst, std::fabs(mean[i] - fast->pixels[y][x]));
                     CHECK_EQ(fast_z.at(x, y), nearest[i]);
-                    // At rest again (4 samples): every sample of every pixel (1, 0.25).
-                    if (samples == 4)
-                        for (const detail::sample_store *st : {&a, &b, &other})
-                            for (int s = 0; s < 2 * samples; ++s)
-                                not_at_rest += value(*st, x, y, s) != (s < samples ? 1.0f : 0.25f);
+                    // At rest again: every sample of every pixel (1, 0.25).
+                    for (const detail::sample_store *st : {&a, &b, &other})
+                        for (int s = 0; s < 2 * samples; ++s)
+                            not_at_rest += value(*st, x, y, s) != (s < samples ? 1.0f : 0.25f);
                 }
             CHECK_EQ(resolve_differ, 0);
             CHECK_EQ(not_at_rest, 0);

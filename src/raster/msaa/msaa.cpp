@@ -124,10 +124,10 @@ void fill_sse2(sample_store &store, const msaa_triangle &f, const sample_pattern
     fill_rows_sse2<S, Test, false>(store, f, pat, depth_write, clear_colour, y0, y1);
 }
 
-// A resolved pixel's samples back at rest (sample_store): depth 1, the clear colour.
+// A resolved pixel's S samples back at rest (sample_store): depth 1, the clear colour.
+template <int S>
 inline void restore_sse2(float *p, __m128 far, __m128 clear) {
-    _mm_store_ps(p, far);
-    _mm_store_ps(p + 4, clear);
+    for (int g = 0; g < S / 4; ++g) _mm_store_ps(p + 4 * g, far), _mm_store_ps(p + S + 4 * g, clear);
 }
 
 // resolve() for S = 4, 8, 16, the sums in resolve_sum's order.
@@ -163,7 +163,7 @@ void resolve_row_sse2(float *p, const std::uint8_t *touched, int width, float cl
                 d = select(out, far, d);
             }
             _mm_storeu_ps(colour + x, c), _mm_storeu_ps(z + x, d);
-            for (int k = 0; k < 4; ++k) restore_sse2(p + k * 2 * S, far, clear);
+            for (int k = 0; k < 4; ++k) restore_sse2<S>(p + k * 2 * S, far, clear);
         }
     }
     for (; x < width; ++x, p += 2 * S) {
@@ -192,7 +192,7 @@ void resolve_row_sse2(float *p, const std::uint8_t *touched, int width, float cl
         nearest = _mm_min_ss(nearest, _mm_shuffle_ps(nearest, nearest, 1));
         colour[x] = _mm_cvtss_f32(_mm_mul_ss(sum, inv));
         z[x] = _mm_cvtss_f32(nearest);
-        if constexpr (S == 4) restore_sse2(p, far, clear);
+        restore_sse2<S>(p, far, clear);
     }
 }
 #endif
@@ -276,10 +276,6 @@ void sample_store::resize(int width, int rows, int samples, float clear_colour, 
     rows_ = rows;
     samples_ = samples;
     blocks_ = blocks;
-    if (samples != 4) {
-        at_rest_ = false;
-        return;
-    }
     if (at_rest_ && same) return;
     // Both layouts are runs of colour_offset() depths, then as many colours (a pixel's in
     // rows, a block's in blocks).
@@ -353,7 +349,9 @@ void sample_store::resolve(canvas_t &canvas, zbuffer &depth, float clear_colour,
         }
 #endif
         for (int x = first_column; x < width_; ++x) {
-            if (!touched[x] && !at_rest_) {  // (at rest: resolved as it holds, clear or not)
+            // (An unmarked pixel holds the clear values, in memory when at rest; but the block
+            // kernel marks only a block's first pixel, so the block tile's are read.)
+            if (!touched[x] && !blocks_) {
                 colour[x] = clear_colour;
                 z[x] = 1.0f;
                 continue;
@@ -361,7 +359,7 @@ void sample_store::resolve(canvas_t &canvas, zbuffer &depth, float clear_colour,
             float *p = pixel(x, y);
             colour[x] = resolve_sum(p + colour_offset(), S) * inv;
             z[x] = *std::min_element(p, p + S);
-            if (at_rest_) initialise(p, rest_colour_);
+            initialise(p, rest_colour_);
         }
     }
 }

@@ -27,14 +27,12 @@ struct lanes8 : ymm_lanes {
     using coverage = __m256;
     static vf blend(mask m, vf a, vf b) { return _mm256_blendv_ps(a, b, m); }
     static coverage covered(vi b0, vi b1, vi b2) { return _mm256_castsi256_ps(_mm256_or_si256(_mm256_or_si256(b0, b1), b2)); }
-    static int any(coverage in) { return _mm256_movemask_ps(in) ^ 0xFF; }
-    static mask held(std::uint8_t touched) { return _mm256_castsi256_ps(_mm256_set1_epi32(-static_cast<std::int32_t>(touched))); }
     template <int Predicate>
     static mask compare(coverage in, vf z, vf stored) { return _mm256_andnot_ps(in, _mm256_cmp_ps(z, stored, Predicate)); }
     static mask all(coverage in) { return _mm256_andnot_ps(in, _mm256_castsi256_ps(_mm256_set1_epi32(-1))); }
     static vf writes(bool depth_write) { return depth_write ? _mm256_castsi256_ps(_mm256_set1_epi32(-1)) : _mm256_setzero_ps(); }
     static mask both(mask a, mask b) { return _mm256_and_ps(a, b); }
-    static void store_depths(float *p, vf writes, mask pass, mask, vf stored, vf z) { store(p, blend(both(pass, writes), stored, z)); }
+    static void store_depths(float *p, vf writes, mask pass, vf stored, vf z) { store(p, blend(both(pass, writes), stored, z)); }
     // 4× (fill_rows_quads): a pair of pixels from an even column, one aligned 64-byte line,
     // regrouped into depths and colours by two lane permutes, and back.
     static vf write_mask(bool depth_write) { return writes(depth_write); }
@@ -120,7 +118,9 @@ void resolve_rows4_avx2(float *p, const std::uint8_t *touched, int pixels, float
 // S = 8 or 16, eight pixels at a time: per pixel the sums of samples l, l + 4, … (lanes l)
 // with pixel j in one register's low half and pixel j + 4 in its high half, then
 // resolve_rows4_avx2's transpose; the SSE2 resolve's operations in its order (same bits).
-// Untouched pixels get the clear values; the samples are not put back (not at rest).
+// The tile is at rest (sample_store): eight unmarked pixels get the clear values unread,
+// otherwise all eight are read (an unmarked one sums to exactly S·clear, nearest 1: no
+// select) and put back at rest.
 template <int S>
 void resolve_rows_avx2(float *p, const std::uint8_t *touched, int pixels, float clear_colour, float *colour, float *z) {
     static_assert(S == 8 || S == 16);
@@ -153,13 +153,9 @@ void resolve_rows_avx2(float *p, const std::uint8_t *touched, int pixels, float 
         };
         __m256 c = _mm256_mul_ps(reduce(S, [](__m256 u, __m256 v) { return _mm256_add_ps(u, v); }), inv);
         __m256 d = reduce(0, [](__m256 u, __m256 v) { return _mm256_min_ps(u, v); });
-        if (t8 != 0x0101010101010101u) {
-            const __m256 out = _mm256_castsi256_ps(_mm256_cmpeq_epi32(
-                _mm256_cvtepu8_epi32(_mm_cvtsi64_si128(static_cast<long long>(t8))), _mm256_setzero_si256()));
-            c = _mm256_blendv_ps(c, clear, out);
-            d = _mm256_blendv_ps(d, far, out);
-        }
         _mm256_storeu_ps(colour + x, c), _mm256_storeu_ps(z + x, d);
+        for (int j = 0; j < 8 * 2 * S; j += 2 * S)
+            for (int g = 0; g < S; g += 8) _mm256_store_ps(p + j + g, far), _mm256_store_ps(p + j + S + g, clear);
     }
 }
 

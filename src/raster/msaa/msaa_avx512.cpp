@@ -93,19 +93,16 @@ struct registers<8> : ymm_lanes {
 };
 
 // The lane trait of msaa_lanes_fill.inc: chunkable triangles too, the next row prefetched;
-// without depth writes the untouched samples' depth 1 is put in memory.
+// without depth writes no depth is stored.
 template <int S>
 struct samples : registers<S> {
     static constexpr bool wide = true, prefetch_below = true, write_branch = true;
     using V = registers<S>;
     using mask = typename V::mask;
-    static int any(mask m) { return m; }
     static mask all(mask in) { return in; }
-    static mask held(std::uint8_t touched) { return static_cast<mask>(0u - static_cast<unsigned>(touched)); }
     static bool writes(bool depth_write) { return depth_write; }
-    static void store_depths(float *p, bool writes, mask pass, mask held, typename V::vf stored, typename V::vf z) {
-        if (writes) V::store(p, V::blend(pass, stored, z));
-        else V::store(p, static_cast<mask>(~held), V::set(1.0f));
+    static void store_depths(float *p, bool writes, mask pass, typename V::vf stored, typename V::vf z) {
+        if (writes) V::store(p, V::blend(pass, stored, z));  // (otherwise the depths stay as they are)
     }
 };
 
