@@ -52,15 +52,16 @@ const sample_pattern &pattern_of(int samples);
 using msaa_kernel = raster_simd;  // raster.h
 
 // The samples of a tile of rows [origin, origin + rows): per pixel S depths and S colours,
-// and a touched mark (untouched pixels hold the clear values implicitly, so clearing a tile
-// writes one byte per pixel). Grows only, never per frame: a tile that stays in cache while
+// and a touched mark (untouched pixels hold the clear values, so clearing a tile writes one
+// byte per pixel). Grows only, never per frame: a tile that stays in cache while
 // every triangle reaching it is drawn is what keeps multisampling cheap (antialias.md).
 //
-// A 4-sample tile is kept AT REST between bands: every sample of every pixel holds depth 1
-// and the clear colour in memory (resize establishes it, the resolve restores it), so the
-// 4× kernels use samples as loaded without asking whether a pixel was touched; the marks are
-// then only the resolve's hint of where to read (the AVX-512 block kernel marks a block's
-// first pixel only; the block resolve reads every 8 × 2 group with a mark).
+// The tile is kept AT REST between bands: every sample of every pixel holds depth 1 and the
+// clear colour in memory (resize establishes it, the resolve restores it), so the kernels use
+// samples as loaded without asking whether a pixel was touched; the marks are then only the
+// resolve's hint of where to read (the AVX-512 block kernel marks a block's first pixel only,
+// the block resolve reads every 8 × 2 group with a mark; the 8× and 16× lane kernels mark
+// every pixel they visit, covered or not).
 //
 // Two layouts. Rows: pixel after pixel, each its S depths then its S colours (at 4 samples
 // two pixels from an even column make one 64-byte line, the AVX2 4× kernel's unit). Blocks
@@ -69,8 +70,8 @@ using msaa_kernel = raster_simd;  // raster.h
 // permutes. Every kernel takes either layout (pixel, colour_offset, pixel_step).
 class sample_store {
 public:
-    // Grows the tile to rows × width pixels of `samples` (blocks: 4 samples only); with 4
-    // samples also at rest for `clear_colour`, which every later fill and resolve must use.
+    // Grows the tile to rows × width pixels of `samples` (blocks: 4 samples only), at rest
+    // for `clear_colour`, which every later fill and resolve must use.
     void resize(int width, int rows, int samples, float clear_colour, bool blocks = false);
     static bool blocks_for(msaa_kernel kernel, int samples) { return samples == 4 && kernels_for(kernel).msaa_blocks4; }
     int width() const { return width_; }
@@ -105,7 +106,7 @@ public:
     }
     void initialise(float *pixel, float clear_colour) const;
     // canvas := each pixel's mean sample colour, depth := its nearest sample depth, summed
-    // in one fixed order for every kernel (bit-identical). A 4-sample tile is left at rest.
+    // in one fixed order for every kernel (bit-identical). The tile is left at rest.
     void resolve(canvas_t &canvas, zbuffer &depth, float clear_colour, msaa_kernel kernel);
 
 private:
@@ -116,7 +117,7 @@ private:
     }
     int width_ = 0, stride_ = 0, rows_ = 0, samples_ = 1, origin_ = 0, end_ = 0;
     bool blocks_ = false;
-    bool at_rest_ = false;     // every sample holds (1, rest_colour_): 4-sample tiles only
+    bool at_rest_ = false;     // every sample holds (1, rest_colour_) outside a band's drawing
     float rest_colour_ = 0.0f;
     std::vector<float> data_;
     float *base_ = nullptr;  // data_ from its first 64-byte boundary

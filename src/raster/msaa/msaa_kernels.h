@@ -155,7 +155,7 @@ msaa_row_fill fill_function_avx2(int samples, depth_func test);
 // The 4-sample resolve of a row's first `pixels` columns (a multiple of 8) in the rows
 // layout, in the SSE2 resolve's order (same bits), pixels put back at rest.
 void resolve_rows4_avx2(float *p, const std::uint8_t *touched, int pixels, float clear_colour, float *colour, float *z);
-// The 8- and 16-sample resolves likewise (the samples left as they are).
+// The 8- and 16-sample resolves likewise (pixels put back at rest).
 void resolve_rows8_avx2(float *p, const std::uint8_t *touched, int pixels, float clear_colour, float *colour, float *z);
 void resolve_rows16_avx2(float *p, const std::uint8_t *touched, int pixels, float clear_colour, float *colour, float *z);
 #endif
