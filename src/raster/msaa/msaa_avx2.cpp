@@ -22,7 +22,7 @@ namespace {
 // The lane trait of msaa_lanes_fill.inc: masks as vectors (blendv reads the sign bits),
 // coverage the OR of the three edge values (sign set: out); narrow triangles, no prefetch.
 struct lanes8 : ymm_lanes {
-    static constexpr bool wide = false, prefetch_below = false, write_branch = false;
+    static constexpr bool wide = false, prefetch_below = false, write_branch = false, column_terms = true;
     using mask = __m256;
     using coverage = __m256;
     static vf blend(mask m, vf a, vf b) { return _mm256_blendv_ps(a, b, m); }
