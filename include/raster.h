@@ -317,8 +317,8 @@ enum class shading { flat, gouraud, phong };
 // end_frame(), after every opaque one, sorted back to front by mean depth (stable), blended
 // dst = alpha·src + (1 − alpha)·dst, depth tested but not written.
 struct draw_params {
-    mat4_t model;            // object → world
-    mat4_t view_projection;  // world → clip (projection · view)
+    mat4_t model = mat4_identity();            // object → world (default: identity)
+    mat4_t view_projection = mat4_identity();  // world → clip, projection · view (default: identity)
     light_rig lights;        // make_light_rig(...)
     material surface;        // diffuse / specular / shininess (default: Lambert, no highlight)
     shading shade = shading::gouraud;

@@ -2,6 +2,8 @@
 // against the analytic value, back-face culling, near-plane clipping against a
 // double-precision ray cast, thread-count invariance, texture sampling, transparency.
 #include <cmath>
+#include <cstring>
+#include <new>
 #include <random>
 #include <thread>
 #include <vector>
@@ -318,4 +320,19 @@ TEST(texture_sampling_nearest_bilinear_wrap_clamp) {
     CHECK_NEAR(texture_sample(t, 0.0f, 0.25f, texture_filter::bilinear, texture_wrap::repeat), 0.5, 1e-6);
     CHECK_EQ(texture_sample(t, NAN, 0.5f, texture_filter::bilinear, texture_wrap::repeat), 0.0f);
     CHECK_EQ(texture_sample(t, 1e30f, 0.5f, texture_filter::nearest, texture_wrap::repeat) >= 0.0f, true);
+}
+
+// `draw_params p;` must not leave the matrices to whatever the memory held: a draw that sets
+// only view_projection draws the mesh where it is (a default model of garbage drew a
+// different frame now and then, which tests/alloc_failure_test.cpp caught).
+TEST(draw_params_default_to_identity_matrices) {
+    alignas(tiny3d::draw_params) unsigned char memory[sizeof(tiny3d::draw_params)];
+    std::memset(memory, 0x7f, sizeof memory);
+    tiny3d::draw_params *p = new (memory) tiny3d::draw_params;  // default-initialised
+    for (int i = 0; i < 16; ++i) {
+        const float identity = i % 5 == 0 ? 1.0f : 0.0f;  // column-major diagonal: 0, 5, 10, 15
+        CHECK(p->model.m[i] == identity);
+        CHECK(p->view_projection.m[i] == identity);
+    }
+    p->~draw_params();
 }
