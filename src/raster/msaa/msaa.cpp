@@ -7,6 +7,7 @@
 #include <cstring>
 #include <numeric>
 #include <string>
+#include <type_traits>
 
 #include "../../simd_config.h"
 
@@ -317,34 +318,17 @@ void sample_store::resolve(canvas_t &canvas, zbuffer &depth, float clear_colour,
         const std::uint8_t *touched = touched_row(y);
         float *colour = canvas.pixels[y], *z = depth.row(y);
 #ifdef TINY3D_SSE2
+        // A row's first multiple of 8 columns by the table's eight-pixel resolve (if it has
+        // one for N samples), the rest by SSE2's.
+        const auto simd_row = [&]<int N>(std::integral_constant<int, N>, auto *eight_pixels) {
+            const int wide = eight_pixels ? width_ / 8 * 8 : 0;
+            if (wide > 0) eight_pixels(pixel(0, y), touched, wide, clear_colour, colour, z);
+            resolve_row_sse2<N>(pixel(wide, y), touched + wide, width_ - wide, clear_colour, colour + wide, z + wide);
+        };
         switch (!k.resolve_rows_simd || blocks_ ? 0 : S) {
-            case 4:
-                if (k.resolve_rows4) {  // then the SSE2 resolve for the last columns
-                    const int wide = width_ / 8 * 8;
-                    k.resolve_rows4(pixel(0, y), touched, wide, clear_colour, colour, z);
-                    resolve_row_sse2<4>(pixel(wide, y), touched + wide, width_ - wide, clear_colour, colour + wide, z + wide);
-                } else {
-                    resolve_row_sse2<4>(pixel(0, y), touched, width_, clear_colour, colour, z);
-                }
-                continue;
-            case 8:
-                if (k.resolve_rows8) {  // then the SSE2 resolve for the last columns
-                    const int wide = width_ / 8 * 8;
-                    k.resolve_rows8(pixel(0, y), touched, wide, clear_colour, colour, z);
-                    resolve_row_sse2<8>(pixel(wide, y), touched + wide, width_ - wide, clear_colour, colour + wide, z + wide);
-                } else {
-                    resolve_row_sse2<8>(pixel(0, y), touched, width_, clear_colour, colour, z);
-                }
-                continue;
-            case 16:
-                if (k.resolve_rows16) {
-                    const int wide = width_ / 8 * 8;
-                    k.resolve_rows16(pixel(0, y), touched, wide, clear_colour, colour, z);
-                    resolve_row_sse2<16>(pixel(wide, y), touched + wide, width_ - wide, clear_colour, colour + wide, z + wide);
-                } else {
-                    resolve_row_sse2<16>(pixel(0, y), touched, width_, clear_colour, colour, z);
-                }
-                continue;
+            case 4: simd_row(std::integral_constant<int, 4>{}, k.resolve_rows4); continue;
+            case 8: simd_row(std::integral_constant<int, 8>{}, k.resolve_rows8); continue;
+            case 16: simd_row(std::integral_constant<int, 16>{}, k.resolve_rows16); continue;
             default: break;
         }
 #endif
