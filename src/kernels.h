@@ -49,7 +49,7 @@ inline constexpr int BATCH_LANES = 8;  // = SETUP_BATCH (the set-up batches' lan
 
 // One multisample row fill, its sample count and depth test chosen (msaa_fill_for).
 using msaa_row_fill = void (*)(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
-                               bool depth_write, float clear_colour, int y0, int y1);
+                               bool depth_write, int y0, int y1);
 
 // The kernels of one instruction set. A null entry: the set has no kernel of its own there,
 // and the caller runs the family's portable reference (named beside each entry).

@@ -506,7 +506,7 @@ detail::sample_store fill_all(const std::vector<std::array<std::int32_t, 6>> &tr
         if (e.area2 == 0 ||
             !detail::make_msaa_triangle(X, Y, detail::snapped_area2(X, Y), pat, {0, 0, W, H}, depth, intensity, f))
             continue;
-        detail::msaa_fill_for(kernel, pat.count, depth_func::less)(store, f, pat, depth_func::less, true, 0.0f, 0, H);
+        detail::msaa_fill_for(kernel, pat.count, depth_func::less)(store, f, pat, depth_func::less, true, 0, H);
     }
     return store;
 }
@@ -666,9 +666,9 @@ TEST(msaa_simd_kernels_match_the_portable_kernel) {
                                                 depth_func::never};
                 const depth_func test = t % 7 ? depth_func::less : tests[(t / 7) % 7];
                 const bool write = t % 5 != 4;
-                detail::msaa_fill_for(kernels[kernel], pat.count, test)(a, f, pat, test, write, 0.25f, 0, H);
-                detail::msaa_fill_for(kernels[kernel], pat.count, test)(other, f, pat, test, write, 0.25f, 0, H);
-                detail::msaa_fill_for(kernels[0], pat.count, test)(b, f, pat, test, write, 0.25f, 0, H);
+                detail::msaa_fill_for(kernels[kernel], pat.count, test)(a, f, pat, test, write, 0, H);
+                detail::msaa_fill_for(kernels[kernel], pat.count, test)(other, f, pat, test, write, 0, H);
+                detail::msaa_fill_for(kernels[0], pat.count, test)(b, f, pat, test, write, 0, H);
             }
             CHECK(small ? narrow_boxes == drawn : narrow_boxes < drawn / 4);
             // (small: boxes cut by the clip and boxes not, which the 4× block kernel walks without

@@ -76,7 +76,7 @@ inline float resolve_sum(const float *c, int S) {
 
 // The portable kernel: 64-bit edges, one sample at a time.
 void fill_rows_portable(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
-                        bool depth_write, float clear_colour, int y0, int y1) {
+                        bool depth_write, int y0, int y1) {
     const sample_offsets off(f, pat);
     const int S = pat.count;
     float dz[MSAA_MAX_SAMPLES];
@@ -95,7 +95,7 @@ void fill_rows_portable(sample_store &store, const msaa_triangle &f, const sampl
                 mask |= static_cast<unsigned>(in) << s;
             }
             if (!mask) continue;
-            float *p = store.touch(f.min_x + x, y, clear_colour);
+            float *p = store.touch(f.min_x + x, y);
             const float zc = zr + f.zdx * static_cast<float>(x), shade = clamp01(ir + f.idx * static_cast<float>(x));
             float *colours = p + store.colour_offset();
             for (int s = 0; s < S; ++s) {
@@ -114,15 +114,15 @@ void fill_rows_portable(sample_store &store, const msaa_triangle &f, const sampl
 // msaa_fill_for's SSE2 functions: the SSE2 kernel where f is chunkable, else the portable one.
 template <int S, depth_func Test>
 void fill_sse2(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test, bool depth_write,
-               float clear_colour, int y0, int y1) {
+               int y0, int y1) {
     if (!clamp_to_rows(f, y0, y1)) return;
-    if (!f.chunkable) return fill_rows_portable(store, f, pat, test, depth_write, clear_colour, y0, y1);
+    if (!f.chunkable) return fill_rows_portable(store, f, pat, test, depth_write, y0, y1);
     if constexpr (S == 4) {
         if (f.narrow && store.blocks()) return fill_rows_sse2_narrow4<Test, true>(store, f, pat, depth_write, y0, y1);
         if (f.narrow) return fill_rows_sse2_narrow4<Test, false>(store, f, pat, depth_write, y0, y1);
-        if (store.blocks()) return fill_rows_sse2<4, Test, true>(store, f, pat, depth_write, clear_colour, y0, y1);
+        if (store.blocks()) return fill_rows_sse2<4, Test, true>(store, f, pat, depth_write, y0, y1);
     }
-    fill_rows_sse2<S, Test, false>(store, f, pat, depth_write, clear_colour, y0, y1);
+    fill_rows_sse2<S, Test, false>(store, f, pat, depth_write, y0, y1);
 }
 
 // A resolved pixel's S samples back at rest (sample_store): depth 1, the clear colour.
@@ -230,11 +230,11 @@ bool make_msaa_triangle_on(const std::int32_t X[3], const std::int32_t Y[3], std
     return true;
 }
 
-void fill_nothing(sample_store &, const msaa_triangle &, const sample_pattern &, depth_func, bool, float, int, int) {}
+void fill_nothing(sample_store &, const msaa_triangle &, const sample_pattern &, depth_func, bool, int, int) {}
 
 void fill_portable(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
-                   bool depth_write, float clear_colour, int y0, int y1) {
-    if (clamp_to_rows(f, y0, y1)) fill_rows_portable(store, f, pat, test, depth_write, clear_colour, y0, y1);
+                   bool depth_write, int y0, int y1) {
+    if (clamp_to_rows(f, y0, y1)) fill_rows_portable(store, f, pat, test, depth_write, y0, y1);
 }
 
 }  // namespace

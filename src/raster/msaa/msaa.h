@@ -96,13 +96,10 @@ public:
     int origin() const { return origin_; }
     std::uint8_t *touched_row(int y) { return touched_.data() + static_cast<std::size_t>(y - origin_) * stride_; }
     bool at_rest() const { return at_rest_; }
-    // Pixel (x, y)'s samples, marked touched (initialised on a first touch unless at rest).
-    float *touch(int x, int y, float clear_colour) {
-        std::uint8_t &mark = touched_row(y)[x];
-        float *p = pixel(x, y);
-        if (!mark && !at_rest_) initialise(p, clear_colour);
-        mark = 1;
-        return p;
+    // Pixel (x, y)'s samples (at rest since resize: used as they are), marked touched.
+    float *touch(int x, int y) {
+        touched_row(y)[x] = 1;
+        return pixel(x, y);
     }
     void initialise(float *pixel, float clear_colour) const;
     // canvas := each pixel's mean sample colour, depth := its nearest sample depth, summed

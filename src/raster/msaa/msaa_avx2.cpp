@@ -61,15 +61,15 @@ struct lanes8 : ymm_lanes {
 
 template <int S, depth_func Test>
 void fill_avx2(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test, bool depth_write,
-               float clear_colour, int y0, int y1) {
+               int y0, int y1) {
     if (!f.narrow || store.blocks())  // (lanes8's 4× steps walk the rows layout)
-        return msaa_fill_for(msaa_kernel::sse2, S, test)(store, f, pat, test, depth_write, clear_colour, y0, y1);
+        return msaa_fill_for(msaa_kernel::sse2, S, test)(store, f, pat, test, depth_write, y0, y1);
     if (!clamp_to_rows(f, y0, y1)) return;
     if constexpr (S == 4) {
         if (f.clipped_x) fill_rows_quads<lanes8, Test, true>(store, f, pat, depth_write, y0, y1);
         else fill_rows_quads<lanes8, Test, false>(store, f, pat, depth_write, y0, y1);
     }
-    else fill_rows_pixels<lanes8, S, Test>(store, f, pat, depth_write, clear_colour, y0, y1);
+    else fill_rows_pixels<lanes8, S, Test>(store, f, pat, depth_write, y0, y1);
 }
 
 }  // namespace

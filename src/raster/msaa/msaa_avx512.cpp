@@ -110,17 +110,17 @@ struct samples : registers<S> {
 
 template <int S, depth_func Test>
 void fill_avx512(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
-                 bool depth_write, float clear_colour, int y0, int y1) {
+                 bool depth_write, int y0, int y1) {
     if (!f.chunkable)
-        return msaa_fill_for(msaa_kernel::portable, S, test)(store, f, pat, test, depth_write, clear_colour, y0, y1);
+        return msaa_fill_for(msaa_kernel::portable, S, test)(store, f, pat, test, depth_write, y0, y1);
     if (!clamp_to_rows(f, y0, y1)) return;
     if constexpr (S == 4) {
-        if (!store.blocks()) fill_rows_sse2<4, Test, false>(store, f, pat, depth_write, clear_colour, y0, y1);
+        if (!store.blocks()) fill_rows_sse2<4, Test, false>(store, f, pat, depth_write, y0, y1);
         else if (f.narrow && f.clipped_x) fill_rows_quads<samples<16>, Test, true>(store, f, pat, depth_write, y0, y1);
         else if (f.narrow) fill_rows_quads<samples<16>, Test, false>(store, f, pat, depth_write, y0, y1);
-        else fill_rows_sse2<4, Test, true>(store, f, pat, depth_write, clear_colour, y0, y1);
+        else fill_rows_sse2<4, Test, true>(store, f, pat, depth_write, y0, y1);
     } else {
-        fill_rows_pixels<samples<S>, S, Test>(store, f, pat, depth_write, clear_colour, y0, y1);
+        fill_rows_pixels<samples<S>, S, Test>(store, f, pat, depth_write, y0, y1);
     }
 }
 

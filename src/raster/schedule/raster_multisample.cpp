@@ -55,16 +55,16 @@ void render_context::impl::draw_multisampled_band(int band, sample_store &tile) 
             }
             if (index & GENERIC_BIN) {
                 const generic_triangle &g = from.generic[index & ~GENERIC_BIN];
-                draw_generic_samples(tile, *pattern, clear_intensity, states[g.state], g, y0, y1);
+                draw_generic_samples(tile, *pattern, states[g.state], g, y0, y1);
                 continue;
             }
             const msaa_triangle &f = from.msaa[index];
             const depth_func test = states[f.state].depth;
-            fill_for[static_cast<int>(test)](tile, f, *pattern, test, true, clear_intensity, y0, y1);
+            fill_for[static_cast<int>(test)](tile, f, *pattern, test, true, y0, y1);
         }
     }
     for (const generic_triangle &g : translucent)
-        draw_generic_samples(tile, *pattern, clear_intensity, states[g.state], g, y0, y1);
+        draw_generic_samples(tile, *pattern, states[g.state], g, y0, y1);
     tile.resolve(*target, depth, clear_intensity, kernels->simd);
 }
 

@@ -113,7 +113,7 @@ void draw_generic_rows(canvas_t &target, zbuffer &depth, const draw_params &p, c
     });
 }
 
-void draw_generic_samples(sample_store &tile, const sample_pattern &pat, float clear_colour, const draw_params &p,
+void draw_generic_samples(sample_store &tile, const sample_pattern &pat, const draw_params &p,
                           const generic_triangle &g, int y0, int y1) {
     const pixel_rect band{0, y0, tile.width(), y1};
     std::int32_t X[3], Y[3];  // on the pattern's grid, as emit() binned it
@@ -137,7 +137,7 @@ void draw_generic_samples(sample_store &tile, const sample_pattern &pat, float c
         const float l1 = static_cast<float>(static_cast<double>(t.c[1] + t.a[1] * x + t.b[1] * y) * inv_area);
         const float l2 = 1.0f - l0 - l1;
         const float zc = depth_at(g, l1, l2);
-        float *px = tile.touch(x, y, clear_colour);
+        float *px = tile.touch(x, y);
         bool shaded = false;
         float shade = 0.0f;
         for (int k = 0; k < S; ++k) {

@@ -72,7 +72,7 @@ generic_triangle make_generic_triangle(const screen_vertex v[3], const clip_vert
 void draw_generic_rows(canvas_t &target, zbuffer &depth, const draw_params &p, const generic_triangle &g, int y0,
                        int y1);
 // The same into a tile of samples: coverage and depth per sample, the shade once per pixel.
-void draw_generic_samples(sample_store &tile, const sample_pattern &pat, float clear_colour, const draw_params &p,
+void draw_generic_samples(sample_store &tile, const sample_pattern &pat, const draw_params &p,
                           const generic_triangle &g, int y0, int y1);
 
 // Multisampled bands of band_rows(samples) rows: one band's samples stay in the core's
