@@ -196,7 +196,7 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
     // With set-up batches in the table, triangles are set up eight at a time (the batch is
     // finished before a clipped triangle, to keep submission order).
     setup_batch batch;
-    const bool batched = kernels->setup_fast_batch != nullptr;
+    const bool batched = msaa ? kernels->setup_msaa_batch != nullptr : kernels->setup_fast_batch != nullptr;
     auto finish_batch = [&] {
         if (batch.count == 0) return;
         fast_setup verdict[SETUP_BATCH];
