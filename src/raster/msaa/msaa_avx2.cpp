@@ -78,52 +78,15 @@ msaa_row_fill fill_function_avx2(int samples, depth_func test) {
     return fill_function(samples, test, [](auto s, auto t) -> msaa_row_fill { return &fill_avx2<s.value, t.value>; });
 }
 
-// Eight pixels at a time: pixels j and j + 4 in one register's two halves, then the SSE2
-// resolve's transpose on both halves at once (per pixel (s0 + s2) + (s1 + s3), the nearest
-// sample, the same operations in the same order); untouched pixels get the clear values.
-void resolve_rows4_avx2(float *p, const std::uint8_t *touched, int pixels, float clear_colour, float *colour, float *z) {
-    const __m256 quarter = _mm256_set1_ps(0.25f), clear = _mm256_set1_ps(clear_colour), far = _mm256_set1_ps(1.0f);
-    const __m256 rest = _mm256_blend_ps(far, clear, 0xF0);  // a pixel at rest: four depths, four colours
-    for (int x = 0; x < pixels; x += 8, p += 8 * 8) {
-        std::uint64_t t8;
-        std::memcpy(&t8, touched + x, sizeof t8);
-        if (t8 == 0) {
-            _mm256_storeu_ps(colour + x, clear), _mm256_storeu_ps(z + x, far);
-            continue;
-        }
-        // (pixel j's depths or colours, pixel j + 4's)
-        auto pair = [p](int j, int offset) { return _mm256_loadu2_m128(p + 8 * (j + 4) + offset, p + 8 * j + offset); };
-        auto reduce = [&](int offset, auto op) {
-            const __m256 q0 = pair(0, offset), q1 = pair(1, offset), q2 = pair(2, offset), q3 = pair(3, offset);
-            const __m256 v01 = op(_mm256_unpacklo_ps(q0, q1), _mm256_unpackhi_ps(q0, q1));
-            const __m256 v23 = op(_mm256_unpacklo_ps(q2, q3), _mm256_unpackhi_ps(q2, q3));
-            return op(_mm256_castpd_ps(_mm256_unpacklo_pd(_mm256_castps_pd(v01), _mm256_castps_pd(v23))),
-                      _mm256_castpd_ps(_mm256_unpackhi_pd(_mm256_castps_pd(v01), _mm256_castps_pd(v23))));
-        };
-        __m256 c = _mm256_mul_ps(reduce(4, [](__m256 u, __m256 v) { return _mm256_add_ps(u, v); }), quarter);
-        __m256 d = reduce(0, [](__m256 u, __m256 v) { return _mm256_min_ps(u, v); });
-        if (t8 != 0x0101010101010101u) {
-            const __m256 out = _mm256_castsi256_ps(_mm256_cmpeq_epi32(
-                _mm256_cvtepu8_epi32(_mm_cvtsi64_si128(static_cast<long long>(t8))), _mm256_setzero_si256()));
-            c = _mm256_blendv_ps(c, clear, out);
-            d = _mm256_blendv_ps(d, far, out);
-        }
-        _mm256_storeu_ps(colour + x, c), _mm256_storeu_ps(z + x, d);
-        _mm256_store_ps(p, rest), _mm256_store_ps(p + 8, rest), _mm256_store_ps(p + 16, rest);
-        _mm256_store_ps(p + 24, rest), _mm256_store_ps(p + 32, rest), _mm256_store_ps(p + 40, rest);
-        _mm256_store_ps(p + 48, rest), _mm256_store_ps(p + 56, rest);
-    }
-}
-
-// S = 8 or 16, eight pixels at a time: per pixel the sums of samples l, l + 4, … (lanes l)
-// with pixel j in one register's low half and pixel j + 4 in its high half, then
-// resolve_rows4_avx2's transpose; the SSE2 resolve's operations in its order (same bits).
-// The tile is at rest (sample_store): eight unmarked pixels get the clear values unread,
-// otherwise all eight are read (an unmarked one sums to exactly S·clear, nearest 1: no
-// select) and put back at rest.
+// S = 4, 8 or 16, eight pixels at a time: per pixel the sums of samples l, l + 4, … (lanes
+// l) with pixel j in one register's low half and pixel j + 4 in its high half, then the
+// SSE2 resolve's transpose on both halves at once (per pixel (l0 + l2) + (l1 + l3), the
+// nearest sample): its operations in its order (same bits). The tile is at rest
+// (sample_store): eight unmarked pixels get the clear values unread, otherwise all eight
+// are read (an unmarked one sums to exactly S·clear, nearest 1: no select) and put back at
+// rest.
 template <int S>
 void resolve_rows_avx2(float *p, const std::uint8_t *touched, int pixels, float clear_colour, float *colour, float *z) {
-    static_assert(S == 8 || S == 16);
     const __m256 inv = _mm256_set1_ps(1.0f / S), clear = _mm256_set1_ps(clear_colour), far = _mm256_set1_ps(1.0f);
     for (int x = 0; x < pixels; x += 8, p += 8 * 2 * S) {
         std::uint64_t t8;
@@ -135,13 +98,16 @@ void resolve_rows_avx2(float *p, const std::uint8_t *touched, int pixels, float 
         // Pixels j and j + 4: op over their groups of four at `offset` (c[l], c[l + 4], … in turn).
         auto group = [p](int j, int offset, auto op) {
             const float *a = p + 2 * S * j + offset, *b = p + 2 * S * (j + 4) + offset;
-            const __m256 u = _mm256_loadu_ps(a), v = _mm256_loadu_ps(b);
-            __m256 r = op(_mm256_permute2f128_ps(u, v, 0x20), _mm256_permute2f128_ps(u, v, 0x31));
-            if constexpr (S == 16) {
-                const __m256 u2 = _mm256_loadu_ps(a + 8), v2 = _mm256_loadu_ps(b + 8);
-                r = op(op(r, _mm256_permute2f128_ps(u2, v2, 0x20)), _mm256_permute2f128_ps(u2, v2, 0x31));
+            if constexpr (S == 4) return _mm256_loadu2_m128(b, a);
+            else {
+                const __m256 u = _mm256_loadu_ps(a), v = _mm256_loadu_ps(b);
+                __m256 r = op(_mm256_permute2f128_ps(u, v, 0x20), _mm256_permute2f128_ps(u, v, 0x31));
+                if constexpr (S == 16) {
+                    const __m256 u2 = _mm256_loadu_ps(a + 8), v2 = _mm256_loadu_ps(b + 8);
+                    r = op(op(r, _mm256_permute2f128_ps(u2, v2, 0x20)), _mm256_permute2f128_ps(u2, v2, 0x31));
+                }
+                return r;
             }
-            return r;
         };
         auto reduce = [&](int offset, auto op) {
             const __m256 q0 = group(0, offset, op), q1 = group(1, offset, op), q2 = group(2, offset, op),
@@ -154,9 +120,17 @@ void resolve_rows_avx2(float *p, const std::uint8_t *touched, int pixels, float 
         __m256 c = _mm256_mul_ps(reduce(S, [](__m256 u, __m256 v) { return _mm256_add_ps(u, v); }), inv);
         __m256 d = reduce(0, [](__m256 u, __m256 v) { return _mm256_min_ps(u, v); });
         _mm256_storeu_ps(colour + x, c), _mm256_storeu_ps(z + x, d);
-        for (int j = 0; j < 8 * 2 * S; j += 2 * S)
-            for (int g = 0; g < S; g += 8) _mm256_store_ps(p + j + g, far), _mm256_store_ps(p + j + S + g, clear);
+        if constexpr (S == 4)  // a pixel's four depths and four colours in one register
+#pragma GCC unroll 8
+            for (int j = 0; j < 8 * 2 * S; j += 2 * S) _mm256_store_ps(p + j, _mm256_blend_ps(far, clear, 0xF0));
+        else
+            for (int j = 0; j < 8 * 2 * S; j += 2 * S)
+                for (int g = 0; g < S; g += 8) _mm256_store_ps(p + j + g, far), _mm256_store_ps(p + j + S + g, clear);
     }
+}
+
+void resolve_rows4_avx2(float *p, const std::uint8_t *touched, int pixels, float clear_colour, float *colour, float *z) {
+    resolve_rows_avx2<4>(p, touched, pixels, clear_colour, colour, z);
 }
 
 void resolve_rows8_avx2(float *p, const std::uint8_t *touched, int pixels, float clear_colour, float *colour, float *z) {
