@@ -270,7 +270,7 @@ void sample_store::resize(int width, int rows, int samples, float clear_colour, 
     rows_ = rows;
     samples_ = samples;
     blocks_ = blocks;
-    if (at_rest_ && same) return;
+    if (same) return;  // (at rest already: a first resize has base_ != before)
     // Both layouts are runs of colour_offset() depths, then as many colours (a pixel's in
     // rows, a block's in blocks).
     const std::size_t run = static_cast<std::size_t>(colour_offset());
@@ -279,7 +279,6 @@ void sample_store::resize(int width, int rows, int samples, float clear_colour, 
         std::fill_n(p + run, run, clear_colour);
     }
     rest_colour_ = clear_colour;
-    at_rest_ = true;
 }
 
 void sample_store::start(int y0, int y1) {

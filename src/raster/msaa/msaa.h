@@ -95,7 +95,6 @@ public:
     }
     int origin() const { return origin_; }
     std::uint8_t *touched_row(int y) { return touched_.data() + static_cast<std::size_t>(y - origin_) * stride_; }
-    bool at_rest() const { return at_rest_; }
     // Pixel (x, y)'s samples (at rest since resize: used as they are), marked touched.
     float *touch(int x, int y) {
         touched_row(y)[x] = 1;
@@ -114,8 +113,7 @@ private:
     }
     int width_ = 0, stride_ = 0, rows_ = 0, samples_ = 1, origin_ = 0, end_ = 0;
     bool blocks_ = false;
-    bool at_rest_ = false;     // every sample holds (1, rest_colour_) outside a band's drawing
-    float rest_colour_ = 0.0f;
+    float rest_colour_ = 0.0f;  // every sample holds (1, rest_colour_) outside a band's drawing
     std::vector<float> data_;
     float *base_ = nullptr;  // data_ from its first 64-byte boundary
     std::vector<std::uint8_t> touched_;
