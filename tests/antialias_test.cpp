@@ -745,7 +745,8 @@ TEST(msaa_simd_kernels_match_the_portable_kernel) {
 // The 4× SIMD kernels' row spans without divisions (sample_row_spans) against the exact
 // ones (edge_extremes::row): every row's span holds the exact one and is at most one column
 // wider at each end, for narrow triangles of every size up to the narrow limit (the float
-// quotient's error grows with the box) and at every sample pattern on the 1/16 px grid.
+// quotient's error grows with the box) and at every sample pattern on the 1/16 px grid; four
+// rows at a time (next4) the same spans as one at a time.
 TEST(msaa_row_spans_hold_the_exact_spans) {
     const pixel_rect clip{0, 0, 2100, 2100};
     int rows = 0, wider = 0;
@@ -777,11 +778,21 @@ TEST(msaa_row_spans_hold_the_exact_spans) {
                 }
                 best[k] = off.hi[k];
             }
-            detail::sample_row_spans spans;
+            detail::sample_row_spans spans, spans4;
             spans.start(f, best, 0);
-            for (int y = f.min_y; y <= f.max_y; ++y) {
+            spans4.start(f, best, 0);
+            alignas(16) std::int32_t first4[4], last4[4];
+            for (int y = f.min_y, r = 4; y <= f.max_y; ++y, ++r) {
                 int first, last, lo, hi;
                 spans.next(first, last);
+                if (r == 4) {
+                    __m128i a, b, t[3];
+                    spans4.next4(a, b, t);
+                    _mm_store_si128(reinterpret_cast<__m128i *>(first4), a);
+                    _mm_store_si128(reinterpret_cast<__m128i *>(last4), b);
+                    r = 0;
+                }
+                CHECK(first4[r] == first && last4[r] == last);
                 std::int64_t v[3];
                 if (!off.row(f, y, v, lo, hi)) continue;
                 ++rows;

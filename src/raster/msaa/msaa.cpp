@@ -118,8 +118,12 @@ void fill_sse2(sample_store &store, const msaa_triangle &f, const sample_pattern
     if (!clamp_to_rows(f, y0, y1)) return;
     if (!f.chunkable) return fill_rows_portable(store, f, pat, test, depth_write, y0, y1);
     if constexpr (S == 4) {
-        if (f.narrow && store.blocks()) return fill_rows_sse2_narrow4<Test, true>(store, f, pat, depth_write, y0, y1);
-        if (f.narrow) return fill_rows_sse2_narrow4<Test, false>(store, f, pat, depth_write, y0, y1);
+        if (f.narrow) {  // (a function per depth-write mode: no select of the depth written)
+            if (store.blocks() && depth_write) return fill_rows_sse2_narrow4<Test, true, true>(store, f, pat, y0, y1);
+            if (store.blocks()) return fill_rows_sse2_narrow4<Test, true, false>(store, f, pat, y0, y1);
+            if (depth_write) return fill_rows_sse2_narrow4<Test, false, true>(store, f, pat, y0, y1);
+            return fill_rows_sse2_narrow4<Test, false, false>(store, f, pat, y0, y1);
+        }
         if (store.blocks()) return fill_rows_sse2<4, Test, true>(store, f, pat, depth_write, y0, y1);
     }
     fill_rows_sse2<S, Test, false>(store, f, pat, depth_write, y0, y1);

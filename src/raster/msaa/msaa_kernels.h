@@ -43,6 +43,12 @@ struct edge_extremes {
 };
 
 #ifdef TINY3D_SSE2
+// The low 32 bits of x · y lane by lane (SSE2 has no 32-bit multiply).
+inline __m128i mullo32(__m128i x, __m128i y) {
+    const __m128i even = _mm_mul_epu32(x, y), odd = _mm_mul_epu32(_mm_srli_epi64(x, 32), _mm_srli_epi64(y, 32));
+    return _mm_unpacklo_epi32(_mm_shuffle_epi32(even, 0x08), _mm_shuffle_epi32(odd, 0x08));
+}
+
 // A narrow triangle's rows' column spans (from min_x) without the divisions of
 // edge_extremes::row: per edge (one per lane), the best sample's value t at column 0 of a
 // row (exact in 32 bits) times 1/a in float, the pixels where t + a·x ≥ 0 may hold. The
@@ -52,7 +58,7 @@ struct edge_extremes {
 class sample_row_spans {
 public:
     // Rows from f.min_y + dy0 on; best[k]: edge k's greatest sample offset.
-    void start(const msaa_triangle &f, const std::int64_t best[3], int dy0) {
+    __attribute__((always_inline)) void start(const msaa_triangle &f, const std::int64_t best[3], int dy0) {
         auto t0 = [&](int k) { return static_cast<std::int32_t>(f.e[k] + f.b[k] * dy0 + best[k]); };
         t_ = _mm_setr_epi32(t0(0), t0(1), t0(2), 0);
         down_ = _mm_setr_epi32(static_cast<std::int32_t>(f.b[0]), static_cast<std::int32_t>(f.b[1]),
@@ -86,6 +92,31 @@ public:
         first = OFFSET - _mm_cvtsi128_si32(q);
         last = _mm_cvtsi128_si32(_mm_shuffle_epi32(q, 1)) - OFFSET;
         return row;
+    }
+
+    // The next four rows' spans at once, row r in lane r of first and last: next()'s float
+    // operations lane by lane (an object uses one of next() and next4()). t[k]: edge k's t of
+    // the four rows.
+    __attribute__((always_inline)) void next4(__m128i &first, __m128i &last, __m128i t[3]) {
+        const __m128 rows = _mm_setr_ps(0.0f, 1.0f, 2.0f, 3.0f);
+        __m128 lo = _mm_set1_ps(__builtin_inff()), hi = lo;
+        auto edge = [&]<int K>(std::integral_constant<int, K>) {
+            constexpr int lane = K * 0x55;
+            const __m128i down = _mm_shuffle_epi32(down_, lane);
+            // (b·r is exact in float: |b| < 2^20)
+            t[K] = _mm_add_epi32(_mm_shuffle_epi32(t_, lane), _mm_cvttps_epi32(_mm_mul_ps(_mm_cvtepi32_ps(down), rows)));
+            const __m128 tf = _mm_cvtepi32_ps(t[K]);
+            lo = _mm_min_ps(lo, _mm_add_ps(_mm_mul_ps(tf, _mm_shuffle_ps(up_, up_, lane)), _mm_shuffle_ps(up_add_, up_add_, lane)));
+            hi = _mm_min_ps(hi, _mm_add_ps(_mm_mul_ps(tf, _mm_shuffle_ps(down_mul_, down_mul_, lane)),
+                                           _mm_shuffle_ps(down_add_, down_add_, lane)));
+        };
+        edge(std::integral_constant<int, 0>{}), edge(std::integral_constant<int, 1>{}), edge(std::integral_constant<int, 2>{});
+        t_ = _mm_add_epi32(t_, _mm_slli_epi32(down_, 2));  // four rows on
+        const __m128i offset = _mm_set1_epi32(OFFSET);
+        lo = _mm_min_ps(_mm_max_ps(lo, _mm_shuffle_ps(low_, low_, 0x00)), _mm_shuffle_ps(high_, high_, 0x00));
+        hi = _mm_min_ps(_mm_max_ps(hi, _mm_shuffle_ps(low_, low_, 0x55)), _mm_shuffle_ps(high_, high_, 0x55));
+        first = _mm_sub_epi32(offset, _mm_cvttps_epi32(lo));
+        last = _mm_sub_epi32(_mm_cvttps_epi32(hi), offset);
     }
 
 private:
