@@ -2,10 +2,8 @@
 // over mask registers (samples, below). 8× and 16×: one pixel's depths in one register and
 // its colours in another; 4×: a 2 × 2 block of pixels per register for narrow triangles,
 // else the SSE2 kernel's source compiled here (msaa_sse2_fill.inc), with 32 registers.
-//
-// Compiled inside avx512_region_open.inc's target region (headers included before it, so
-// their inline functions stay baseline); run only where kernels_run allows. No FMA
-// contraction: the portable kernel's float operations, lane by lane, so the same bits.
+// Inside avx512_region_open.inc's target region (no FMA contraction: the portable kernel's
+// float operations lane by lane, the same bits); run only where kernels_run allows.
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
