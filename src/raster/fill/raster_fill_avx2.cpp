@@ -6,7 +6,6 @@
 // eight lanes (tests/raster_threads_test.cpp, every depth test). Inside avx2_region_open.inc's
 // target region (no FMA contraction); run only where kernels_run.
 #include <algorithm>
-#include <cstdint>
 
 #include "fill.h"
 #include "../../simd_config.h"
