@@ -128,12 +128,6 @@ template <depth_func Test, bool HasDepth>
     fill_rows_sse2<Test, HasDepth>(canvas, depth, f, depth_write, y0, y1);
 }
 
-template <bool HasDepth>
-void fill_rows_dispatch(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, depth_func test,
-                        bool depth_write, int y0, int y1) {
-    with_depth_test(test, [&](auto t) { fill_rows_sse2_any<t.value, HasDepth>(canvas, depth, f, depth_write, y0, y1); });
-}
-
 #endif
 
 }  // namespace
@@ -163,8 +157,8 @@ void fill_fast_rows(canvas_t &canvas, zbuffer *depth, const fast_triangle &f, co
         return;
     }
 #ifdef TINY3D_SSE2
-    if (depth) fill_rows_dispatch<true>(canvas, depth, f, test, depth_write, y0, y1);
-    else fill_rows_dispatch<false>(canvas, depth, f, depth_func::always, false, y0, y1);
+    if (!depth) return fill_rows_sse2_any<depth_func::always, false>(canvas, depth, f, false, y0, y1);
+    with_depth_test(test, [&](auto t) { fill_rows_sse2_any<t.value, true>(canvas, depth, f, depth_write, y0, y1); });
 #else
     const row_spans spans(f);
     for (int y = y0; y < y1; ++y) {

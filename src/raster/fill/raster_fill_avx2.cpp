@@ -1,19 +1,11 @@
 // raster_fill_avx2.cpp — the 1-sample fill's AVX2 kernel (raster_simd::avx2), for CPUs
-// without AVX-512: the render context's band loop with the narrow triangles (at most
-// NARROW_WIDTH = 16 columns, narrow_fits) drawn by the narrow rows kernel of
-// narrow_rows.inc with two groups of four per 256-bit register, where the SSE2 kernel's
-// instance takes one group per register. Every other triangle goes to the SSE2 loops
-// (fill_fast_rows).
-//
-// The same pixels, bit for bit, as the SSE2 instance (raster_fill.cpp): the template forms
-// each group as SSE2 does and only then pairs them; the depth test (the same ordered or
-// unordered compares) and the selects are SSE2's, eight lanes at once. Tested against it
-// under every depth test (tests/raster_threads_test.cpp).
-//
-// Compiled for AVX2 inside the target region of avx2_region_open.inc; run only on CPUs that
-// have it (kernels_run). No FMA contraction: the float operations rounded step by step.
+// without AVX-512: the band loop with the narrow triangles (narrow_fits) drawn by
+// narrow_rows.inc two groups of four per 256-bit register (SSE2's instance: one); every other
+// triangle goes to the SSE2 loops (fill_fast_rows). The same pixels bit for bit: each group
+// is formed as SSE2 forms it and only then paired, the compares and selects are SSE2's on
+// eight lanes (tests/raster_threads_test.cpp, every depth test). Inside avx2_region_open.inc's
+// target region (no FMA contraction); run only where kernels_run.
 #include <algorithm>
-#include <cstdint>
 
 #include "fill.h"
 #include "../../simd_config.h"

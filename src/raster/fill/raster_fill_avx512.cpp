@@ -1,23 +1,14 @@
-// raster_fill_avx512.cpp — the 1-sample fill's AVX-512 kernels (raster_simd::avx512):
-//  * a narrow triangle's row (at most NARROW_WIDTH = 16 columns) as ONE 16-lane register (8
-//    lanes, 256 bits, for a triangle at most 8 columns wide), the row's span a lane mask,
-//    the depth test a masked compare and the colour and depth writes masked stores (no
-//    colour read, no blend), where the SSE2 kernel needs up to four groups of four, each
-//    loaded, compared, blended and stored; four rows' spans and plane values computed at
-//    once. Every other triangle goes to the SSE2 kernels (fill_fast_rows).
-// (The AVX-512 set-up batches are in setup/setup_batch_avx512.cpp.)
-//
-// The same results, bit for bit, as the SSE2 kernel and the scalar set-up: the lanes' depth
-// and intensity are formed in the SSE2 kernel's operation order (the row's value plus the
-// lane's column offset within its group of four, then the group's step added once per group
-// before it), the set-up's doubles in the scalar set-up's order, with no FMA contraction
-// (avx512_region_open.inc); the triangles the narrow kernel takes are exactly those the SSE2
-// narrow kernel takes. Tested against them and the portable kernel
-// (tests/raster_threads_test.cpp).
-//
-// Compiled inside the AVX-512 target region; the headers are included before it opens, so
-// their inline functions stay baseline x86-64. Run only on CPUs that have AVX-512 F/VL/DQ/BW
-// (kernels_run).
+// raster_fill_avx512.cpp — the 1-sample fill's AVX-512 kernels (raster_simd::avx512): a
+// narrow triangle's row (narrow_fits) as ONE register of 16 lanes (8 for a triangle at most 8
+// columns wide), the span a lane mask, the depth test a masked compare, the writes masked
+// stores (no colour read, no blend), where SSE2 needs up to four groups of four, each loaded,
+// compared, blended and stored; four rows' spans and plane values at once. Every other
+// triangle goes to the SSE2 kernels (fill_fast_rows). The same bits as the SSE2 kernel: the
+// lanes' depth and intensity in its operation order (the row's value plus the lane's offset
+// within its group of four, then the group's step once per group before it), the spans'
+// doubles as row_spans', no FMA contraction; the narrow kernel takes exactly the triangles
+// SSE2's takes (tests/raster_threads_test.cpp). Inside avx512_region_open.inc's target region
+// (headers included before it stay baseline); run only where kernels_run.
 #include <algorithm>
 #include <cstdint>
 

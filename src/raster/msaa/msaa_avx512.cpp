@@ -2,10 +2,8 @@
 // over mask registers (samples, below). 8× and 16×: one pixel's depths in one register and
 // its colours in another; 4×: a 2 × 2 block of pixels per register for narrow triangles,
 // else the SSE2 kernel's source compiled here (msaa_sse2_fill.inc), with 32 registers.
-//
-// Compiled inside avx512_region_open.inc's target region (headers included before it, so
-// their inline functions stay baseline); run only where kernels_run allows. No FMA
-// contraction: the portable kernel's float operations, lane by lane, so the same bits.
+// Inside avx512_region_open.inc's target region (no FMA contraction: the portable kernel's
+// float operations lane by lane, the same bits); run only where kernels_run allows.
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
@@ -43,7 +41,6 @@ struct registers<16> {
     static vi load_int(const std::int32_t *p) { return _mm512_load_si512(p); }
     static void store_int(std::int32_t *p, vi v) { _mm512_store_si512(p, v); }
     static vf load(const float *p) { return _mm512_loadu_ps(p); }
-    static void store(float *p, mask m, vf v) { _mm512_mask_storeu_ps(p, m, v); }
     static void store(float *p, vf v) { _mm512_storeu_ps(p, v); }
     static vf blend(mask m, vf a, vf b) { return _mm512_mask_blend_ps(m, a, b); }
     static vf add(vf a, vf b) { return _mm512_add_ps(a, b); }
@@ -82,8 +79,6 @@ template <>
 struct registers<8> : ymm_lanes {
     using mask = __mmask8;
     using coverage = __mmask8;
-    using ymm_lanes::store;
-    static void store(float *p, mask m, vf v) { _mm256_mask_storeu_ps(p, m, v); }
     static vf blend(mask m, vf a, vf b) { return _mm256_mask_blend_ps(m, a, b); }
     static coverage covered(vi b0, vi b1, vi b2) {
         return _mm256_testn_epi32_mask(_mm256_ternarylogic_epi32(b0, b1, b2, 0xFE), _mm256_set1_epi32(INT32_MIN));

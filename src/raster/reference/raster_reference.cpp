@@ -25,7 +25,7 @@ struct ref_triangle {
     double x[3], y[3], z[3], q[3];  // screen px, window depth, perspective weight (1/w or 1)
     double attr[3][SLOTS];
     std::size_t draw;
-    double y_min, y_max;
+    double y_min, y_max, area2;  // area2: twice the signed screen area
 };
 
 constexpr int BAND_ROWS = 8;
@@ -121,10 +121,8 @@ status prepare(const reference_draw &d, std::size_t index, int width, int height
                 std::copy(v[j]->attr, v[j]->attr + SLOTS, r.attr[j]);
             }
             if (!ok) continue;
-            const double area2 = (r.x[1] - r.x[0]) * (r.y[2] - r.y[0]) - (r.y[1] - r.y[0]) * (r.x[2] - r.x[0]);
-            if (!(area2 != 0) || !std::isfinite(area2)) continue;
-            const bool front = area2 < 0;  // counter-clockwise in NDC = clockwise on the y-down screen
-            if ((p.cull == cull_mode::back && !front) || (p.cull == cull_mode::front && front)) continue;
+            r.area2 = (r.x[1] - r.x[0]) * (r.y[2] - r.y[0]) - (r.y[1] - r.y[0]) * (r.x[2] - r.x[0]);
+            if (!(r.area2 != 0) || !std::isfinite(r.area2) || detail::facing_culled(r.area2, p.cull)) continue;
             r.y_min = std::min({r.y[0], r.y[1], r.y[2]});
             r.y_max = std::max({r.y[0], r.y[1], r.y[2]});
             out.push_back(r);
@@ -172,14 +170,13 @@ status render_reference(canvas_t &target, std::span<const reference_draw> draws,
             const draw_params &p = draws[r.draw].params;
             const bool material_lit = !material_is_lambert(p.surface);
             const viewer &eye = eyes[r.draw];
-            const double area2 = (r.x[1] - r.x[0]) * (r.y[2] - r.y[0]) - (r.y[1] - r.y[0]) * (r.x[2] - r.x[0]);
-            const double sign = area2 > 0 ? 1 : -1;
+            const double sign = r.area2 > 0 ? 1 : -1;
             // Edge k opposite vertex k, positive inside after orientation: l_k = e_k / |area2|.
             auto edge = [&](int k, double sx, double sy) {
                 const int a = (k + 1) % 3, b = (k + 2) % 3;
                 return sign * ((r.x[b] - r.x[a]) * (sy - r.y[a]) - (r.y[b] - r.y[a]) * (sx - r.x[a]));
             };
-            const double inv_area = 1 / std::fabs(area2);
+            const double inv_area = 1 / std::fabs(r.area2);
             const double x_min = std::min({r.x[0], r.x[1], r.x[2]}), x_max = std::max({r.x[0], r.x[1], r.x[2]});
             const int px0 = std::max(0, static_cast<int>(std::floor(x_min)));
             const int px1 = std::min(width - 1, static_cast<int>(std::floor(x_max)));

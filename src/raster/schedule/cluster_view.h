@@ -9,7 +9,6 @@
 
 namespace tiny3d::detail {
 
-
 // What one draw needs to classify chunks (raster_cluster): the MVP rows, the eye and the
 // screen, with the per-draw constants of cluster_back_facing precomputed.
 struct cluster_view {

@@ -64,8 +64,10 @@ inline std::int64_t snapped_area2(const std::int32_t X[3], const std::int32_t Y[
            (static_cast<std::int64_t>(Y[1]) - Y[0]) * (static_cast<std::int64_t>(X[2]) - X[0]);
 }
 
-// Whether `cull` removes a triangle of nonzero signed area area2 (snapped_area2).
-inline bool facing_culled(std::int64_t area2, cull_mode cull) {
+// Whether `cull` removes a triangle of nonzero signed area area2 (snapped_area2, or the
+// reference renderer's in double).
+template <class Area>
+inline bool facing_culled(Area area2, cull_mode cull) {
     const bool front_facing = area2 < 0;
     return (cull == cull_mode::back && !front_facing) || (cull == cull_mode::front && front_facing);
 }

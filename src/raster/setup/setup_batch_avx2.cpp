@@ -1,8 +1,6 @@
 // setup_batch_avx2.cpp — the set-up stage's AVX2 batches (kernel_table::setup_fast_batch,
-// setup_msaa_batch for raster_simd::avx2): setup_batch.inc over the AVX2 lane trait.
-// Called by the render context's set-up loop through its kernel table. Compiled inside the
-// AVX2 target region (the headers before it opens stay baseline); run only on CPUs that
-// have it (kernels_run).
+// setup_msaa_batch for raster_simd::avx2): setup_batch.inc over the AVX2 lane trait, inside
+// the AVX2 target region (headers before it stay baseline); run only where kernels_run.
 #include <cstdint>
 
 #include "setup.h"

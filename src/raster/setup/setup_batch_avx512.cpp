@@ -1,8 +1,6 @@
 // setup_batch_avx512.cpp — the set-up stage's AVX-512 batches (kernel_table::setup_fast_batch,
-// setup_msaa_batch for raster_simd::avx512): setup_batch.inc over the AVX-512 lane trait.
-// Called by the render context's set-up loop through its kernel table. Compiled inside the
-// AVX-512 target region (the headers before it opens stay baseline); run only on CPUs that
-// have it (kernels_run).
+// setup_msaa_batch for raster_simd::avx512): setup_batch.inc over the AVX-512 lane trait,
+// inside the AVX-512 target region (headers before it stay baseline); run only where kernels_run.
 #include <cstdint>
 
 #include "setup.h"

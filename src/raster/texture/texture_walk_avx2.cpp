@@ -1,11 +1,9 @@
 // texture_walk_avx2.cpp — the anisotropic tap walk (texture_walk.h) eight taps per 256-bit
-// register: the taps' positions, floors, weights and wrapped texel indices as vectors, the
-// four corners of each tap's bilinear cell fetched by gathers (inactive lanes gather texel
-// 0 and add nothing). The same operations in the same order as walk_taps_portable, lane by
-// lane, and the same final sum: bit for bit its result (tests/kernel_table_test.cpp).
-//
-// Compiled for AVX2 inside the target region of avx2_region_open.inc (no FMA contraction);
-// run only on CPUs that have it (through the kernel table).
+// register: positions, floors, weights and wrapped texel indices as vectors, each tap's four
+// bilinear corners fetched by gathers (inactive lanes gather texel 0 and add nothing). The
+// same operations in the same order as walk_taps_portable, lane by lane, and the same final
+// sum: its bits (tests/kernel_table_test.cpp). Inside avx2_region_open.inc's target region
+// (no FMA contraction); run only where kernels_run.
 #include "texture_walk.h"
 #include "../../simd_config.h"
 
