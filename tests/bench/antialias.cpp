@@ -20,6 +20,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -37,7 +38,7 @@ using namespace tiny3d;
 namespace {
 
 constexpr int SIDE = 1024, PLANE_SIDE = 512;
-constexpr int WARMUP_FRAMES = 5, TIMED_FRAMES = 50;
+constexpr int WARMUP_FRAMES = 5, TIMED_FRAMES = 50, ROUNDS = 5;
 constexpr double NS_PER_MS = 1e6;
 constexpr sample_count MODES[] = {sample_count::x1, sample_count::x4, sample_count::x8, sample_count::x16};
 
@@ -79,16 +80,38 @@ bench::timing time_turning(scene &s, int frames, Draw &&draw) {
     return t;
 }
 
-bench::timing time_frames(scene &s, int threads, sample_count n, canvas_t &canvas, int frames,
-                          multisample_simd simd = best_multisample_simd()) {
-    render_context ctx(threads);
-    ctx.use_multisample_simd(simd);
-    return time_turning(s, frames, [&] {
-        if (!ctx.begin_frame(canvas, 0.0f, n).ok()) return;
-        ctx.draw(s.mesh, s.params);
-        ctx.end_frame();
-    });
-}
+// One configuration of the multisampled rows: its own context, its own turn of the mesh.
+struct config {
+    sample_count samples;
+    int threads;
+    multisample_simd simd;
+    std::unique_ptr<render_context> ctx;
+    int frame = 0;  // the next frame's angle in degrees
+    std::vector<bench::timing> rounds;
+    // Draws the next frame of the turn into canvas.
+    void draw(scene &s, canvas_t &canvas) {
+        s.params.model = mat4_rotate_y(static_cast<float>(frame++ * M_PI / 180));
+        if (!ctx->begin_frame(canvas, 0.0f, samples).ok()) return;
+        ctx->draw(s.mesh, s.params);
+        ctx->end_frame();
+    }
+    // The frame at angle 0.
+    void draw_first(scene &s, canvas_t &canvas) {
+        frame = 0;
+        draw(s, canvas);
+    }
+    // The median of the rounds' medians, the fastest and slowest frame of any round.
+    bench::timing time() const {
+        std::vector<double> medians;
+        bench::timing t = rounds.front();
+        for (const bench::timing &r : rounds) {
+            medians.push_back(r.median);
+            t.min = std::min(t.min, r.min), t.max = std::max(t.max, r.max);
+        }
+        t.median = bench::summarise(std::move(medians)).median;
+        return t;
+    }
+};
 
 struct image_error {
     double all_mean = 0, all_max = 0, edge_mean = 0, edge_max = 0;
@@ -158,19 +181,42 @@ int main(int argc, char **argv) {
         }
         rows.push_back({"antialias", w.name + " reference " + std::to_string(reference_n * reference_n) + " spp",
                         "reference", "ms/frame", {ms, ms, ms}, 0.0, 0.0, "grey levels", "render_reference, one frame"});
+        // Every mode, thread count and (Scene S) instruction set, timed in rounds: a block of
+        // frames of each configuration in turn, ROUNDS times, so that a slow spell of the
+        // machine falls on every row alike instead of on one; a row's time is the median of
+        // its rounds' medians. (--quick: one round, the rows' order, as
+        // tests/bench/callgrind.sh expects: a measure_ns call per row.)
+        std::vector<config> configs;  // in the rows' order
+        for (sample_count n : MODES) {
+            configs.push_back({n, 1, best_multisample_simd(), std::make_unique<render_context>(1), 0, {}});
+            configs.push_back({n, 2, best_multisample_simd(), std::make_unique<render_context>(2), 0, {}});
+            if (w.name == "Scene S L6")
+                for (const auto &other : other_simds)
+                    configs.push_back({n, 1, other.first, std::make_unique<render_context>(1), 0, {}});
+        }
+        for (config &c : configs) {
+            c.ctx->use_multisample_simd(c.simd);
+            for (int k = 0; k < WARMUP_FRAMES - 1; ++k) c.draw(s, *two);  // measure_ns adds one more
+        }
+        const int rounds = o.quick ? 1 : ROUNDS;
+        for (int r = 0; r < rounds; ++r)
+            for (config &c : configs)
+                c.rounds.push_back(bench::measure_ns(frames / rounds, NS_PER_MS, [&] { c.draw(s, *two); }));
+        std::size_t next = 0;
         for (sample_count n : MODES) {
             const std::string mode = std::to_string(static_cast<int>(n)) + "x";
-            const bench::timing t1 = time_frames(s, 1, n, *one, frames);
-            const bench::timing t2 = time_frames(s, 2, n, *two, frames);
+            config &c1 = configs[next++], &c2 = configs[next++];
+            c1.draw_first(s, *one);
+            c2.draw_first(s, *two);
             const image_error e = error_against(*one, *reference, coverage.get());
             const std::string note = "all pixels: mean " + fixed(e.all_mean, 3) + " max " + fixed(e.all_max, 1) + "; " +
                                      std::to_string(e.edge_pixels) + " silhouette px";
             // On the chart each scene's modes are one line per thread count (one legend entry
             // each), the one-thread points tagged with their mode.
             rows.push_back({"antialias", w.name + " " + mode + " 1 thread", n == sample_count::x1 ? "faithful" : "fast",
-                            "ms/frame", t1, e.edge_mean, e.edge_max, "grey levels", note,
+                            "ms/frame", c1.time(), e.edge_mean, e.edge_max, "grey levels", note,
                             w.name + ", 1 thread: faithful 1x, fast 4x-16x", mode});
-            rows.push_back({"antialias", w.name + " " + mode + " 2 threads", "other", "ms/frame", t2, e.edge_mean,
+            rows.push_back({"antialias", w.name + " " + mode + " 2 threads", "other", "ms/frame", c2.time(), e.edge_mean,
                             e.edge_max, "grey levels",
                             same_image(*one, *two) ? "image identical to 1 thread" : "IMAGE DIFFERS FROM 1 THREAD",
                             w.name + ", 2 threads, 1x-16x"});
@@ -179,15 +225,16 @@ int main(int argc, char **argv) {
             // best one gets, multisampled frames also as a multiple of that set's own 1x frame.
             if (w.name != "Scene S L6") continue;
             for (std::size_t k = 0; k < other_simds.size(); ++k) {
-                const auto &[simd, label] = other_simds[k];
-                const bench::timing t = time_frames(s, 1, n, *two, frames, simd);
+                config &c = configs[next++];
+                c.draw_first(s, *two);
+                const bench::timing t = c.time();
                 if (n == sample_count::x1) other_x1[k] = t.median;
                 std::string verdict = same_image(*one, *two) ? "image identical to the best kernel's"
                                                               : "IMAGE DIFFERS FROM THE BEST KERNEL'S";
                 if (n != sample_count::x1) verdict += "; " + fixed(t.median / other_x1[k], 2) + "x its own 1x";
-                rows.push_back({"antialias", w.name + " " + mode + " " + label + " kernel 1 thread", "other", "ms/frame",
-                                t, e.edge_mean, e.edge_max, "grey levels", verdict,
-                                w.name + ", 1 thread, " + label + " kernel, 1x-16x", mode});
+                rows.push_back({"antialias", w.name + " " + mode + " " + other_simds[k].second + " kernel 1 thread",
+                                "other", "ms/frame", t, e.edge_mean, e.edge_max, "grey levels", verdict,
+                                w.name + ", 1 thread, " + other_simds[k].second + " kernel, 1x-16x", mode});
             }
         }
         // The analytic-coverage prototype (common/analytic_coverage.h): exact area per pixel,
