@@ -1,6 +1,7 @@
 // antialias.cpp — anti-aliased filled rendering against the converged image: Scene S
 // (Scene S protocol, documentation/benchmarks.md: 1024², camera (0, 0, 3), fov 45°, Gouraud Lambert, depth LESS,
-// back-face culling, mesh turned 1° about +y per frame, 5 warm-up + 50 timed frames) at
+// back-face culling, mesh turned 1° about +y per frame, 5 warm-up + 50 timed frames, the
+// multisampled rows' frames in 5 rounds of 10, the configurations in turn) at
 // icosphere level 6 and the 3,696-triangle torus knot, rows 1x, 4x, 8x, 16x (samples per
 // pixel) with one and two threads (and for Scene S, one thread, 1x-16x with each other
 // instruction set the CPU runs: `4x AVX2 kernel`, `4x SSE2 kernel` …, the note giving a
