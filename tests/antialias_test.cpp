@@ -745,8 +745,8 @@ TEST(msaa_simd_kernels_match_the_portable_kernel) {
 // The 4× SIMD kernels' row spans without divisions (sample_row_spans) against the exact
 // ones (edge_extremes::row): every row's span holds the exact one and is at most one column
 // wider at each end, for narrow triangles of every size up to the narrow limit (the float
-// quotient's error grows with the box) and at every sample pattern on the 1/16 px grid; four
-// rows at a time (next4) the same spans as one at a time.
+// quotient's error grows with the box) and at every sample pattern on the 1/16 px grid; and
+// each row's edge values t are the exact ones at the best sample, e + b·dy + best.
 TEST(msaa_row_spans_hold_the_exact_spans) {
     const pixel_rect clip{0, 0, 2100, 2100};
     int rows = 0, wider = 0;
@@ -778,21 +778,22 @@ TEST(msaa_row_spans_hold_the_exact_spans) {
                 }
                 best[k] = off.hi[k];
             }
-            detail::sample_row_spans spans, spans4;
+            detail::sample_row_spans spans;
             spans.start(f, best, 0);
-            spans4.start(f, best, 0);
-            alignas(16) std::int32_t first4[4], last4[4];
+            alignas(16) std::int32_t first4[4], last4[4], t4[3][4];
             for (int y = f.min_y, r = 4; y <= f.max_y; ++y, ++r) {
-                int first, last, lo, hi;
-                spans.next(first, last);
                 if (r == 4) {
                     __m128i a, b, t[3];
-                    spans4.next4(a, b, t);
+                    spans.next4(a, b, t);
                     _mm_store_si128(reinterpret_cast<__m128i *>(first4), a);
                     _mm_store_si128(reinterpret_cast<__m128i *>(last4), b);
+                    for (int k = 0; k < 3; ++k) _mm_store_si128(reinterpret_cast<__m128i *>(t4[k]), t[k]);
                     r = 0;
                 }
-                CHECK(first4[r] == first && last4[r] == last);
+                const int first = first4[r], last = last4[r];
+                for (int k = 0; k < 3; ++k)
+                    CHECK(t4[k][r] == static_cast<std::int32_t>(f.e[k] + f.b[k] * (y - f.min_y) + best[k]));
+                int lo, hi;
                 std::int64_t v[3];
                 if (!off.row(f, y, v, lo, hi)) continue;
                 ++rows;

@@ -79,24 +79,8 @@ public:
         low_ = _mm_setr_ps(static_cast<float>(OFFSET - columns), static_cast<float>(OFFSET - 1), 0.0f, 0.0f);
         high_ = _mm_setr_ps(static_cast<float>(OFFSET), static_cast<float>(OFFSET + columns - 1), 0.0f, 0.0f);
     }
-    // The next row's span [first, last] (first > last: no sample of the row is inside);
-    // returns the row's t (lanes 0..2).
-    __m128i next(int &first, int &last) {
-        const __m128i row = t_;
-        const __m128 t = _mm_cvtepi32_ps(row);
-        t_ = _mm_add_epi32(row, down_);
-        const __m128 lo = _mm_add_ps(_mm_mul_ps(t, up_), up_add_), hi = _mm_add_ps(_mm_mul_ps(t, down_mul_), down_add_);
-        __m128 m = _mm_min_ps(_mm_unpacklo_ps(lo, hi), _mm_unpackhi_ps(lo, hi));  // lane 3: +∞
-        m = _mm_min_ps(_mm_max_ps(_mm_min_ps(m, _mm_movehl_ps(m, m)), low_), high_);
-        const __m128i q = _mm_cvttps_epi32(m);
-        first = OFFSET - _mm_cvtsi128_si32(q);
-        last = _mm_cvtsi128_si32(_mm_shuffle_epi32(q, 1)) - OFFSET;
-        return row;
-    }
-
-    // The next four rows' spans at once, row r in lane r of first and last: next()'s float
-    // operations lane by lane (an object uses one of next() and next4()). t[k]: edge k's t of
-    // the four rows.
+    // The next four rows' spans [first, last], row r in lane r (first > last: no sample of
+    // the row is inside); t[k]: edge k's t of the four rows.
     __attribute__((always_inline)) void next4(__m128i &first, __m128i &last, __m128i t[3]) {
         const __m128 rows = _mm_setr_ps(0.0f, 1.0f, 2.0f, 3.0f);
         __m128 lo = _mm_set1_ps(__builtin_inff()), hi = lo;
