@@ -707,9 +707,9 @@ TEST(msaa_simd_kernels_match_the_portable_kernel) {
             canvas_ptr in_other = make_canvas(W, H).value();
             zbuffer fast_z, plain_z, other_z;
             CHECK(fast_z.resize(W, H).ok() && plain_z.resize(W, H).ok() && other_z.resize(W, H).ok());
-            a.resolve(*fast, fast_z, 0.25f, kernels[kernel]);
-            b.resolve(*plain, plain_z, 0.25f, kernels[0]);
-            other.resolve(*in_other, other_z, 0.25f, kernels[kernel]);
+            a.resolve(*fast, fast_z, kernels[kernel]);
+            b.resolve(*plain, plain_z, kernels[0]);
+            other.resolve(*in_other, other_z, kernels[kernel]);
             int resolve_differ = 0, not_at_rest = 0;
             double worst = 0;
             for (int y = 0; y < H; ++y)
@@ -733,7 +733,7 @@ TEST(msaa_simd_kernels_match_the_portable_kernel) {
             detail::sample_store empty;
             empty.resize(W, H, samples, 0.25f, detail::sample_store::blocks_for(kernels[kernel], samples));
             empty.start(0, H);
-            empty.resolve(*fast, fast_z, 0.25f, kernels[kernel]);
+            empty.resolve(*fast, fast_z, kernels[kernel]);
             int not_clear = 0;
             for (int y = 0; y < H; ++y)
                 for (int x = 0; x < W; ++x) not_clear += fast->pixels[y][x] != 0.25f || fast_z.at(x, y) != 1.0f;

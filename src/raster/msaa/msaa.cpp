@@ -291,13 +291,14 @@ void sample_store::start(int y0, int y1) {
     if (origin_ < end_) std::fill(touched_row(origin_), touched_row(end_), std::uint8_t{0});
 }
 
-void sample_store::initialise(float *pixel, float clear_colour) const {
+void sample_store::put_at_rest(float *pixel) const {
     std::fill(pixel, pixel + samples_, 1.0f);
-    std::fill_n(pixel + colour_offset(), samples_, clear_colour);
+    std::fill_n(pixel + colour_offset(), samples_, rest_colour_);
 }
 
-void sample_store::resolve(canvas_t &canvas, zbuffer &depth, float clear_colour, msaa_kernel kernel) {
+void sample_store::resolve(canvas_t &canvas, zbuffer &depth, msaa_kernel kernel) {
     const int S = samples_;
+    const float clear_colour = rest_colour_;
     const float inv = 1.0f / static_cast<float>(S);
     const kernel_table &k = kernels_for(kernel);
     int first_column = 0;  // (the columns before it resolved already)
@@ -339,7 +340,7 @@ void sample_store::resolve(canvas_t &canvas, zbuffer &depth, float clear_colour,
             float *p = pixel(x, y);
             colour[x] = resolve_sum(p + colour_offset(), S) * inv;
             z[x] = *std::min_element(p, p + S);
-            initialise(p, rest_colour_);
+            put_at_rest(p);
         }
     }
 }

@@ -71,7 +71,7 @@ using msaa_kernel = raster_simd;  // raster.h
 class sample_store {
 public:
     // Grows the tile to rows × width pixels of `samples` (blocks: 4 samples only), at rest
-    // for `clear_colour`, which every later fill and resolve must use.
+    // for `clear_colour`, which every later fill and resolve uses.
     void resize(int width, int rows, int samples, float clear_colour, bool blocks = false);
     static bool blocks_for(msaa_kernel kernel, int samples) { return samples == 4 && kernels_for(kernel).msaa_blocks4; }
     int width() const { return width_; }
@@ -100,12 +100,13 @@ public:
         touched_row(y)[x] = 1;
         return pixel(x, y);
     }
-    void initialise(float *pixel, float clear_colour) const;
     // canvas := each pixel's mean sample colour, depth := its nearest sample depth, summed
-    // in one fixed order for every kernel (bit-identical). The tile is left at rest.
-    void resolve(canvas_t &canvas, zbuffer &depth, float clear_colour, msaa_kernel kernel);
+    // in one fixed order for every kernel (bit-identical). The tile is left at rest (for the
+    // clear colour resize was given, which is also an unmarked pixel's colour).
+    void resolve(canvas_t &canvas, zbuffer &depth, msaa_kernel kernel);
 
 private:
+    void put_at_rest(float *pixel) const;  // one pixel's samples: depth 1, rest_colour_
     std::size_t offset(int x, int y) const {
         const std::size_t row = static_cast<std::size_t>(y - origin_);
         if (!blocks_) return (row * stride_ + x) * 2 * samples_;

@@ -65,7 +65,7 @@ void render_context::impl::draw_multisampled_band(int band, sample_store &tile) 
     }
     for (const generic_triangle &g : translucent)
         draw_generic_samples(tile, *pattern, states[g.state], g, y0, y1);
-    tile.resolve(*target, depth, clear_intensity, kernels->simd);
+    tile.resolve(*target, depth, kernels->simd);
 }
 
 }  // namespace tiny3d
