@@ -103,12 +103,11 @@ bool make_fast_triangle(const triangle_edges &t, const float depth[3], const flo
 
 fast_setup setup_fast_triangle(const std::int32_t X[3], const std::int32_t Y[3], std::int64_t area2, pixel_rect clip,
                                const float depth[3], const float intensity[3], fast_triangle &out) {
-    const std::int32_t min_X = std::min(std::min(X[0], X[1]), X[2]), max_X = std::max(std::max(X[0], X[1]), X[2]);
-    const std::int32_t min_Y = std::min(std::min(Y[0], Y[1]), Y[2]), max_Y = std::max(std::max(Y[0], Y[1]), Y[2]);
-    if (max_X - min_X >= FAST_SPAN_LIMIT || max_Y - min_Y >= FAST_SPAN_LIMIT) return fast_setup::wide;
+    const snapped_box box = snapped_box::of(X, Y);
+    if (box.max_X - box.min_X >= FAST_SPAN_LIMIT || box.max_Y - box.min_Y >= FAST_SPAN_LIMIT) return fast_setup::wide;
     int min_y, max_y;
-    axis_bounds(min_X, max_X, 0, 0, RASTER_SUBPIXEL_BITS, clip.x0, clip.x1, out.min_x, out.max_x);
-    axis_bounds(min_Y, max_Y, 0, 0, RASTER_SUBPIXEL_BITS, clip.y0, clip.y1, min_y, max_y);
+    axis_bounds(box.min_X, box.max_X, 0, 0, RASTER_SUBPIXEL_BITS, clip.x0, clip.x1, out.min_x, out.max_x);
+    axis_bounds(box.min_Y, box.max_Y, 0, 0, RASTER_SUBPIXEL_BITS, clip.y0, clip.y1, min_y, max_y);
     if (out.min_x > out.max_x || min_y > max_y) return fast_setup::empty;
     // triangle_setup_snapped's edges (oriented by s, top-left bias), evaluated at the centre
     // (cx, cy) of pixel (min_x, min_y): within the box, so |e| < 2^31 and the products fit.
