@@ -256,6 +256,8 @@ void render_context::impl::setup_range(const raster_mesh &m, const draw_params &
             const float depth[3] = {a.depth, b.depth, c.depth};
             const float shade[3] = {flat ? flat_shade : a.shade, flat ? flat_shade : b.shade, flat ? flat_shade : c.shade};
             // No sample row (pixel centre row at 1×) of the target in the y range: nothing to count.
+            // (At 1× the 1-sample pattern's offsets and grid as constants: a shift by a constant
+            // per triangle, not by pattern->bits.)
             const std::int32_t min_Y = std::min({Y[0], Y[1], Y[2]}), max_Y = std::max({Y[0], Y[1], Y[2]});
             int row0, row1;
             if (msaa) axis_bounds(min_Y, max_Y, pattern->min_dy, pattern->max_dy, pattern->bits, 0, height, row0, row1);
