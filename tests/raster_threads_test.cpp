@@ -429,7 +429,7 @@ TEST(batched_setup_gives_the_scalar_setup_bit_for_bit) {
 TEST(batched_multisample_setup_gives_the_scalar_setup_bit_for_bit) {
 #if defined(TINY3D_AVX512) || defined(TINY3D_AVX2)
   for (const raster_simd kernel : {raster_simd::avx512, raster_simd::avx2}) {
-    if (!detail::kernels_run(kernel) || !detail::kernels_for(kernel).setup_fast_batch) continue;
+    if (!detail::kernels_run(kernel) || !detail::kernels_for(kernel).setup_msaa_batch) continue;
     std::mt19937 rng(20261204);
     const pixel_rect clip{3, 5, 250, 200};
     int ready = 0, empty = 0, scalar = 0, clipped = 0, ready16 = 0;
