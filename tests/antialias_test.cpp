@@ -244,10 +244,10 @@ TEST(msaa_background_keeps_the_clear_intensity) {
 }
 
 // A tile is at rest between bands (every sample depth 1 and the clear colour in memory,
-// which the 4× block kernel and the 8×/16× pixel kernels rely on): resize puts it there, for the clear
-// colour given, whenever the layout or the clear colour changes; and one context drawing
-// frame after frame with other clears, sample counts and canvas sizes gives each frame a
-// fresh context gives, with every kernel.
+// which every multisample kernel relies on): resize puts it there, for the clear colour
+// given, whenever the layout or the clear colour changes; and one context drawing frame
+// after frame with other clears, sample counts and canvas sizes gives each frame a fresh
+// context gives, with every kernel.
 TEST(msaa_tile_at_rest_follows_the_clear_the_mode_and_the_size) {
     detail::sample_store store;
     int wrong = 0;
@@ -672,8 +672,8 @@ TEST(msaa_simd_kernels_match_the_portable_kernel) {
             // masking the column past them)
             if (small) CHECK(clipped > 0 && clipped < drawn);
             CHECK(wide ? chunked > drawn / 2 : chunked == 0);
-            // Every sample as the stores hold it: in memory when its pixel is touched or the tile
-            // is at rest, else implicitly depth 1 and the clear colour (sample_store).
+            // Every sample as the stores hold it: in memory, touched or not (the tile is at rest:
+            // sample_store).
             // Value s of a pixel's 2·samples: its depths, then its colours.
             auto value = [samples](const detail::sample_store &st, int x, int y, int s) {
                 const float *p = st.pixel(x, y);
@@ -742,7 +742,7 @@ TEST(msaa_simd_kernels_match_the_portable_kernel) {
 }
 
 #ifdef TINY3D_SSE2
-// The 4× SIMD kernels' row spans without divisions (sample_row_spans) against the exact
+// The SSE2 4× kernel's row spans without divisions (sample_row_spans) against the exact
 // ones (edge_extremes::row): every row's span holds the exact one and is at most one column
 // wider at each end, for narrow triangles of every size up to the narrow limit (the float
 // quotient's error grows with the box) and at every sample pattern on the 1/16 px grid; and
