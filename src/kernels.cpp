@@ -32,11 +32,12 @@ constexpr kernel_table SSE2 = {raster_simd::sse2, "sse2", line_simd::portable, n
 #ifdef TINY3D_AVX2
 constexpr kernel_table AVX2 = {
     raster_simd::avx2, "avx2", line_simd::sse2, setup_fast_batch_avx2, setup_msaa_batch_avx2, fill_fast_bins_avx2,
-    nullptr, fill_function_avx2, false, true, nullptr, resolve_rows4_avx2, resolve_rows8_avx2, resolve_rows16_avx2,
+    nullptr, fill_function_avx2, true, true, resolve_blocks4_avx2, nullptr, resolve_rows8_avx2, resolve_rows16_avx2,
     walk_taps_avx2};
 #else
+// (Its 4-sample tiles keep the block layout, as the AVX-512 table's below.)
 constexpr kernel_table AVX2 = {raster_simd::avx2, "avx2", SSE2.lines, nullptr, nullptr, SSE2.fill_fast_bins,
-                               nullptr, SSE2.msaa_fill, false, SSE2.resolve_rows_simd, nullptr, nullptr, nullptr,
+                               nullptr, SSE2.msaa_fill, true, SSE2.resolve_rows_simd, nullptr, nullptr, nullptr,
                                nullptr, nullptr};
 #endif
 #ifdef TINY3D_AVX512

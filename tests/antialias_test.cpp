@@ -350,8 +350,8 @@ TEST(msaa_multi_draw_frames_do_not_depend_on_the_thread_count) {
 // row's first on a 64-byte boundary (at 4 samples a pixel pair from an even column one
 // aligned 64-byte line); in blocks (4 samples) 2 × 2 pixels from column 0 and the tile's
 // origin, 128 bytes each and 64-byte aligned, pixel q = 2r + j at float 4q of the block's
-// depths and of its colours 16 floats on (the AVX-512 kernel's lanes). Blocks are asked of
-// 8 and 16 samples too, and not given.
+// depths and of its colours 16 floats on (the AVX-512 and AVX2 kernels' lanes: their tables'
+// 4× layout). Blocks are asked of 8 and 16 samples too, and not given.
 TEST(msaa_sample_store_layout) {
     detail::sample_store store;
     for (int width : {1, 2, 3, 5, 8, 41, 7, 1024})
@@ -363,6 +363,7 @@ TEST(msaa_sample_store_layout) {
                 const bool blocks = asked && samples == 4;
                 CHECK_EQ(store.blocks(), blocks);
                 CHECK_EQ(detail::sample_store::blocks_for(detail::msaa_kernel::avx512, samples), samples == 4);
+                CHECK_EQ(detail::sample_store::blocks_for(detail::msaa_kernel::avx2, samples), samples == 4);
                 CHECK(!detail::sample_store::blocks_for(detail::msaa_kernel::sse2, samples));
                 CHECK_EQ(store.origin(), 11);
                 CHECK(store.stride() >= width);

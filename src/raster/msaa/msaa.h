@@ -59,14 +59,14 @@ using msaa_kernel = raster_simd;  // raster.h
 // The tile is kept AT REST between bands: every sample of every pixel holds depth 1 and the
 // clear colour in memory (resize establishes it, the resolve restores it), so the kernels use
 // samples as loaded without asking whether a pixel was touched; the marks are then only the
-// resolve's hint of where to read (the AVX-512 block kernel marks a block's first pixel only,
-// the block resolve reads every 8 × 2 group with a mark; the 8× and 16× lane kernels mark
+// resolve's hint of where to read (the AVX-512 and AVX2 4× kernels mark one pixel of a block
+// per step, the block resolve reads every 8 × 2 group with a mark; the 8× and 16× lane kernels mark
 // every pixel they visit, covered or not).
 //
-// Two layouts. Rows: pixel after pixel, each its S depths then its S colours (at 4 samples
-// two pixels from an even column make one 64-byte line, the AVX2 4× kernel's unit). Blocks
-// (4 samples, for AVX-512): 2 × 2 pixels in 128 aligned bytes, 16 depths then 16 colours,
-// pixel q = 2·row + column at float 4q + s: the block kernel's two registers with no
+// Two layouts. Rows: pixel after pixel, each its S depths then its S colours. Blocks (4
+// samples, for AVX-512 and AVX2): 2 × 2 pixels in 128 aligned bytes, 16 depths then 16
+// colours, pixel q = 2·row + column at float 4q + s: the AVX-512 block kernel's two registers
+// and, a block row's 8 depths and 8 colours each contiguous, the AVX2 one's, with no
 // permutes. Every kernel takes either layout (pixel, colour_offset, pixel_step).
 class sample_store {
 public:

@@ -165,12 +165,15 @@ msaa_row_fill msaa_fill_sse2(int samples, depth_func test);
 #endif
 
 #ifdef TINY3D_AVX2
-// AVX2: where f is narrow, else the SSE2 functions.
+// AVX2: where f is narrow (at 4× on the block tile), else the SSE2 functions.
 msaa_row_fill fill_function_avx2(int samples, depth_func test);
-// The 4-sample resolve of a row's first `pixels` columns (a multiple of 8) in the rows
-// layout, in the SSE2 resolve's order (same bits), pixels put back at rest.
-void resolve_rows4_avx2(float *p, const std::uint8_t *touched, int pixels, float clear_colour, float *colour, float *z);
-// The 8- and 16-sample resolves likewise (pixels put back at rest).
+// The 4-sample resolve of a row of blocks' first `pixels` columns (a multiple of 8), in the
+// SSE2 resolve's order (same bits), blocks put back at rest; row 1's pointers null when it
+// is padding.
+void resolve_blocks4_avx2(float *p, const std::uint8_t *touched0, const std::uint8_t *touched1, int pixels,
+                          float clear_colour, float *colour0, float *z0, float *colour1, float *z1);
+// The 8- and 16-sample resolves of a row's first `pixels` columns (a multiple of 8), in the
+// SSE2 resolve's order (same bits), pixels put back at rest.
 void resolve_rows8_avx2(float *p, const std::uint8_t *touched, int pixels, float clear_colour, float *colour, float *z);
 void resolve_rows16_avx2(float *p, const std::uint8_t *touched, int pixels, float clear_colour, float *colour, float *z);
 #endif
