@@ -19,36 +19,36 @@ namespace {
 // exist in every build so that kernels_for never fails; kernels_run says which run.
 constexpr kernel_table PORTABLE = {
     raster_simd::portable, "portable", line_simd::portable, nullptr, nullptr, fill_fast_bins_portable, nullptr,
-    nullptr, false, false, nullptr, nullptr, nullptr, nullptr, nullptr};
+    nullptr, false, false, nullptr, nullptr, nullptr, nullptr};
 #ifdef TINY3D_SSE2
 constexpr kernel_table SSE2 = {
     raster_simd::sse2, "sse2", line_simd::sse2, nullptr, nullptr, fill_fast_bins_sse2, nullptr,
-    msaa_fill_sse2, false, true, nullptr, nullptr, nullptr, nullptr, nullptr};
+    msaa_fill_sse2, false, true, nullptr, nullptr, nullptr, nullptr};
 #else
 constexpr kernel_table SSE2 = {raster_simd::sse2, "sse2", line_simd::portable, nullptr, nullptr,
                                fill_fast_bins_portable, nullptr, nullptr, false, false, nullptr, nullptr, nullptr,
-                               nullptr, nullptr};
+                               nullptr};
 #endif
 #ifdef TINY3D_AVX2
 constexpr kernel_table AVX2 = {
     raster_simd::avx2, "avx2", line_simd::sse2, setup_fast_batch_avx2, setup_msaa_batch_avx2, fill_fast_bins_avx2,
-    nullptr, fill_function_avx2, true, true, resolve_blocks4_avx2, nullptr, resolve_rows8_avx2, resolve_rows16_avx2,
+    nullptr, fill_function_avx2, true, true, resolve_blocks4_avx2, resolve_rows8_avx2, resolve_rows16_avx2,
     walk_taps_avx2};
 #else
 // (Its 4-sample tiles keep the block layout, as the AVX-512 table's below.)
 constexpr kernel_table AVX2 = {raster_simd::avx2, "avx2", SSE2.lines, nullptr, nullptr, SSE2.fill_fast_bins,
-                               nullptr, SSE2.msaa_fill, true, SSE2.resolve_rows_simd, nullptr, nullptr, nullptr,
+                               nullptr, SSE2.msaa_fill, true, SSE2.resolve_rows_simd, nullptr, nullptr,
                                nullptr, nullptr};
 #endif
 #ifdef TINY3D_AVX512
 constexpr kernel_table AVX512 = {
     raster_simd::avx512, "avx512", line_simd::avx512, setup_fast_batch_avx512, setup_msaa_batch_avx512,
     fill_fast_bins_avx512, fill_rows_narrow_avx512, fill_function_avx512, true, true, resolve_blocks4_avx512,
-    nullptr, AVX2.resolve_rows8, AVX2.resolve_rows16, AVX2.walk_taps};
+    AVX2.resolve_rows8, AVX2.resolve_rows16, AVX2.walk_taps};
 #else
 // (Its 4-sample tiles keep the block layout: a layout, which every kernel reads.)
 constexpr kernel_table AVX512 = {raster_simd::avx512, "avx512", SSE2.lines, nullptr, nullptr, SSE2.fill_fast_bins,
-                                 nullptr, SSE2.msaa_fill, true, SSE2.resolve_rows_simd, nullptr, nullptr,
+                                 nullptr, SSE2.msaa_fill, true, SSE2.resolve_rows_simd, nullptr,
                                  AVX2.resolve_rows8, AVX2.resolve_rows16, AVX2.walk_taps};
 #endif
 

@@ -78,10 +78,9 @@ struct kernel_table {
     bool resolve_rows_simd;  // rows resolved four samples at a time (SSE2)
     void (*resolve_blocks4)(float *p, const std::uint8_t *touched0, const std::uint8_t *touched1, int pixels,
                             float clear_colour, float *colour0, float *z0, float *colour1, float *z1);
-    // (rows layout, 4 samples) a row's first `pixels` columns (a multiple of 8), null: SSE2's.
-    void (*resolve_rows4)(float *p, const std::uint8_t *touched, int pixels, float clear_colour, float *colour,
-                          float *z);
-    // (8 and 16 samples) likewise, null: SSE2's.
+    // (rows layout, 8 and 16 samples) a row's first `pixels` columns (a multiple of 8), null:
+    // SSE2's. (No table has one for a rows tile of 4: those with an eight-pixel 4× resolve
+    // store blocks.)
     void (*resolve_rows8)(float *p, const std::uint8_t *touched, int pixels, float clear_colour, float *colour,
                           float *z);
     void (*resolve_rows16)(float *p, const std::uint8_t *touched, int pixels, float clear_colour, float *colour,

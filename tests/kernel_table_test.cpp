@@ -112,8 +112,6 @@ TEST(each_table_is_what_it_names) {
         CHECK(std::string(k.name) == raster_simd_name(s));
         CHECK(k.fill_fast_bins != nullptr);
         CHECK((k.setup_fast_batch == nullptr) == (k.setup_msaa_batch == nullptr));  // both set-ups batched or neither
-        // A resolve of rows-layout tiles only in a table whose tiles are rows (its tail: SSE2's).
-        CHECK(k.resolve_rows4 == nullptr || (!k.msaa_blocks4 && k.resolve_rows_simd));
         // The 8- and 16-sample ones (tiles in rows in every table) both or neither, SSE2's tail.
         CHECK((k.resolve_rows8 == nullptr) == (k.resolve_rows16 == nullptr));
         CHECK(k.resolve_rows8 == nullptr || k.resolve_rows_simd);

@@ -323,7 +323,7 @@ void sample_store::resolve(canvas_t &canvas, zbuffer &depth, msaa_kernel kernel)
             resolve_row_sse2<N>(pixel(wide, y), touched + wide, width_ - wide, clear_colour, colour + wide, z + wide);
         };
         switch (!k.resolve_rows_simd || blocks_ ? 0 : S) {
-            case 4: simd_row(std::integral_constant<int, 4>{}, k.resolve_rows4); continue;
+            case 4: simd_row(std::integral_constant<int, 4>{}, decltype(k.resolve_rows8){}); continue;
             case 8: simd_row(std::integral_constant<int, 8>{}, k.resolve_rows8); continue;
             case 16: simd_row(std::integral_constant<int, 16>{}, k.resolve_rows16); continue;
             default: break;
