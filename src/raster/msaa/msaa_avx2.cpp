@@ -36,7 +36,6 @@ struct lanes8 : ymm_lanes {
     static void store_depths(float *p, vf writes, mask pass, vf stored, vf z) { store(p, blend(both(pass, writes), stored, z)); }
     // 4× (fill_rows_quads): one row of a 2 × 2 block, its 8 depths and its 8 colours each an
     // aligned 32-byte half of one of the block's lines (no permutes).
-    static vf write_mask(bool depth_write) { return writes(depth_write); }
     static vi rows(bool, bool) { return _mm256_setzero_si256(); }
     static vi columns_within(vi out, vi column, vi last) {
         return _mm256_or_si256(out, _mm256_or_si256(_mm256_cmpgt_epi32(_mm256_setzero_si256(), column),
@@ -59,8 +58,7 @@ void fill_avx2(sample_store &store, const msaa_triangle &f, const sample_pattern
         return msaa_fill_for(msaa_kernel::sse2, S, test)(store, f, pat, test, depth_write, y0, y1);
     if (!clamp_to_rows(f, y0, y1)) return;
     if constexpr (S == 4) {
-        if (f.clipped_x) fill_rows_quads<lanes8, Test, true>(store, f, pat, depth_write, y0, y1);
-        else fill_rows_quads<lanes8, Test, false>(store, f, pat, depth_write, y0, y1);
+        fill_quads<lanes8, Test>(store, f, pat, depth_write, y0, y1);
     }
     else fill_rows_pixels<lanes8, S, Test>(store, f, pat, depth_write, y0, y1);
 }

@@ -61,9 +61,7 @@ struct registers<16> {
     static mask compare(coverage in, vf a, vf b) { return _mm512_mask_cmp_ps_mask(in, a, b, Predicate); }
     // 4× (fill_rows_quads): a 2 × 2 block of the tile per register (lanes 0–7 its upper row),
     // loaded and stored whole: for small triangles fewer steps and row starts than four
-    // pixels of a row. The depth write is a mask, not a branch (which GCC compiled worse).
-    static mask write_mask(bool depth_write) { return depth_write ? 0xFFFF : 0; }
-    static mask both(mask a, mask b) { return _kand_mask16(a, b); }
+    // pixels of a row.
     static mask rows(bool upper, bool lower) { return static_cast<mask>((upper ? 0x00FF : 0) | (lower ? 0xFF00 : 0)); }
     static mask columns_within(mask inside, vi column, vi last) { return _mm512_mask_cmple_epu32_mask(inside, column, last); }
     static coverage covered_within(mask inside, vi b0, vi b1, vi b2) {
@@ -111,8 +109,7 @@ void fill_avx512(sample_store &store, const msaa_triangle &f, const sample_patte
     if (!clamp_to_rows(f, y0, y1)) return;
     if constexpr (S == 4) {
         if (!store.blocks()) fill_rows_sse2<4, Test, false>(store, f, pat, depth_write, y0, y1);
-        else if (f.narrow && f.clipped_x) fill_rows_quads<samples<16>, Test, true>(store, f, pat, depth_write, y0, y1);
-        else if (f.narrow) fill_rows_quads<samples<16>, Test, false>(store, f, pat, depth_write, y0, y1);
+        else if (f.narrow) fill_quads<samples<16>, Test>(store, f, pat, depth_write, y0, y1);
         else fill_rows_sse2<4, Test, true>(store, f, pat, depth_write, y0, y1);
     } else {
         fill_rows_pixels<samples<S>, S, Test>(store, f, pat, depth_write, y0, y1);
