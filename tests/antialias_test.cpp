@@ -605,11 +605,12 @@ TEST(msaa_16_pattern_is_centred_and_its_coverage_exact) {
 
 // The SSE2 and AVX-512 kernels against the portable one: random overlapping triangles with
 // depth (ties included, every depth test, with and without depth writes), every sample
-// bit-identical; large triangles and small ones (boxes at most 8 columns), some off the
-// canvas' edges; and wide ones, reaching far beyond the canvas (boxes beyond what 32-bit
-// values cover: rows walked in chunks, offsets in integers — msaa_kernels.h). Each SIMD
-// kernel in the tile layout the render context gives it and in the other one (blocks at
-// 4×: sample_store), samples and resolves alike.
+// bit-identical; large triangles, small ones (boxes at most 8 columns) and medium ones (up to
+// 16: every step count of the 4× box walk), some off the canvas' edges; and wide ones,
+// reaching far beyond the canvas (boxes beyond what 32-bit values cover: rows walked in
+// chunks, offsets in integers — msaa_kernels.h). Each SIMD kernel in the tile layout the
+// render context gives it and in the other one (blocks at 4×: sample_store), samples and
+// resolves alike.
 TEST(msaa_simd_kernels_match_the_portable_kernel) {
     constexpr int W = 41, H = 33;
     const std::vector<detail::msaa_kernel> kernels = msaa_kernels();
@@ -618,15 +619,16 @@ TEST(msaa_simd_kernels_match_the_portable_kernel) {
     const pixel_rect clips[] = {{0, 0, W, H}, {1, 2, W - 2, H - 1}};
     for (std::size_t kernel = 1; kernel < kernels.size(); ++kernel)
     for (const pixel_rect clip : clips)
-    for (int size : {0, 1, 2})  // large, small, wide
+    for (int size : {0, 1, 2, 3})  // large, small, wide, medium
         for (int samples : {4, 8, 16}) {
-            const bool small = size == 1, wide = size == 2;
+            const bool medium = size == 3, small = size == 1 || medium, wide = size == 2;
             std::mt19937 rng(11 + static_cast<unsigned>(samples));
             const detail::sample_pattern &pat = detail::pattern_of(samples);
             const int grid = static_cast<int>(pat.one());  // sub-pixel units per px
             // Wide: vertices up to 3000 px (4×, 8×) or 400 px (16×) off the canvas.
             const int reach = wide ? (pat.bits == RASTER_SUBPIXEL_BITS ? 3000 : 400) : 5;
-            std::uniform_int_distribution<int> coord(-reach * grid, (40 + reach) * grid), near(-3 * grid, 3 * grid);
+            std::uniform_int_distribution<int> coord(-reach * grid, (40 + reach) * grid), near(-3 * grid, 3 * grid),
+                spread(-8 * grid, 8 * grid);
             std::uniform_real_distribution<float> unit(0.0f, 1.0f);
             detail::sample_store a, b;
             // (a in the layout its kernel is given, blocks for AVX-512 at 4×; other: the same
@@ -637,10 +639,12 @@ TEST(msaa_simd_kernels_match_the_portable_kernel) {
             b.resize(W, H, samples, 0.25f), b.start(0, H);
             other.resize(W, H, samples, 0.25f, !blocks), other.start(0, H);
             int narrow_boxes = 0, drawn = 0, chunked = 0, clipped = 0;
+            unsigned step_counts = 0;  // bit n - 1: a box the 4× kernels walk whole in n steps per row
             for (int t = 0; t < (small ? 600 : 60); ++t) {
                 std::int32_t X[3] = {coord(rng), coord(rng), coord(rng)}, Y[3] = {coord(rng), coord(rng), coord(rng)};
                 if (small)
-                    for (int k = 1; k < 3; ++k) X[k] = X[0] + near(rng), Y[k] = Y[0] + near(rng);
+                    for (int k = 1; k < 3; ++k)
+                        X[k] = X[0] + (medium ? spread(rng) : near(rng)), Y[k] = Y[0] + (medium ? spread(rng) : near(rng));
                 const triangle_edges e = detail::triangle_setup_snapped(X, Y, clip, cull_mode::none, pat.bits);
                 // Every other triangle at a constant depth of 0.25 or 0.5: equal depths, so the
                 // depth test's ties are decided too.
@@ -657,6 +661,8 @@ TEST(msaa_simd_kernels_match_the_portable_kernel) {
                 clipped += f.clipped_x;
                 ++drawn;
                 narrow_boxes += f.max_x - f.min_x < 8;
+                if (const int columns = f.max_x - f.min_x + 1; columns <= 16)
+                    step_counts |= 1u << ((columns + (f.min_x & 1) + 1) / 2 - 1);
                 // Mostly `less` with depth writes; every seventh triangle another test, some
                 // without writing depth.
                 constexpr depth_func tests[] = {depth_func::less_equal, depth_func::equal, depth_func::greater,
@@ -668,7 +674,7 @@ TEST(msaa_simd_kernels_match_the_portable_kernel) {
                 detail::msaa_fill_for(kernels[kernel], pat.count, test)(other, f, pat, test, write, 0, H);
                 detail::msaa_fill_for(kernels[0], pat.count, test)(b, f, pat, test, write, 0, H);
             }
-            CHECK(small ? narrow_boxes == drawn : narrow_boxes < drawn / 4);
+            CHECK(medium ? step_counts == 0x1FFu : small ? narrow_boxes == drawn : narrow_boxes < drawn / 4);
             // (small: boxes cut by the clip and boxes not, which the 4× block kernel walks without
             // masking the column past them)
             if (small) CHECK(clipped > 0 && clipped < drawn);
@@ -727,7 +733,7 @@ TEST(msaa_simd_kernels_match_the_portable_kernel) {
                 }
             CHECK_EQ(resolve_differ, 0);
             CHECK_EQ(not_at_rest, 0);
-            CHECK(small ? untouched > 0 : true);
+            CHECK(small && !medium ? untouched > 0 : true);  // (medium boxes cover the canvas)
             CHECK(worst < 1e-6);
             // A tile no triangle touched (the SIMD resolves pass over runs of untouched pixels
             // without reading their samples): the clear values everywhere.

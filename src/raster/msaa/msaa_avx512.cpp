@@ -90,7 +90,8 @@ struct registers<8> : ymm_lanes {
 template <int S>
 struct samples : registers<S> {
     static constexpr bool wide = true, prefetch_below = true, write_branch = true;
-    // The column terms as multiplies: two more 64-byte loads per step cost more (measured).
+    // The column terms and edge offsets not from arrays: more 64-byte loads per step cost more
+    // (measured; the box walk's multiplies are hoisted out of its unrolled rows anyway).
     static constexpr bool column_terms = false;
     using V = registers<S>;
     using mask = typename V::mask;
