@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Image identity check (not part of `make test`; no make): runs every demo of a build (the
 # filled ones at --aa 1 and 4), and
-# `render` on a mesh at --aa 1/4/16 and --threads 1/2, once per kernel table named in
+# `render` on a mesh at --aa 1/4/8/16 and --threads 1/2, once per kernel table named in
 # KERNELS (TINY3D_KERNELS=…, src/kernels.h; a table the CPU does not run falls back to the
 # best one, which `render --info` reports), and prints the sha256 of every frame written,
 # one "kernels/file hash" line each. Compare the output of two builds with diff: a change
@@ -26,7 +26,7 @@ for k in $kernels; do
     case $name in
       ply_render) "$d" "$mesh" 0 60 20 "$dir/ply_render.pgm" >/dev/null ;;
       render)
-        for aa in 1 4 16; do for threads in 1 2; do
+        for aa in 1 4 8 16; do for threads in 1 2; do
           mkdir -p "$dir/aa${aa}_t$threads"
           "$d" "$mesh" --aa "$aa" --threads "$threads" --frames "$frames" --out "$dir/aa${aa}_t$threads" >/dev/null
         done; done ;;
