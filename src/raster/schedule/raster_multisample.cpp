@@ -29,38 +29,31 @@ void render_context::impl::draw_multisampled_band(int band, sample_store &tile) 
     msaa_row_fill fill_for[DEPTH_TESTS];
     for (int test = 0; test < DEPTH_TESTS; ++test)
         fill_for[test] = msaa_fill_for(kernels->simd, pattern->count, static_cast<depth_func>(test));
-    constexpr int TRIANGLES_AHEAD = 6;
-    struct cursor {  // an entry of the band's bins, in drawing order
-        int number = 0;
-        std::size_t k = 0;
-    } later;
-    auto bin_of = [&](int number) -> const std::vector<std::uint32_t> & {
-        return pieces[static_cast<std::size_t>(number)].bins[band];
-    };
-    auto advance = [&](cursor &c) {
-        for (++c.k; c.number < piece_count && c.k >= bin_of(c.number).size(); c.k = 0) ++c.number;
-    };
-    later.k = static_cast<std::size_t>(-1);  // (the first entry, then TRIANGLES_AHEAD on)
-    for (int n = 0; n <= TRIANGLES_AHEAD; ++n) advance(later);
+    constexpr std::size_t TRIANGLES_AHEAD = 6;
+    // (Locals, not members: the fills are calls through pointers, after which members would be
+    // loaded again.)
+    const sample_pattern &pat = *pattern;
+    const draw_params *const state_of = states.data();
     for (const piece &from : pieces_of({0, piece_count})) {
-        for (std::uint32_t index : from.bins[band]) {
-            if (later.number < piece_count) {
-                const std::uint32_t on = bin_of(later.number)[later.k];
-                if (!(on & GENERIC_BIN)) {
-                    const char *line = reinterpret_cast<const char *>(&pieces[static_cast<std::size_t>(later.number)].msaa[on]);
-                    __builtin_prefetch(line);
-                    __builtin_prefetch(line + sizeof(msaa_triangle) - 1);
-                }
-                advance(later);
+        const std::uint32_t *const bin = from.bins[band].data();
+        const msaa_triangle *const triangles = from.msaa.data();
+        const std::size_t entries = from.bins[band].size();
+        for (std::size_t i = 0; i < entries; ++i) {
+            // The set-up triangle TRIANGLES_AHEAD entries on in the bin, fetched meanwhile.
+            if (i + TRIANGLES_AHEAD < entries && !(bin[i + TRIANGLES_AHEAD] & GENERIC_BIN)) {
+                const char *line = reinterpret_cast<const char *>(triangles + bin[i + TRIANGLES_AHEAD]);
+                __builtin_prefetch(line);
+                __builtin_prefetch(line + sizeof(msaa_triangle) - 1);
             }
+            const std::uint32_t index = bin[i];
             if (index & GENERIC_BIN) {
                 const generic_triangle &g = from.generic[index & ~GENERIC_BIN];
-                draw_generic_samples(tile, *pattern, states[g.state], g, y0, y1);
+                draw_generic_samples(tile, pat, state_of[g.state], g, y0, y1);
                 continue;
             }
-            const msaa_triangle &f = from.msaa[index];
-            const depth_func test = states[f.state].depth;
-            fill_for[static_cast<int>(test)](tile, f, *pattern, test, true, y0, y1);
+            const msaa_triangle &f = triangles[index];
+            const depth_func test = state_of[f.state].depth;
+            fill_for[static_cast<int>(test)](tile, f, pat, test, true, y0, y1);
         }
     }
     for (const generic_triangle &g : translucent)
