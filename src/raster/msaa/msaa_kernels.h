@@ -59,8 +59,13 @@ class sample_row_spans {
 public:
     // Rows from f.min_y + dy0 on; best[k]: edge k's greatest sample offset.
     __attribute__((always_inline)) void start(const msaa_triangle &f, const std::int64_t best[3], int dy0) {
-        auto t0 = [&](int k) { return static_cast<std::int32_t>(f.e[k] + f.b[k] * dy0 + best[k]); };
-        t_ = _mm_setr_epi32(t0(0), t0(1), t0(2), 0);
+        start(f, _mm_setr_epi32(static_cast<std::int32_t>(best[0]), static_cast<std::int32_t>(best[1]),
+                                static_cast<std::int32_t>(best[2]), 0), dy0);
+    }
+    // The same with edge k's greatest offset in lane k of best (lanes 0 to 2).
+    __attribute__((always_inline)) void start(const msaa_triangle &f, __m128i best, int dy0) {
+        auto row = [&](int k) { return static_cast<std::int32_t>(f.e[k] + f.b[k] * dy0); };
+        t_ = _mm_add_epi32(_mm_setr_epi32(row(0), row(1), row(2), 0), best);  // (32 bits, wrapping)
         down_ = _mm_setr_epi32(static_cast<std::int32_t>(f.b[0]), static_cast<std::int32_t>(f.b[1]),
                                static_cast<std::int32_t>(f.b[2]), 0);
         const __m128 a = _mm_setr_ps(static_cast<float>(f.a[0]), static_cast<float>(f.a[1]),
