@@ -48,8 +48,10 @@ struct tap_walk;
 inline constexpr int BATCH_LANES = 8;  // = SETUP_BATCH (the set-up batches' lanes)
 
 // One multisample row fill, its sample count and depth test chosen (msaa_fill_for).
+// Depths are written where the test passes (the render context has no draw without depth
+// writes; translucent triangles take the per-pixel path).
 using msaa_row_fill = void (*)(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
-                               bool depth_write, int y0, int y1);
+                               int y0, int y1);
 
 // The kernels of one instruction set. A null entry: the set has no kernel of its own there,
 // and the caller runs the family's portable reference (named beside each entry).

@@ -507,7 +507,7 @@ detail::sample_store fill_all(const std::vector<std::array<std::int32_t, 6>> &tr
         if (e.area2 == 0 ||
             !detail::make_msaa_triangle(X, Y, detail::snapped_area2(X, Y), pat, {0, 0, W, H}, depth, intensity, f))
             continue;
-        detail::msaa_fill_for(kernel, pat.count, depth_func::less)(store, f, pat, depth_func::less, true, 0, H);
+        detail::msaa_fill_for(kernel, pat.count, depth_func::less)(store, f, pat, depth_func::less, 0, H);
     }
     return store;
 }
@@ -604,7 +604,7 @@ TEST(msaa_16_pattern_is_centred_and_its_coverage_exact) {
 }
 
 // The SSE2 and AVX-512 kernels against the portable one: random overlapping triangles with
-// depth (ties included, every depth test, with and without depth writes), every sample
+// depth (ties included, every depth test), every sample
 // bit-identical; large triangles, small ones (boxes at most 8 columns) and medium ones (up to
 // 16: every step count of the 4× box walk), some off the canvas' edges; and wide ones,
 // reaching far beyond the canvas (boxes beyond what 32-bit values cover: rows walked in
@@ -663,16 +663,14 @@ TEST(msaa_simd_kernels_match_the_portable_kernel) {
                 narrow_boxes += f.max_x - f.min_x < 8;
                 if (const int columns = f.max_x - f.min_x + 1; columns <= 16)
                     step_counts |= 1u << ((columns + (f.min_x & 1) + 1) / 2 - 1);
-                // Mostly `less` with depth writes; every seventh triangle another test, some
-                // without writing depth.
+                // Mostly `less`; every seventh triangle another test.
                 constexpr depth_func tests[] = {depth_func::less_equal, depth_func::equal, depth_func::greater,
                                                 depth_func::greater_equal, depth_func::not_equal, depth_func::always,
                                                 depth_func::never};
                 const depth_func test = t % 7 ? depth_func::less : tests[(t / 7) % 7];
-                const bool write = t % 5 != 4;
-                detail::msaa_fill_for(kernels[kernel], pat.count, test)(a, f, pat, test, write, 0, H);
-                detail::msaa_fill_for(kernels[kernel], pat.count, test)(other, f, pat, test, write, 0, H);
-                detail::msaa_fill_for(kernels[0], pat.count, test)(b, f, pat, test, write, 0, H);
+                detail::msaa_fill_for(kernels[kernel], pat.count, test)(a, f, pat, test, 0, H);
+                detail::msaa_fill_for(kernels[kernel], pat.count, test)(other, f, pat, test, 0, H);
+                detail::msaa_fill_for(kernels[0], pat.count, test)(b, f, pat, test, 0, H);
             }
             CHECK(medium ? step_counts == 0x1FFu : small ? narrow_boxes == drawn : narrow_boxes < drawn / 4);
             // (small: boxes cut by the clip and boxes not, which the 4× block kernel walks without

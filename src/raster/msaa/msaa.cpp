@@ -76,7 +76,7 @@ inline float resolve_sum(const float *c, int S) {
 
 // The portable kernel: 64-bit edges, one sample at a time.
 void fill_rows_portable(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
-                        bool depth_write, int y0, int y1) {
+                        int y0, int y1) {
     const sample_offsets off(f, pat);
     const int S = pat.count;
     float dz[MSAA_MAX_SAMPLES];
@@ -101,7 +101,7 @@ void fill_rows_portable(sample_store &store, const msaa_triangle &f, const sampl
             for (int s = 0; s < S; ++s) {
                 const float z = zc + dz[s];
                 if (!((mask >> s) & 1) || !depth_passes(test, z, p[s])) continue;
-                if (depth_write) p[s] = z;
+                p[s] = z;
                 colours[s] = shade;
             }
         }
@@ -113,20 +113,18 @@ void fill_rows_portable(sample_store &store, const msaa_triangle &f, const sampl
 
 // msaa_fill_for's SSE2 functions: the SSE2 kernel where f is chunkable, else the portable one.
 template <int S, depth_func Test>
-void fill_sse2(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test, bool depth_write,
-               int y0, int y1) {
+void fill_sse2(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test, int y0,
+               int y1) {
     if (!clamp_to_rows(f, y0, y1)) return;
-    if (!f.chunkable) return fill_rows_portable(store, f, pat, test, depth_write, y0, y1);
+    if (!f.chunkable) return fill_rows_portable(store, f, pat, test, y0, y1);
     if constexpr (S == 4) {
-        if (f.narrow) {  // (a function per depth-write mode: no select of the depth written)
-            if (store.blocks() && depth_write) return fill_rows_sse2_narrow4<Test, true, true>(store, f, pat, y0, y1);
-            if (store.blocks()) return fill_rows_sse2_narrow4<Test, true, false>(store, f, pat, y0, y1);
-            if (depth_write) return fill_rows_sse2_narrow4<Test, false, true>(store, f, pat, y0, y1);
-            return fill_rows_sse2_narrow4<Test, false, false>(store, f, pat, y0, y1);
+        if (f.narrow) {
+            if (store.blocks()) return fill_rows_sse2_narrow4<Test, true>(store, f, pat, y0, y1);
+            return fill_rows_sse2_narrow4<Test, false>(store, f, pat, y0, y1);
         }
-        if (store.blocks()) return fill_rows_sse2<4, Test, true>(store, f, pat, depth_write, y0, y1);
+        if (store.blocks()) return fill_rows_sse2<4, Test, true>(store, f, pat, y0, y1);
     }
-    fill_rows_sse2<S, Test, false>(store, f, pat, depth_write, y0, y1);
+    fill_rows_sse2<S, Test, false>(store, f, pat, y0, y1);
 }
 
 // A resolved pixel's S samples back at rest (sample_store): depth 1, the clear colour.
@@ -227,11 +225,11 @@ bool make_msaa_triangle_on(const std::int32_t X[3], const std::int32_t Y[3], std
     return true;
 }
 
-void fill_nothing(sample_store &, const msaa_triangle &, const sample_pattern &, depth_func, bool, int, int) {}
+void fill_nothing(sample_store &, const msaa_triangle &, const sample_pattern &, depth_func, int, int) {}
 
-void fill_portable(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
-                   bool depth_write, int y0, int y1) {
-    if (clamp_to_rows(f, y0, y1)) fill_rows_portable(store, f, pat, test, depth_write, y0, y1);
+void fill_portable(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test, int y0,
+                   int y1) {
+    if (clamp_to_rows(f, y0, y1)) fill_rows_portable(store, f, pat, test, y0, y1);
 }
 
 }  // namespace

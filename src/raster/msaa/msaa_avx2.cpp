@@ -23,7 +23,7 @@ namespace {
 // The lane trait of msaa_lanes_fill.inc: masks as vectors (blendv reads the sign bits),
 // coverage the OR of the three edge values (sign set: out); narrow triangles, no prefetch.
 struct lanes8 : ymm_lanes {
-    static constexpr bool wide = false, prefetch_below = false, write_branch = false, column_terms = true;
+    static constexpr bool wide = false, prefetch_below = false, column_terms = true;
     using mask = __m256;
     using coverage = __m256;
     static vf blend(mask m, vf a, vf b) { return _mm256_blendv_ps(a, b, m); }
@@ -31,9 +31,6 @@ struct lanes8 : ymm_lanes {
     template <int Predicate>
     static mask compare(coverage in, vf z, vf stored) { return _mm256_andnot_ps(in, _mm256_cmp_ps(z, stored, Predicate)); }
     static mask all(coverage in) { return _mm256_andnot_ps(in, _mm256_castsi256_ps(_mm256_set1_epi32(-1))); }
-    static vf writes(bool depth_write) { return depth_write ? _mm256_castsi256_ps(_mm256_set1_epi32(-1)) : _mm256_setzero_ps(); }
-    static mask both(mask a, mask b) { return _mm256_and_ps(a, b); }
-    static void store_depths(float *p, vf writes, mask pass, vf stored, vf z) { store(p, blend(both(pass, writes), stored, z)); }
     // 4× (fill_rows_quads): one row of a 2 × 2 block, its 8 depths and its 8 colours each an
     // aligned 32-byte half of one of the block's lines (no permutes).
     static vi rows(bool, bool) { return _mm256_setzero_si256(); }
@@ -54,18 +51,17 @@ struct lanes8 : ymm_lanes {
 // f through the SSE2 function: out of line, so that fill_avx2 keeps no registers across a call.
 template <int S>
 [[gnu::noinline]] void fill_sse2_instead(sample_store &store, const msaa_triangle &f, const sample_pattern &pat,
-                                         depth_func test, bool depth_write, int y0, int y1) {
-    msaa_fill_for(msaa_kernel::sse2, S, test)(store, f, pat, test, depth_write, y0, y1);
+                                         depth_func test, int y0, int y1) {
+    msaa_fill_for(msaa_kernel::sse2, S, test)(store, f, pat, test, y0, y1);
 }
 
 template <int S, depth_func Test>
-void fill_avx2(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test, bool depth_write,
-               int y0, int y1) {
+void fill_avx2(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test, int y0, int y1) {
     if (!f.narrow || (S == 4 && !store.blocks()))  // (lanes8's 4× steps walk the block layout)
-        return fill_sse2_instead<S>(store, f, pat, test, depth_write, y0, y1);
+        return fill_sse2_instead<S>(store, f, pat, test, y0, y1);
     if (!clamp_to_rows(f, y0, y1)) return;
-    if constexpr (S == 4) fill_quads<lanes8, Test>(store, f, pat, depth_write, y0, y1);
-    else fill_rows_pixels<lanes8, S, Test>(store, f, pat, depth_write, y0, y1);
+    if constexpr (S == 4) fill_quads<lanes8, Test>(store, f, pat, y0, y1);
+    else fill_rows_pixels<lanes8, S, Test>(store, f, pat, y0, y1);
 }
 
 }  // namespace

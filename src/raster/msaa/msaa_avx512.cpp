@@ -85,42 +85,37 @@ struct registers<8> : ymm_lanes {
     static mask compare(coverage in, vf a, vf b) { return _mm256_mask_cmp_ps_mask(in, a, b, Predicate); }
 };
 
-// The lane trait of msaa_lanes_fill.inc: chunkable triangles too, the next row prefetched;
-// without depth writes no depth is stored.
+// The lane trait of msaa_lanes_fill.inc: chunkable triangles too, the next row prefetched.
 template <int S>
 struct samples : registers<S> {
-    static constexpr bool wide = true, prefetch_below = true, write_branch = true;
+    static constexpr bool wide = true, prefetch_below = true;
     // The column terms and edge offsets not from arrays: more 64-byte loads per step cost more
     // (measured; the box walk's multiplies are hoisted out of its unrolled rows anyway).
     static constexpr bool column_terms = false;
     using V = registers<S>;
     using mask = typename V::mask;
     static mask all(mask in) { return in; }
-    static bool writes(bool depth_write) { return depth_write; }
-    static void store_depths(float *p, bool writes, mask pass, typename V::vf stored, typename V::vf z) {
-        if (writes) V::store(p, V::blend(pass, stored, z));  // (otherwise the depths stay as they are)
-    }
 };
 
 // f through the portable function: out of line, so that fill_avx512 keeps no registers across
 // a call.
 template <int S>
 [[gnu::noinline]] void fill_portable_instead(sample_store &store, const msaa_triangle &f, const sample_pattern &pat,
-                                             depth_func test, bool depth_write, int y0, int y1) {
-    msaa_fill_for(msaa_kernel::portable, S, test)(store, f, pat, test, depth_write, y0, y1);
+                                             depth_func test, int y0, int y1) {
+    msaa_fill_for(msaa_kernel::portable, S, test)(store, f, pat, test, y0, y1);
 }
 
 template <int S, depth_func Test>
-void fill_avx512(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test,
-                 bool depth_write, int y0, int y1) {
-    if (!f.chunkable) return fill_portable_instead<S>(store, f, pat, test, depth_write, y0, y1);
+void fill_avx512(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test, int y0,
+                 int y1) {
+    if (!f.chunkable) return fill_portable_instead<S>(store, f, pat, test, y0, y1);
     if (!clamp_to_rows(f, y0, y1)) return;
     if constexpr (S == 4) {
-        if (!store.blocks()) fill_rows_sse2<4, Test, false>(store, f, pat, depth_write, y0, y1);
-        else if (f.narrow) fill_quads<samples<16>, Test>(store, f, pat, depth_write, y0, y1);
-        else fill_rows_sse2<4, Test, true>(store, f, pat, depth_write, y0, y1);
+        if (!store.blocks()) fill_rows_sse2<4, Test, false>(store, f, pat, y0, y1);
+        else if (f.narrow) fill_quads<samples<16>, Test>(store, f, pat, y0, y1);
+        else fill_rows_sse2<4, Test, true>(store, f, pat, y0, y1);
     } else {
-        fill_rows_pixels<samples<S>, S, Test>(store, f, pat, depth_write, y0, y1);
+        fill_rows_pixels<samples<S>, S, Test>(store, f, pat, y0, y1);
     }
 }
 

@@ -53,7 +53,7 @@ void render_context::impl::draw_multisampled_band(int band, sample_store &tile) 
             }
             const msaa_triangle &f = triangles[index];
             const depth_func test = state_of[f.state].depth;
-            fill_for[static_cast<int>(test)](tile, f, pat, test, true, y0, y1);
+            fill_for[static_cast<int>(test)](tile, f, pat, test, y0, y1);
         }
     }
     for (const generic_triangle &g : translucent)
