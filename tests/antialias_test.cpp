@@ -784,7 +784,8 @@ TEST(msaa_row_spans_hold_the_exact_spans) {
                 best[k] = off.hi[k];
             }
             detail::sample_row_spans spans;
-            spans.start(f, best, 0);
+            spans.start(f, _mm_setr_epi32(static_cast<std::int32_t>(best[0]), static_cast<std::int32_t>(best[1]),
+                                          static_cast<std::int32_t>(best[2]), 0), 0);
             alignas(16) std::int32_t first4[4], last4[4], t4[3][4];
             for (int y = f.min_y, r = 4; y <= f.max_y; ++y, ++r) {
                 if (r == 4) {

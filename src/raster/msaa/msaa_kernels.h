@@ -57,12 +57,8 @@ inline __m128i mullo32(__m128i x, __m128i y) {
 // bounds nothing. Only which pixels are visited depends on it, never what they get.
 class sample_row_spans {
 public:
-    // Rows from f.min_y + dy0 on; best[k]: edge k's greatest sample offset.
-    __attribute__((always_inline)) void start(const msaa_triangle &f, const std::int64_t best[3], int dy0) {
-        start(f, _mm_setr_epi32(static_cast<std::int32_t>(best[0]), static_cast<std::int32_t>(best[1]),
-                                static_cast<std::int32_t>(best[2]), 0), dy0);
-    }
-    // The same with edge k's greatest offset in lane k of best (lanes 0 to 2).
+    // Rows from f.min_y + dy0 on; lane k of best (lanes 0 to 2): edge k's greatest sample
+    // offset.
     __attribute__((always_inline)) void start(const msaa_triangle &f, __m128i best, int dy0) {
         auto row = [&](int k) { return static_cast<std::int32_t>(f.e[k] + f.b[k] * dy0); };
         t_ = _mm_add_epi32(_mm_setr_epi32(row(0), row(1), row(2), 0), best);  // (32 bits, wrapping)
