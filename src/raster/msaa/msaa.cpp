@@ -368,6 +368,11 @@ msaa_row_fill msaa_fill_for(msaa_kernel kernel, int samples, depth_func test) {
     return fill_portable;
 }
 
+void fill_with(msaa_kernel kernel, int samples, sample_store &store, const msaa_triangle &f, const sample_pattern &pat,
+               depth_func test, int y0, int y1) {
+    msaa_fill_for(kernel, samples, test)(store, f, pat, test, y0, y1);
+}
+
 }  // namespace tiny3d::detail
 
 namespace tiny3d {

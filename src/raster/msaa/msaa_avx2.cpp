@@ -48,17 +48,10 @@ struct lanes8 : ymm_lanes {
     static void mark(std::uint8_t *touched) { *touched = 1; }
 };
 
-// f through the SSE2 function: out of line, so that fill_avx2 keeps no registers across a call.
-template <int S>
-[[gnu::noinline]] void fill_sse2_instead(sample_store &store, const msaa_triangle &f, const sample_pattern &pat,
-                                         depth_func test, int y0, int y1) {
-    msaa_fill_for(msaa_kernel::sse2, S, test)(store, f, pat, test, y0, y1);
-}
-
 template <int S, depth_func Test>
 void fill_avx2(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test, int y0, int y1) {
     if (!f.narrow || (S == 4 && !store.blocks()))  // (lanes8's 4× steps walk the block layout)
-        return fill_sse2_instead<S>(store, f, pat, test, y0, y1);
+        return fill_with(msaa_kernel::sse2, S, store, f, pat, test, y0, y1);
     if (!clamp_to_rows(f, y0, y1)) return;
     if constexpr (S == 4) fill_quads<lanes8, Test>(store, f, pat, y0, y1);
     else fill_rows_pixels<lanes8, S, Test>(store, f, pat, y0, y1);

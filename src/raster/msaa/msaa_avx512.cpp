@@ -97,18 +97,10 @@ struct samples : registers<S> {
     static mask all(mask in) { return in; }
 };
 
-// f through the portable function: out of line, so that fill_avx512 keeps no registers across
-// a call.
-template <int S>
-[[gnu::noinline]] void fill_portable_instead(sample_store &store, const msaa_triangle &f, const sample_pattern &pat,
-                                             depth_func test, int y0, int y1) {
-    msaa_fill_for(msaa_kernel::portable, S, test)(store, f, pat, test, y0, y1);
-}
-
 template <int S, depth_func Test>
 void fill_avx512(sample_store &store, const msaa_triangle &f, const sample_pattern &pat, depth_func test, int y0,
                  int y1) {
-    if (!f.chunkable) return fill_portable_instead<S>(store, f, pat, test, y0, y1);
+    if (!f.chunkable) return fill_with(msaa_kernel::portable, S, store, f, pat, test, y0, y1);
     if (!clamp_to_rows(f, y0, y1)) return;
     if constexpr (S == 4) {
         if (!store.blocks()) fill_rows_sse2<4, Test, false>(store, f, pat, y0, y1);

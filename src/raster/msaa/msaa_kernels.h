@@ -159,6 +159,11 @@ msaa_row_fill fill_function(int samples, depth_func test, Choose &&choose) {
     return chosen;
 }
 
+// f drawn by `kernel`'s fill for `samples` (msaa_fill_for), out of line: a SIMD fill that
+// hands f on keeps no registers across the call.
+void fill_with(msaa_kernel kernel, int samples, sample_store &store, const msaa_triangle &f, const sample_pattern &pat,
+               depth_func test, int y0, int y1);
+
 #ifdef TINY3D_SSE2
 // The kernel table's multisample fills for 4, 8, 16 samples (test not never), bit-identical
 // to the portable kernel. SSE2: where f is chunkable, else the portable one.
