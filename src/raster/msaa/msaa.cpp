@@ -321,7 +321,7 @@ void sample_store::resolve(canvas_t &canvas, zbuffer &depth, msaa_kernel kernel)
             resolve_row_sse2<N>(pixel(wide, y), touched + wide, width_ - wide, clear_colour, colour + wide, z + wide);
         };
         switch (!k.resolve_rows_simd || blocks_ ? 0 : S) {
-            case 4: simd_row(std::integral_constant<int, 4>{}, decltype(k.resolve_rows8){}); continue;
+            case 4: resolve_row_sse2<4>(pixel(0, y), touched, width_, clear_colour, colour, z); continue;  // (rows tile)
             case 8: simd_row(std::integral_constant<int, 8>{}, k.resolve_rows8); continue;
             case 16: simd_row(std::integral_constant<int, 16>{}, k.resolve_rows16); continue;
             default: break;
