@@ -26,7 +26,14 @@ struct lanes8 : ymm_lanes {
     static constexpr bool wide = false, prefetch_below = false, column_terms = true;
     using mask = __m256;
     using coverage = __m256;
-    static vf blend(mask m, vf a, vf b) { return _mm256_blendv_ps(a, b, m); }
+    // blendv as written: GCC folds _mm256_blendv_ps into a select on "m < 0" and, when one
+    // mask feeds two blends (a step's depths and colours), computes that compare into a
+    // register of its own, one more instruction per step.
+    static vf blend(mask m, vf a, vf b) {
+        vf r;
+        __asm__("vblendvps %3, %2, %1, %0" : "=x"(r) : "x"(a), "x"(b), "x"(m));
+        return r;
+    }
     static coverage covered(vi b0, vi b1, vi b2) { return _mm256_castsi256_ps(_mm256_or_si256(_mm256_or_si256(b0, b1), b2)); }
     template <int Predicate>
     static mask compare(coverage in, vf z, vf stored) { return _mm256_andnot_ps(in, _mm256_cmp_ps(z, stored, Predicate)); }
