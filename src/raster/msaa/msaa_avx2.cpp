@@ -109,7 +109,9 @@ void resolve_rows_avx2(float *p, const std::uint8_t *touched, int pixels, float 
         __m256 c = _mm256_mul_ps(reduce(S, [](__m256 u, __m256 v) { return _mm256_add_ps(u, v); }), inv);
         __m256 d = reduce(0, [](__m256 u, __m256 v) { return _mm256_min_ps(u, v); });
         _mm256_storeu_ps(colour + x, c), _mm256_storeu_ps(z + x, d);
+#pragma GCC unroll 8
         for (int j = 0; j < 8 * 2 * S; j += 2 * S)
+#pragma GCC unroll 2
             for (int g = 0; g < S; g += 8) _mm256_store_ps(p + j + g, far), _mm256_store_ps(p + j + S + g, clear);
     }
 }
@@ -146,6 +148,7 @@ void resolve_blocks4_avx2(float *p, const std::uint8_t *touched0, const std::uin
         const auto min = [](__m256 u, __m256 v) { return _mm256_min_ps(u, v); };
         _mm256_storeu_ps(colour0 + x, _mm256_mul_ps(reduce(16, add), quarter)), _mm256_storeu_ps(z0 + x, reduce(0, min));
         if (colour1) _mm256_storeu_ps(colour1 + x, _mm256_mul_ps(reduce(24, add), quarter)), _mm256_storeu_ps(z1 + x, reduce(8, min));
+#pragma GCC unroll 4
         for (int k = 0; k < 4; ++k)
             _mm256_store_ps(p + 32 * k, far), _mm256_store_ps(p + 32 * k + 8, far), _mm256_store_ps(p + 32 * k + 16, clear),
                 _mm256_store_ps(p + 32 * k + 24, clear);
