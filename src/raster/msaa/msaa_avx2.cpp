@@ -34,6 +34,8 @@ struct lanes8 : ymm_lanes {
         __asm__("vblendvps %3, %2, %1, %0" : "=x"(r) : "x"(a), "x"(b), "x"(m));
         return r;
     }
+    // A masked store (vmaskmovps reads m's sign bits, as blendv does).
+    static void write(float *p, mask m, vf value) { _mm256_maskstore_ps(p, _mm256_castps_si256(m), value); }
     static coverage covered(vi b0, vi b1, vi b2) { return _mm256_castsi256_ps(_mm256_or_si256(_mm256_or_si256(b0, b1), b2)); }
     template <int Predicate>
     static mask compare(coverage in, vf z, vf stored) { return _mm256_andnot_ps(in, _mm256_cmp_ps(z, stored, Predicate)); }
