@@ -50,8 +50,6 @@ struct lanes8 : ymm_lanes {
     static coverage covered_within(vi out, vi b0, vi b1, vi b2) {
         return _mm256_castsi256_ps(_mm256_or_si256(_mm256_or_si256(_mm256_or_si256(b0, b1), b2), out));
     }
-    static void load_step(const float *p, vf &stored, vf &colours) { stored = _mm256_load_ps(p), colours = _mm256_load_ps(p + 16); }
-    static void store_step(float *p, vf depths, vf shades) { _mm256_store_ps(p, depths), _mm256_store_ps(p + 16, shades); }
     // At rest a mark only tells the resolve where to read (any of a block's four pixels: the
     // block resolve reads both rows of a group with one).
     static void mark(std::uint8_t *touched) { *touched = 1; }

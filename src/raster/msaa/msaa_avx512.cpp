@@ -23,9 +23,9 @@ namespace {
 #include "msaa_sse2_fill.inc"
 #include "msaa_lanes_fill.inc"  // ymm_lanes, passing, fill_rows_pixels
 
-// One register of S samples (zmm for 16×, ymm for 8×): a pixel's depths or colours exactly,
-// as a masked wider access would still overlap the next pixel and defeat store-to-load
-// forwarding. Masks: mask registers, bit s = sample s.
+// One register of S samples (zmm for 16×, ymm for 8×): a pixel's depths or colours exactly
+// (a wider access would reach into the floats after them). Masks: mask registers, bit s =
+// sample s.
 template <int S>
 struct registers;
 
@@ -60,16 +60,13 @@ struct registers<16> {
     }
     template <int Predicate>
     static mask compare(coverage in, vf a, vf b) { return _mm512_mask_cmp_ps_mask(in, a, b, Predicate); }
-    // 4× (fill_rows_quads): a 2 × 2 block of the tile per register (lanes 0–7 its upper row),
-    // loaded and stored whole: for small triangles fewer steps and row starts than four
-    // pixels of a row.
+    // 4× (fill_rows_quads): a 2 × 2 block of the tile per register (lanes 0–7 its upper row):
+    // for small triangles fewer steps and row starts than four pixels of a row.
     static mask rows(bool upper, bool lower) { return static_cast<mask>((upper ? 0x00FF : 0) | (lower ? 0xFF00 : 0)); }
     static mask columns_within(mask inside, vi column, vi last) { return _mm512_mask_cmple_epu32_mask(inside, column, last); }
     static coverage covered_within(mask inside, vi b0, vi b1, vi b2) {
         return _mm512_mask_testn_epi32_mask(inside, _mm512_ternarylogic_epi32(b0, b1, b2, 0xFE), _mm512_set1_epi32(INT32_MIN));
     }
-    static void load_step(const float *p, vf &stored, vf &colours) { stored = _mm512_load_ps(p), colours = _mm512_load_ps(p + 16); }
-    static void store_step(float *p, vf depths, vf shades) { _mm512_store_ps(p, depths), _mm512_store_ps(p + 16, shades); }
     // At rest a mark only tells the resolve where to read: one per block, unconditionally.
     static void mark(std::uint8_t *touched) { *touched = 1; }
 };
