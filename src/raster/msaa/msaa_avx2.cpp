@@ -20,21 +20,12 @@ namespace {
 
 #include "msaa_lanes_fill.inc"  // ymm_lanes, passing, fill_rows_pixels
 
-// The lane trait of msaa_lanes_fill.inc: masks as vectors (blendv reads the sign bits),
+// The lane trait of msaa_lanes_fill.inc: masks as vectors (vmaskmovps reads the sign bits),
 // coverage the OR of the three edge values (sign set: out); narrow triangles, no prefetch.
 struct lanes8 : ymm_lanes {
     static constexpr bool wide = false, prefetch_below = false, column_terms = true;
     using mask = __m256;
     using coverage = __m256;
-    // blendv as written: GCC folds _mm256_blendv_ps into a select on "m < 0" and, when one
-    // mask feeds two blends (a step's depths and colours), computes that compare into a
-    // register of its own, one more instruction per step.
-    static vf blend(mask m, vf a, vf b) {
-        vf r;
-        __asm__("vblendvps %3, %2, %1, %0" : "=x"(r) : "x"(a), "x"(b), "x"(m));
-        return r;
-    }
-    // A masked store (vmaskmovps reads m's sign bits, as blendv does).
     static void write(float *p, mask m, vf value) { _mm256_maskstore_ps(p, _mm256_castps_si256(m), value); }
     static coverage covered(vi b0, vi b1, vi b2) { return _mm256_castsi256_ps(_mm256_or_si256(_mm256_or_si256(b0, b1), b2)); }
     template <int Predicate>

@@ -42,7 +42,6 @@ struct registers<16> {
     static void store_int(std::int32_t *p, vi v) { _mm512_store_si512(p, v); }
     static vf load(const float *p) { return _mm512_loadu_ps(p); }
     static void store(float *p, vf v) { _mm512_storeu_ps(p, v); }
-    static vf blend(mask m, vf a, vf b) { return _mm512_mask_blend_ps(m, a, b); }
     static void write(float *p, mask m, vf value) { _mm512_mask_storeu_ps(p, m, value); }
     static vf add(vf a, vf b) { return _mm512_add_ps(a, b); }
     static vf mul(vf a, vf b) { return _mm512_mul_ps(a, b); }
@@ -75,7 +74,6 @@ template <>
 struct registers<8> : ymm_lanes {
     using mask = __mmask8;
     using coverage = __mmask8;
-    static vf blend(mask m, vf a, vf b) { return _mm256_mask_blend_ps(m, a, b); }
     static void write(float *p, mask m, vf value) { _mm256_mask_storeu_ps(p, m, value); }
     static coverage covered(vi b0, vi b1, vi b2) {
         return _mm256_testn_epi32_mask(_mm256_ternarylogic_epi32(b0, b1, b2, 0xFE), _mm256_set1_epi32(INT32_MIN));
