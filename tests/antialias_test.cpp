@@ -603,8 +603,8 @@ TEST(msaa_16_pattern_is_centred_and_its_coverage_exact) {
     CHECK_EQ(mismatches, 0);
 }
 
-// The SSE2 and AVX-512 kernels against the portable one: random overlapping triangles with
-// depth (ties included, every depth test), every sample
+// The SIMD kernels (SSE2, AVX2, AVX-512, as the CPU runs them) against the portable one:
+// random overlapping triangles with depth (ties included, every depth test), every sample
 // bit-identical; large triangles, small ones (boxes at most 8 columns) and medium ones (up to
 // 16: every step count of the 4× box walk), some off the canvas' edges; and wide ones,
 // reaching far beyond the canvas (boxes beyond what 32-bit values cover: rows walked in
